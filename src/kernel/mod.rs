@@ -1,0 +1,11 @@
+//! Predicates and constructions: the only layer that looks at coordinates' arithmetic
+//! (DESIGN.md, layer `kernel`). Every decision reduces to [`crate::num::Num::orient2d`] and the
+//! exact order of numbers, so it is exact in exact mode and ε-consistent in float mode.
+
+mod angle;
+mod point;
+mod segment;
+
+pub use angle::cmp_clockwise_from;
+pub use point::{orient, BBox, Point};
+pub use segment::{classify, on_closed_segment, Contact};

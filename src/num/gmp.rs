@@ -1,0 +1,99 @@
+//! The GMP exact backend (feature `gmp`): `rug::Rational` on the system libgmp.
+
+use super::{exact_orient, Literal, Num, NumError};
+use rug::{Integer, Rational};
+use std::cmp::Ordering;
+use std::fmt;
+use std::hash::{Hash, Hasher};
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// An exact rational on GMP.
+#[derive(Clone, Debug, Default, PartialEq, Eq, PartialOrd, Ord)]
+pub struct GmpRational(pub Rational);
+
+impl Hash for GmpRational {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.0.hash(state)
+    }
+}
+
+impl fmt::Display for GmpRational {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
+
+macro_rules! gmp_binop {
+    ($tr:ident, $m:ident, $op:tt) => {
+        impl $tr for GmpRational {
+            type Output = GmpRational;
+            fn $m(self, o: GmpRational) -> GmpRational {
+                GmpRational(self.0 $op o.0)
+            }
+        }
+    };
+}
+gmp_binop!(Add, add, +);
+gmp_binop!(Sub, sub, -);
+gmp_binop!(Mul, mul, *);
+gmp_binop!(Div, div, /);
+
+impl Neg for GmpRational {
+    type Output = GmpRational;
+    fn neg(self) -> GmpRational {
+        GmpRational(-self.0)
+    }
+}
+
+impl Num for GmpRational {
+    type Ctx = ();
+    const EXACT: bool = true;
+
+    fn from_i64(v: i64) -> Self {
+        GmpRational(Rational::from(v))
+    }
+
+    fn from_f64(v: f64) -> Result<Self, NumError> {
+        Rational::from_f64(v).map(GmpRational).ok_or(NumError::NotFinite(v))
+    }
+
+    fn from_literal(lit: &Literal) -> Self {
+        let parse = |s: &str| Integer::from_str_radix(s, 10).unwrap_or_default();
+        let mut num = parse(&lit.digits);
+        let mut den = parse(&lit.den);
+        let pow = Integer::from(Integer::u_pow_u(10, lit.exp10.unsigned_abs() as u32));
+        if lit.exp10 >= 0 {
+            num *= pow;
+        } else {
+            den *= pow;
+        }
+        if lit.negative {
+            num = -num;
+        }
+        GmpRational(Rational::from((num, den)))
+    }
+
+    fn to_f64(&self) -> f64 {
+        self.0.to_f64()
+    }
+
+    fn sign(&self) -> Ordering {
+        self.0.cmp0()
+    }
+
+    fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
+        exact_orient(a, b, c)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_without_rounding() {
+        let x = GmpRational::parse("4.5040114e+00").unwrap();
+        assert_eq!(x.0, Rational::from((45040114, 10_000_000)));
+        assert_eq!(GmpRational::parse("1/3").unwrap().0, Rational::from((1, 3)));
+    }
+}

@@ -1,0 +1,130 @@
+//! The number trait that every geometric algorithm is generic over, and its backends.
+//!
+//! * [`Rational`] (`num-rational`'s `BigRational`): exact, the default.
+//! * `GmpRational` (`rug::Rational`, feature `gmp`): exact, faster big numbers.
+//! * [`Float`] (`f64`) with a run-time tolerance [`Tolerance`] ε (seed 000 §5.2).
+//!
+//! Exact backends parse decimal strings ("4.5040114e+00", "0.1") and fractions ("1/3")
+//! without rounding, and convert from `f64` losslessly.
+
+mod float;
+#[cfg(feature = "gmp")]
+mod gmp;
+mod literal;
+mod rational;
+
+pub use float::{Float, Tolerance};
+#[cfg(feature = "gmp")]
+pub use gmp::GmpRational;
+pub use literal::Literal;
+pub use rational::Rational;
+
+use std::cmp::Ordering;
+use std::fmt::{Debug, Display};
+use std::hash::Hash;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Why a number could not be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum NumError {
+    /// The text is not a decimal number or a fraction `p/q`.
+    #[error("`{0}` is not a number (expected a decimal such as 4.5e-1 or a fraction p/q)")]
+    Syntax(String),
+    /// A fraction with denominator zero.
+    #[error("`{0}` has a zero denominator")]
+    ZeroDenominator(String),
+    /// The decimal exponent is too large to represent exactly in reasonable memory.
+    #[error("`{0}` has an exponent outside ±{max}", max = literal::MAX_EXPONENT)]
+    ExponentRange(String),
+    /// NaN or an infinity.
+    #[error("{0} is not finite")]
+    NotFinite(f64),
+}
+
+/// A coordinate number: exact rationals or ε-floats behind one interface (DESIGN.md, layer `num`).
+///
+/// Arithmetic is by value; `Ord` is the exact order of the stored values (for [`Float`], the
+/// total order of `f64`), so sweeps and canonical forms are deterministic. The tolerance of
+/// float mode lives in the run-time context [`Num::Ctx`] and enters only through
+/// [`Num::orient2d`], the one predicate every geometric decision is built on.
+pub trait Num:
+    Clone
+    + Debug
+    + Display
+    + Eq
+    + Ord
+    + Hash
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// Run-time context of the backend: `()` for exact numbers, the tolerance ε for floats.
+    type Ctx: Copy + Debug + Default + PartialEq + Send + Sync + 'static;
+
+    /// True for the exact backends, where every predicate is decided without rounding.
+    const EXACT: bool;
+
+    /// The integer `v`.
+    fn from_i64(v: i64) -> Self;
+
+    /// The value of a finite `f64`, without rounding in exact backends.
+    fn from_f64(v: f64) -> Result<Self, NumError>;
+
+    /// The value of a parsed literal (exact backends: without rounding).
+    fn from_literal(lit: &Literal) -> Self;
+
+    /// Parse a decimal ("4.5040114e+00", "-0.1") or a fraction ("1/3").
+    fn parse(s: &str) -> Result<Self, NumError> {
+        Literal::parse(s).map(|lit| Self::from_literal(&lit))
+    }
+
+    /// The nearest `f64` (for output and rendering, never for exact decisions).
+    fn to_f64(&self) -> f64;
+
+    /// The sign of `self` compared with zero.
+    fn sign(&self) -> Ordering;
+
+    /// Orientation of `c` relative to the directed line `a → b` (the Left test of seed 002,
+    /// Alg. 1): `Greater` if `c` is to the left, `Less` if to the right, `Equal` if on the line
+    /// (in float mode: within ε of it).
+    fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], ctx: &Self::Ctx) -> Ordering;
+
+    /// The context for an operation on two sets with contexts `a` and `b`.
+    fn combine_ctx(a: Self::Ctx, b: Self::Ctx) -> Self::Ctx {
+        let _ = b;
+        a
+    }
+
+    /// Fill in context defaults that depend on the input, given its extent (largest coordinate
+    /// magnitude) as an `f64`.
+    fn resolve_ctx(ctx: Self::Ctx, extent: f64) -> Self::Ctx {
+        let _ = extent;
+        ctx
+    }
+
+    /// The integer 0.
+    fn zero() -> Self {
+        Self::from_i64(0)
+    }
+
+    /// Half of `self` (midpoints are exact in exact backends).
+    fn half(&self) -> Self {
+        self.clone() / Self::from_i64(2)
+    }
+}
+
+/// Sign of the 2×2 determinant `(b − a) × (c − a)` in exact arithmetic: the shared body of
+/// the exact backends' [`Num::orient2d`].
+pub(crate) fn exact_orient<N>(a: [&N; 2], b: [&N; 2], c: [&N; 2]) -> Ordering
+where
+    N: Clone + Ord + Sub<Output = N> + Mul<Output = N>,
+{
+    let l = (b[0].clone() - a[0].clone()) * (c[1].clone() - a[1].clone());
+    let r = (b[1].clone() - a[1].clone()) * (c[0].clone() - a[0].clone());
+    l.cmp(&r)
+}
