@@ -126,6 +126,10 @@ impl Num for Float {
         self.0.total_cmp(&0.0)
     }
 
+    fn is_finite(&self) -> bool {
+        self.0.is_finite()
+    }
+
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], ctx: &Tolerance) -> Ordering {
         let p = |q: [&Float; 2]| robust::Coord { x: q[0].0, y: q[1].0 };
         let det = robust::orient2d(p(a), p(b), p(c));

@@ -89,6 +89,11 @@ pub trait Num:
     /// The sign of `self` compared with zero.
     fn sign(&self) -> Ordering;
 
+    /// False for NaN and infinities (float backend only).
+    fn is_finite(&self) -> bool {
+        true
+    }
+
     /// Orientation of `c` relative to the directed line `a → b` (the Left test of seed 002,
     /// Alg. 1): `Greater` if `c` is to the left, `Less` if to the right, `Equal` if on the line
     /// (in float mode: within ε of it).

@@ -1,1 +1,19 @@
+//! The 2D Yin space (seed 000): Jordan curves, spadjors, and the Boolean algebra on them.
+
+mod complement;
+mod curve;
+mod error;
+mod hasse;
 pub mod intersect;
+mod locate;
+mod meet;
+mod ops;
+mod paste;
+mod set;
+mod validate;
+
+pub use curve::Curve;
+pub use error::YinError;
+pub use hasse::{Atom, Betti};
+pub use locate::{locate_in_edges, Location};
+pub use set::YinSet2;

@@ -1,0 +1,40 @@
+//! Why user data is not a realizable spadjor (seed 000 Def. 3.15–3.17), naming curve and vertex.
+
+/// A reason the curves given do not form a Yin set's boundary representation. Curve and vertex
+/// indices are 0-based positions in the input as given.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum YinError {
+    /// No curve at all (use `YinSet2::empty()` or `YinSet2::full()` for 0̂ and 1̂).
+    #[error("no curves given: a spadjor is a non-empty set of Jordan curves (use empty() or full() for 0̂ and 1̂)")]
+    NoCurves,
+    /// A coordinate is NaN or infinite.
+    #[error("curve {curve}, vertex {vertex}: coordinate is not finite")]
+    NotFinite { curve: usize, vertex: usize },
+    /// A curve with fewer than 3 distinct vertices.
+    #[error("curve {curve}: {count} vertices, a Jordan polygon needs at least 3")]
+    TooFewVertices { curve: usize, count: usize },
+    /// Two consecutive vertices are equal.
+    #[error("curve {curve}, vertex {vertex}: repeats the previous vertex {point}")]
+    RepeatedVertex { curve: usize, vertex: usize, point: String },
+    /// A curve meets itself other than at consecutive edges' shared vertex.
+    #[error("curve {curve}, edge from vertex {vertex}: the curve is not simple, it meets itself at {point}")]
+    NotSimple { curve: usize, vertex: usize, point: String },
+    /// Two curves cross properly.
+    #[error("curves {curve_a} and {curve_b} cross at {point} (edges from vertices {vertex_a} and {vertex_b})")]
+    ProperCrossing { curve_a: usize, vertex_a: usize, curve_b: usize, vertex_b: usize, point: String },
+    /// Two curves share a stretch of boundary.
+    #[error("curves {curve_a} and {curve_b} share the edge from {from} to {to} (edges from vertices {vertex_a} and {vertex_b})")]
+    SharedEdge { curve_a: usize, vertex_a: usize, curve_b: usize, vertex_b: usize, from: String, to: String },
+    /// A curve directly inside another of the same orientation.
+    #[error("curve {inner} lies directly inside curve {outer} and both are {orientation} oriented: orientations must alternate with nesting (seed 000 Def. 3.16)")]
+    NestedSameOrientation { outer: usize, inner: usize, orientation: &'static str },
+    /// Outermost curves of both orientations.
+    #[error("outermost curves {positive} (positive) and {negative} (negative) cannot both be outermost: the set would be both bounded and unbounded (seed 000 Lemma 3.18)")]
+    MixedOutermost { positive: usize, negative: usize },
+    /// The curves of one atom touch in a cycle, so the atom's interior is not connected.
+    #[error("curves {curves:?} of one atom touch each other in a cycle (at {point}), so its interior is not connected (seed 000 Def. 3.16(c))")]
+    DisconnectedAtom { curves: Vec<usize>, point: String },
+    /// `validate` found a set whose stored form is not the canonical one (an internal bug).
+    #[error("the stored curves are not in canonical form")]
+    NotCanonical,
+}

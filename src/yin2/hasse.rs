@@ -1,0 +1,101 @@
+//! The Hasse diagram of a realizable spadjor (seed 002 Alg. 3), its atoms (seed 000 Lemma 3.18,
+//! R2A-a/b) and Betti numbers (seed 000 Cor. 3.14).
+
+use super::curve::Curve;
+use super::locate::{locate_in_edges, Location};
+use crate::kernel::{BBox, Point};
+use crate::num::Num;
+
+/// An atom spadjor (seed 000 Def. 3.16): at most one positive curve and the negative curves
+/// directly inside it, as indices into the spadjor's curves.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Atom {
+    /// The positively oriented curve γ⁺ (`None` for the unbounded atom 𝒥⁻).
+    pub outer: Option<usize>,
+    /// The negatively oriented curves γ⁻ (the holes).
+    pub holes: Vec<usize>,
+}
+
+/// Betti numbers of a Yin set (seed 000 Cor. 3.14): connected components and the holes of each.
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub struct Betti {
+    /// b₀: the number of connected components.
+    pub components: usize,
+    /// b₁ of each component, in the order of [`super::YinSet2::atoms`].
+    pub holes: Vec<usize>,
+    /// b₁ of the whole set: the total number of holes.
+    pub total_holes: usize,
+}
+
+impl Betti {
+    /// The Betti numbers of a set whose atoms are `atoms`.
+    pub(crate) fn of_atoms(atoms: &[Atom]) -> Betti {
+        let holes: Vec<usize> = atoms.iter().map(|a| a.holes.len()).collect();
+        Betti { components: atoms.len(), total_holes: holes.iter().sum(), holes }
+    }
+}
+
+/// Parent of each curve in the Hasse diagram of inclusion (seed 002 Alg. 3): the smallest curve
+/// whose bounded region contains it. Curves must be pairwise almost disjoint with every touching
+/// point a vertex of each curve through it.
+pub(crate) fn parents<N: Num>(curves: &[Curve<N>], ctx: &N::Ctx) -> Vec<Option<usize>> {
+    let m = curves.len();
+    let boxes: Vec<BBox<N>> = curves.iter().map(|c| c.bbox()).collect();
+    let areas: Vec<N> = curves.iter().map(|c| abs(c.twice_signed_area())).collect();
+    let samples: Vec<Point<N>> = curves.iter().map(|c| c.sample()).collect();
+    let mut parent: Vec<Option<usize>> = vec![None; m];
+    for i in 0..m {
+        let candidates: Vec<usize> = (0..m)
+            .filter(|&j| j != i && areas[j] < areas[i] && boxes[i].contains_box(&boxes[j]))
+            .collect();
+        if candidates.is_empty() {
+            continue;
+        }
+        let queries: Vec<Point<N>> = candidates.iter().map(|&j| samples[j].clone()).collect();
+        let ccw = curves[i].is_positive();
+        let edges: Vec<(&Point<N>, &Point<N>)> =
+            curves[i].edges().map(|(a, b)| if ccw { (a, b) } else { (b, a) }).collect();
+        let located = locate_in_edges(&edges, false, &queries, ctx);
+        for (&j, loc) in candidates.iter().zip(located) {
+            if loc == Location::Inside && parent[j].is_none_or(|p| areas[i] < areas[p]) {
+                parent[j] = Some(i);
+            }
+        }
+    }
+    parent
+}
+
+/// The atoms of a realizable spadjor (seed 000 Lemma 3.18): R2A-a, each positive curve with the
+/// negative curves it covers; R2A-b, the remaining negative curves as one atom 𝒥⁻.
+pub(crate) fn atoms(positive: &[bool], parent: &[Option<usize>]) -> Vec<Atom> {
+    let mut atoms: Vec<Atom> = Vec::new();
+    let mut atom_of = vec![usize::MAX; positive.len()];
+    for (i, &pos) in positive.iter().enumerate() {
+        if pos {
+            atom_of[i] = atoms.len();
+            atoms.push(Atom { outer: Some(i), holes: Vec::new() });
+        }
+    }
+    let mut unbounded = Atom { outer: None, holes: Vec::new() };
+    for (j, &pos) in positive.iter().enumerate() {
+        if pos {
+            continue;
+        }
+        match parent[j] {
+            Some(p) if positive[p] => atoms[atom_of[p]].holes.push(j),
+            _ => unbounded.holes.push(j),
+        }
+    }
+    if !unbounded.holes.is_empty() {
+        atoms.push(unbounded);
+    }
+    atoms
+}
+
+fn abs<N: Num>(v: N) -> N {
+    if v.sign() == std::cmp::Ordering::Less {
+        -v
+    } else {
+        v
+    }
+}

@@ -1,0 +1,196 @@
+//! Batch point location by plane sweep (seed 002 Alg. 1), O((n + q) log n).
+
+use crate::kernel::{orient, Point};
+use crate::num::Num;
+use std::cmp::Ordering;
+use std::collections::BTreeSet;
+
+/// Where a point lies relative to a Yin set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Location {
+    /// In the (open) Yin set.
+    Inside,
+    /// In the exterior (the complement of the closure).
+    Outside,
+    /// On the boundary.
+    OnBoundary,
+}
+
+/// A directed edge in the sweep status, or a query point (`lo == hi`, `id == usize::MAX`).
+struct Key<'a, N: Num> {
+    lo: &'a Point<N>,
+    hi: &'a Point<N>,
+    from: &'a Point<N>,
+    to: &'a Point<N>,
+    id: usize,
+    ctx: &'a N::Ctx,
+}
+
+impl<N: Num> Key<'_, N> {
+    fn is_query(&self) -> bool {
+        self.id == usize::MAX
+    }
+}
+
+/// Order of two non-crossing, non-vertical edges that are both cut by a vertical line just right
+/// of the sweep position: decided from endpoints alone, so it holds for the edges' whole stay
+/// in the status.
+fn cmp_edges<N: Num>(s: &Key<'_, N>, t: &Key<'_, N>) -> Ordering {
+    if s.lo > t.lo {
+        return cmp_edges(t, s).reverse();
+    }
+    // t starts at or right of s's start: compare t's start (or end) with s's line.
+    let mut o = if s.lo == t.lo { Ordering::Equal } else { orient(s.lo, s.hi, t.lo, s.ctx) };
+    if o == Ordering::Equal {
+        o = orient(s.lo, s.hi, t.hi, s.ctx);
+    }
+    o.reverse().then(s.id.cmp(&t.id))
+}
+
+impl<N: Num> Ord for Key<'_, N> {
+    fn cmp(&self, other: &Self) -> Ordering {
+        match (self.is_query(), other.is_query()) {
+            (true, true) => Ordering::Equal,
+            (true, false) => orient(other.lo, other.hi, self.lo, self.ctx),
+            (false, true) => orient(self.lo, self.hi, other.lo, self.ctx).reverse(),
+            (false, false) if self.id == other.id => Ordering::Equal,
+            (false, false) => cmp_edges(self, other),
+        }
+    }
+}
+impl<N: Num> PartialOrd for Key<'_, N> {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl<N: Num> PartialEq for Key<'_, N> {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl<N: Num> Eq for Key<'_, N> {}
+
+/// Locate each query point relative to the region bounded by the directed edges `edges`
+/// (pairwise non-crossing, interior on the left). `unbounded` says whether the region contains
+/// the points far away (seed 002 Alg. 1, line 17).
+pub fn locate_in_edges<N: Num>(
+    edges: &[(&Point<N>, &Point<N>)],
+    unbounded: bool,
+    queries: &[Point<N>],
+    ctx: &N::Ctx,
+) -> Vec<Location> {
+    let mut vertices: Vec<&Point<N>> = edges.iter().map(|e| e.0).collect();
+    vertices.sort();
+    // Vertical edges as (x, y_lo, y_hi), sorted: point-on-vertical-edge checks.
+    let mut verticals: Vec<(&N, &N, &N)> = Vec::new();
+    // Sweep events: (x, kind, index) with kind 0 = remove, 1 = insert, 2 = query.
+    let mut events: Vec<(&N, u8, usize)> = Vec::with_capacity(2 * edges.len() + queries.len());
+    let mut keys: Vec<Key<'_, N>> = Vec::with_capacity(edges.len());
+    for (id, &(from, to)) in edges.iter().enumerate() {
+        let (lo, hi) = if from <= to { (from, to) } else { (to, from) };
+        if lo.x == hi.x {
+            verticals.push((&lo.x, &lo.y, &hi.y));
+            continue;
+        }
+        events.push((&lo.x, 1, keys.len()));
+        events.push((&hi.x, 0, keys.len()));
+        keys.push(Key { lo, hi, from, to, id, ctx });
+    }
+    verticals.sort();
+    for (i, q) in queries.iter().enumerate() {
+        events.push((&q.x, 2, i));
+    }
+    events.sort_by(|a, b| a.0.cmp(b.0).then(a.1.cmp(&b.1)));
+
+    let outside_all = if unbounded { Location::Inside } else { Location::Outside };
+    let mut out = vec![outside_all; queries.len()];
+    let mut status: BTreeSet<&Key<'_, N>> = BTreeSet::new();
+    for (_, kind, i) in events {
+        match kind {
+            0 => {
+                status.remove(&keys[i]);
+            }
+            1 => {
+                status.insert(&keys[i]);
+            }
+            _ => {
+                let p = &queries[i];
+                out[i] = if vertices.binary_search(&p).is_ok() || on_vertical(&verticals, p) {
+                    Location::OnBoundary
+                } else {
+                    let probe = Key { lo: p, hi: p, from: p, to: p, id: usize::MAX, ctx };
+                    classify_between(&status, &probe, p, outside_all, ctx)
+                };
+            }
+        }
+    }
+    out
+}
+
+/// True if `p` lies on one of the sorted vertical edges.
+fn on_vertical<N: Num>(verticals: &[(&N, &N, &N)], p: &Point<N>) -> bool {
+    let k = verticals.partition_point(|&(x, ylo, _)| (x, ylo) <= (&p.x, &p.y));
+    k > 0 && {
+        let (x, _, yhi) = verticals[k - 1];
+        x == &p.x && yhi >= &p.y
+    }
+}
+
+/// Alg. 1 lines 15–21: classify `p` from its neighbours in the status.
+fn classify_between<N: Num>(
+    status: &BTreeSet<&Key<'_, N>>,
+    probe: &Key<'_, N>,
+    p: &Point<N>,
+    far: Location,
+    ctx: &N::Ctx,
+) -> Location {
+    let above = status.range::<Key<'_, N>, _>(probe..).next();
+    if let Some(s) = above {
+        if probe.cmp(s) == Ordering::Equal {
+            return Location::OnBoundary;
+        }
+    }
+    let below = status.range::<Key<'_, N>, _>(..probe).next_back();
+    match below.or(above) {
+        None => far,
+        Some(s) => match orient(s.from, s.to, p, ctx) {
+            Ordering::Greater => Location::Inside,
+            Ordering::Less => Location::Outside,
+            Ordering::Equal => Location::OnBoundary,
+        },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    fn p(x: i64, y: i64) -> Point<Rational> {
+        Point::int(x, y)
+    }
+
+    #[test]
+    fn square_with_vertical_and_horizontal_edges() {
+        let v = [p(0, 0), p(2, 0), p(2, 2), p(0, 2)];
+        let edges: Vec<_> = (0..4).map(|k| (&v[k], &v[(k + 1) % 4])).collect();
+        let q = [p(1, 1), p(3, 1), p(0, 1), p(1, 0), p(2, 2), p(-1, 1), p(1, 2), p(2, 1), p(1, 3)];
+        use Location::*;
+        let got = locate_in_edges(&edges, false, &q, &());
+        assert_eq!(got, vec![Inside, Outside, OnBoundary, OnBoundary, OnBoundary, Outside, OnBoundary, OnBoundary, Outside]);
+        // The reversed square is its complement.
+        let rev: Vec<_> = edges.iter().map(|&(a, b)| (b, a)).collect();
+        let got = locate_in_edges(&rev, true, &q[..2], &());
+        assert_eq!(got, vec![Outside, Inside]);
+    }
+
+    #[test]
+    fn query_directly_above_a_vertex_and_between_touching_triangles() {
+        // Two triangles touching at (2,1); queries at x = 2 above and below the touch.
+        let v = [p(0, 0), p(2, 1), p(0, 2), p(4, 0), p(4, 2), p(2, 1)];
+        let edges = vec![(&v[0], &v[1]), (&v[1], &v[2]), (&v[2], &v[0]), (&v[3], &v[4]), (&v[4], &v[5]), (&v[5], &v[3])];
+        use Location::*;
+        let got = locate_in_edges(&edges, false, &[p(2, 0), p(2, 3), p(1, 1), p(3, 1), p(2, 1)], &());
+        assert_eq!(got, vec![Outside, Outside, Inside, Inside, OnBoundary]);
+    }
+}

@@ -1,0 +1,51 @@
+//! Join by De Morgan (seed 000 Def. 4.10), difference, symmetric difference, and operators.
+
+use super::set::YinSet2;
+use crate::num::Num;
+use std::ops::{BitAnd, BitOr, BitXor, Not, Sub};
+
+impl<N: Num> YinSet2<N> {
+    /// The join 𝒥 ∨ 𝒦 := (𝒥' ∧ 𝒦')' (seed 000 Def. 4.10), the regularized union.
+    pub fn join(&self, other: &YinSet2<N>) -> YinSet2<N> {
+        self.complement().meet(&other.complement()).complement()
+    }
+
+    /// The difference 𝒥 ∧ 𝒦'.
+    pub fn difference(&self, other: &YinSet2<N>) -> YinSet2<N> {
+        self.meet(&other.complement())
+    }
+
+    /// The symmetric difference (𝒥 ∧ 𝒦') ∨ (𝒥' ∧ 𝒦).
+    pub fn symmetric_difference(&self, other: &YinSet2<N>) -> YinSet2<N> {
+        self.difference(other).join(&other.difference(self))
+    }
+
+    /// True if `self` ≤ `other` in the Boolean algebra (ρ(self) ⊆ ρ(other)).
+    pub fn is_subset(&self, other: &YinSet2<N>) -> bool {
+        self.meet(other) == *self
+    }
+}
+
+macro_rules! binary_operator {
+    ($tr:ident, $m:ident, $f:ident) => {
+        impl<N: Num> $tr<&YinSet2<N>> for &YinSet2<N> {
+            type Output = YinSet2<N>;
+            #[doc = concat!("`a ", stringify!($m), " b` is [`YinSet2::", stringify!($f), "`].")]
+            fn $m(self, rhs: &YinSet2<N>) -> YinSet2<N> {
+                self.$f(rhs)
+            }
+        }
+    };
+}
+binary_operator!(BitAnd, bitand, meet);
+binary_operator!(BitOr, bitor, join);
+binary_operator!(Sub, sub, difference);
+binary_operator!(BitXor, bitxor, symmetric_difference);
+
+impl<N: Num> Not for &YinSet2<N> {
+    type Output = YinSet2<N>;
+    /// `!a` is the complement (seed 000 Def. 4.4).
+    fn not(self) -> YinSet2<N> {
+        self.complement()
+    }
+}

@@ -1,0 +1,107 @@
+//! The pasting map S_V⁻¹ (seed 000 Lemma 4.2, S2R-a..d; seed 002 Alg. 2).
+
+use super::set::{Spadjor, YinSet2};
+use crate::kernel::{cmp_clockwise_from, Point};
+use crate::num::Num;
+use std::collections::{HashMap, HashSet};
+
+/// A segmented realizable spadjor: points and the directed straight pieces between them.
+pub(crate) struct Segmented<N: Num> {
+    points: Vec<Point<N>>,
+    index: HashMap<Point<N>, usize>,
+    edges: Vec<(usize, usize)>,
+}
+
+impl<N: Num> Segmented<N> {
+    pub(crate) fn new() -> Segmented<N> {
+        Segmented { points: Vec::new(), index: HashMap::new(), edges: Vec::new() }
+    }
+
+    /// The id of a point (interned).
+    pub(crate) fn id(&mut self, p: &Point<N>) -> usize {
+        if let Some(&i) = self.index.get(p) {
+            return i;
+        }
+        self.points.push(p.clone());
+        self.index.insert(p.clone(), self.points.len() - 1);
+        self.points.len() - 1
+    }
+
+    /// Add the directed piece `a → b`.
+    pub(crate) fn push(&mut self, a: usize, b: usize) {
+        self.edges.push((a, b));
+    }
+
+    /// S_V⁻¹: paste the pieces into Jordan curves and build the Yin set (0̂ if no piece is left,
+    /// which the callers rule out for 1̂).
+    pub(crate) fn paste(self, ctx: N::Ctx) -> YinSet2<N> {
+        if self.edges.is_empty() {
+            return YinSet2::empty().with_ctx(ctx);
+        }
+        let (loops, touching) = self.loops(&ctx);
+        let (spadjor, _) = Spadjor::assemble(loops, &touching, &ctx);
+        YinSet2::from_spadjor(spadjor, ctx)
+    }
+
+    /// S2R-b..d: grow paths by the clockwise rule and cut loops off at repeated vertices
+    /// (S2R-c), so that every loop is a Jordan curve. Also returns the touching points: vertices
+    /// entered by more than one piece.
+    fn loops(&self, ctx: &N::Ctx) -> (Vec<Vec<Point<N>>>, HashSet<Point<N>>) {
+        let n = self.points.len();
+        let mut out: Vec<Vec<usize>> = vec![Vec::new(); n];
+        let mut indegree = vec![0usize; n];
+        for (e, &(a, b)) in self.edges.iter().enumerate() {
+            out[a].push(e);
+            indegree[b] += 1;
+        }
+        let touching = (0..n).filter(|&v| indegree[v] > 1).map(|v| self.points[v].clone()).collect();
+        let mut used = vec![false; self.edges.len()];
+        let mut pos = vec![usize::MAX; n];
+        let mut loops = Vec::new();
+        for first in 0..self.edges.len() {
+            if used[first] {
+                continue;
+            }
+            used[first] = true;
+            pos[self.edges[first].0] = 0;
+            let mut path = vec![first];
+            while let Some(&last) = path.last() {
+                let v = self.edges[last].1;
+                if pos[v] != usize::MAX {
+                    // S2R-c: the path came back to v; cut the loop off.
+                    let cycle = path.split_off(pos[v]);
+                    for &e in &cycle {
+                        pos[self.edges[e].0] = usize::MAX;
+                    }
+                    loops.push(cycle.iter().map(|&e| self.points[self.edges[e].0].clone()).collect());
+                    continue;
+                }
+                match self.next_piece(last, &out[v], &used, ctx) {
+                    Some(e) => {
+                        used[e] = true;
+                        pos[v] = path.len();
+                        path.push(e);
+                    }
+                    None => {
+                        debug_assert!(false, "pasting map: dangling piece at {}", self.points[v]);
+                        for &e in &path {
+                            pos[self.edges[e].0] = usize::MAX;
+                        }
+                        break;
+                    }
+                }
+            }
+        }
+        (loops, touching)
+    }
+
+    /// S2R-b: of the unused pieces leaving the end of `incoming`, the one with the smallest
+    /// counterclockwise angle ∠β_out v β_in, i.e. the clockwise neighbour.
+    fn next_piece(&self, incoming: usize, candidates: &[usize], used: &[bool], ctx: &N::Ctx) -> Option<usize> {
+        let (from, v) = self.edges[incoming];
+        let (vp, rp) = (&self.points[v], &self.points[from]);
+        candidates.iter().copied().filter(|&e| !used[e]).min_by(|&e, &f| {
+            cmp_clockwise_from(vp, rp, &self.points[self.edges[e].1], &self.points[self.edges[f].1], ctx)
+        })
+    }
+}

@@ -1,0 +1,194 @@
+//! The Jordan space {0̂, 1̂, realizable spadjors} (seed 000 Def. 3.19) as the type `YinSet2`.
+
+use super::curve::{canonical_curve, Curve};
+use super::hasse::{atoms, parents, Atom, Betti};
+use super::locate::{locate_in_edges, Location};
+use crate::kernel::{BBox, Point};
+use crate::num::Num;
+use std::cmp::Ordering;
+use std::collections::HashSet;
+use std::hash::{Hash, Hasher};
+
+/// A 2D Yin set, stored as its unique boundary representation (seed 000 Thm 3.21): 0̂ (∅),
+/// 1̂ (ℝ²), or a realizable spadjor in canonical form. `==` and `Hash` are set equality.
+#[derive(Clone, Debug)]
+pub struct YinSet2<N: Num> {
+    pub(crate) repr: Repr<N>,
+    pub(crate) ctx: N::Ctx,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) enum Repr<N: Num> {
+    Empty,
+    Full,
+    Spadjor(Spadjor<N>),
+}
+
+/// A realizable spadjor (seed 000 Def. 3.17) with its Hasse diagram, atoms and Betti numbers.
+#[derive(Clone, Debug)]
+pub(crate) struct Spadjor<N: Num> {
+    pub(crate) curves: Vec<Curve<N>>,
+    pub(crate) positive: Vec<bool>,
+    pub(crate) parent: Vec<Option<usize>>,
+    pub(crate) atoms: Vec<Atom>,
+    pub(crate) betti: Betti,
+    pub(crate) bounded: bool,
+}
+
+impl<N: Num> Spadjor<N> {
+    /// Build from curves already simple and pairwise almost disjoint, with every touching point
+    /// among `touching`: canonical form, Hasse diagram, atoms, Betti numbers. Also returns, for
+    /// each canonical curve, the index of the loop it came from.
+    pub(crate) fn assemble(loops: Vec<Vec<Point<N>>>, touching: &HashSet<Point<N>>, ctx: &N::Ctx) -> (Spadjor<N>, Vec<usize>) {
+        let mut curves: Vec<(Curve<N>, usize)> =
+            loops.into_iter().enumerate().map(|(i, v)| (canonical_curve(v, touching, ctx), i)).collect();
+        curves.sort();
+        let (curves, origin): (Vec<Curve<N>>, Vec<usize>) = curves.into_iter().unzip();
+        let positive: Vec<bool> = curves.iter().map(|c| c.is_positive()).collect();
+        let parent = parents(&curves, ctx);
+        let atoms = atoms(&positive, &parent);
+        let betti = Betti::of_atoms(&atoms);
+        let total: N = curves.iter().fold(N::zero(), |acc, c| acc + c.twice_signed_area());
+        let bounded = total.sign() == Ordering::Greater;
+        (Spadjor { curves, positive, parent, atoms, betti, bounded }, origin)
+    }
+
+    /// All directed edges of all curves.
+    pub(crate) fn edges(&self) -> Vec<(&Point<N>, &Point<N>)> {
+        self.curves.iter().flat_map(|c| c.edges()).collect()
+    }
+
+    /// Batch locate (seed 002 Alg. 1).
+    pub(crate) fn locate(&self, queries: &[Point<N>], ctx: &N::Ctx) -> Vec<Location> {
+        locate_in_edges(&self.edges(), !self.bounded, queries, ctx)
+    }
+}
+
+impl<N: Num> YinSet2<N> {
+    /// 0̂, the empty set.
+    pub fn empty() -> YinSet2<N> {
+        YinSet2 { repr: Repr::Empty, ctx: N::Ctx::default() }
+    }
+
+    /// 1̂, the whole plane.
+    pub fn full() -> YinSet2<N> {
+        YinSet2 { repr: Repr::Full, ctx: N::Ctx::default() }
+    }
+
+    pub(crate) fn from_spadjor(s: Spadjor<N>, ctx: N::Ctx) -> YinSet2<N> {
+        YinSet2 { repr: Repr::Spadjor(s), ctx }
+    }
+
+    /// The same set carrying another context (float mode: another ε).
+    pub fn with_ctx(mut self, ctx: N::Ctx) -> YinSet2<N> {
+        self.ctx = ctx;
+        self
+    }
+
+    /// The number context in force (float mode: the tolerance ε).
+    pub fn ctx(&self) -> N::Ctx {
+        self.ctx
+    }
+
+    /// True for 0̂.
+    pub fn is_empty(&self) -> bool {
+        matches!(self.repr, Repr::Empty)
+    }
+
+    /// True for 1̂.
+    pub fn is_full(&self) -> bool {
+        matches!(self.repr, Repr::Full)
+    }
+
+    /// True if the set is bounded (0̂ is; 1̂ is not; a spadjor is iff it has no atom 𝒥⁻).
+    pub fn is_bounded(&self) -> bool {
+        match &self.repr {
+            Repr::Empty => true,
+            Repr::Full => false,
+            Repr::Spadjor(s) => s.bounded,
+        }
+    }
+
+    /// The Jordan curves of the realizable spadjor, in canonical order (empty for 0̂ and 1̂).
+    pub fn curves(&self) -> &[Curve<N>] {
+        match &self.repr {
+            Repr::Spadjor(s) => &s.curves,
+            _ => &[],
+        }
+    }
+
+    /// The Hasse diagram of inclusion (seed 002 Alg. 3): each curve's parent.
+    pub fn parents(&self) -> &[Option<usize>] {
+        match &self.repr {
+            Repr::Spadjor(s) => &s.parent,
+            _ => &[],
+        }
+    }
+
+    /// The atom spadjors (seed 000 Lemma 3.18), one per connected component.
+    pub fn atoms(&self) -> &[Atom] {
+        match &self.repr {
+            Repr::Spadjor(s) => &s.atoms,
+            _ => &[],
+        }
+    }
+
+    /// Betti numbers (seed 000 Cor. 3.14), read off the stored representation.
+    pub fn betti(&self) -> Betti {
+        match &self.repr {
+            Repr::Empty => Betti::default(),
+            Repr::Full => Betti { components: 1, holes: vec![0], total_holes: 0 },
+            Repr::Spadjor(s) => s.betti.clone(),
+        }
+    }
+
+    /// The area (exact in exact mode); `None` if the set is unbounded.
+    pub fn area(&self) -> Option<N> {
+        match &self.repr {
+            Repr::Empty => Some(N::zero()),
+            Repr::Full => None,
+            Repr::Spadjor(s) if s.bounded => {
+                Some(s.curves.iter().fold(N::zero(), |acc, c| acc + c.twice_signed_area()).half())
+            }
+            Repr::Spadjor(_) => None,
+        }
+    }
+
+    /// The bounding box of the boundary (`None` for 0̂ and 1̂).
+    pub fn bbox(&self) -> Option<BBox<N>> {
+        self.curves().iter().map(|c| c.bbox()).reduce(|a, b| a.union(&b))
+    }
+
+    /// Locate each point: inside, outside or on the boundary (seed 002 Alg. 1).
+    pub fn locate(&self, points: &[Point<N>]) -> Vec<Location> {
+        match &self.repr {
+            Repr::Empty => vec![Location::Outside; points.len()],
+            Repr::Full => vec![Location::Inside; points.len()],
+            Repr::Spadjor(s) => s.locate(points, &self.ctx),
+        }
+    }
+}
+
+impl<N: Num> PartialEq for YinSet2<N> {
+    fn eq(&self, other: &Self) -> bool {
+        match (&self.repr, &other.repr) {
+            (Repr::Empty, Repr::Empty) | (Repr::Full, Repr::Full) => true,
+            (Repr::Spadjor(a), Repr::Spadjor(b)) => a.curves == b.curves,
+            _ => false,
+        }
+    }
+}
+impl<N: Num> Eq for YinSet2<N> {}
+
+impl<N: Num> Hash for YinSet2<N> {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        match &self.repr {
+            Repr::Empty => 0u8.hash(state),
+            Repr::Full => 1u8.hash(state),
+            Repr::Spadjor(s) => {
+                2u8.hash(state);
+                s.curves.hash(state);
+            }
+        }
+    }
+}

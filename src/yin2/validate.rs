@@ -1,0 +1,269 @@
+//! Construction from point arrays with no inclusion relations given (seed 000 §5.1): checks
+//! that the curves form a realizable spadjor (Def. 3.15–3.17) and builds its Hasse diagram.
+
+use super::error::YinError;
+use super::intersect::{intersections, Edge};
+use super::set::{Spadjor, YinSet2};
+use crate::kernel::{cmp_clockwise_from, Contact, Point};
+use crate::num::Num;
+use std::cmp::Ordering;
+use std::collections::{HashMap, HashSet};
+
+impl<N: Num> YinSet2<N> {
+    /// The Yin set bounded by `curves` (each a vertex cycle; a repeated closing vertex is
+    /// dropped), with the default context (float mode: ε from the input's extent).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::Rational, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| vec![Point::int(x, y), Point::int(x + s, y), Point::int(x + s, y + s), Point::int(x, y + s)];
+    /// let a = YinSet2::<Rational>::from_curves(vec![sq(0, 0, 2)]).unwrap();
+    /// let b = YinSet2::<Rational>::from_curves(vec![sq(1, 1, 2)]).unwrap();
+    /// assert_eq!((&a & &b).area(), Some(Rational::from_integer(1.into())));
+    /// assert_eq!((&a | &b).betti().components, 1);
+    /// ```
+    pub fn from_curves(curves: Vec<Vec<Point<N>>>) -> Result<YinSet2<N>, YinError> {
+        YinSet2::from_curves_with(curves, N::Ctx::default())
+    }
+
+    /// As [`YinSet2::from_curves`], with the given context (float mode: the tolerance ε).
+    pub fn from_curves_with(curves: Vec<Vec<Point<N>>>, ctx: N::Ctx) -> Result<YinSet2<N>, YinError> {
+        let curves = basic_checks(curves)?;
+        let extent = curves.iter().flatten().map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs())).fold(0.0, f64::max);
+        let ctx = N::resolve_ctx(ctx, extent);
+        let spadjor = realize(curves, &ctx)?;
+        Ok(YinSet2::from_spadjor(spadjor, ctx))
+    }
+
+    /// Check the representation invariant exactly (seed 000 Def. 3.17, Thm 3.21): rebuilding the
+    /// set from its own curves succeeds and gives the same canonical form.
+    pub fn validate(&self) -> Result<(), YinError> {
+        if self.curves().is_empty() {
+            return Ok(());
+        }
+        let raw: Vec<Vec<Point<N>>> = self.curves().iter().map(|c| c.vertices().to_vec()).collect();
+        let rebuilt = YinSet2::from_curves_with(raw, self.ctx)?;
+        if rebuilt == *self {
+            Ok(())
+        } else {
+            Err(YinError::NotCanonical)
+        }
+    }
+}
+
+/// Per-curve checks: finite coordinates, at least 3 vertices, no repeated consecutive vertex.
+fn basic_checks<N: Num>(curves: Vec<Vec<Point<N>>>) -> Result<Vec<Vec<Point<N>>>, YinError> {
+    if curves.is_empty() {
+        return Err(YinError::NoCurves);
+    }
+    curves
+        .into_iter()
+        .enumerate()
+        .map(|(c, mut v)| {
+            if let Some(k) = v.iter().position(|p| !p.x.is_finite() || !p.y.is_finite()) {
+                return Err(YinError::NotFinite { curve: c, vertex: k });
+            }
+            if v.len() > 1 && v.first() == v.last() {
+                v.pop();
+            }
+            if v.len() < 3 {
+                return Err(YinError::TooFewVertices { curve: c, count: v.len() });
+            }
+            let n = v.len();
+            if let Some(k) = (0..n).find(|&k| v[k] == v[(k + 1) % n]) {
+                return Err(YinError::RepeatedVertex { curve: c, vertex: (k + 1) % n, point: v[k].to_string() });
+            }
+            Ok(v)
+        })
+        .collect()
+}
+
+/// The curves through one touching point: (curve, original edge index, previous, next vertex).
+type Passage<N> = (usize, usize, Point<N>, Point<N>);
+
+/// Check simplicity, almost-disjointness and the orientation structure; build the spadjor.
+fn realize<N: Num>(curves: Vec<Vec<Point<N>>>, ctx: &N::Ctx) -> Result<Spadjor<N>, YinError> {
+    let mut owner: Vec<(usize, usize)> = Vec::new();
+    let mut edges: Vec<Edge<N>> = Vec::new();
+    for (c, v) in curves.iter().enumerate() {
+        for k in 0..v.len() {
+            owner.push((c, k));
+            edges.push((v[k].clone(), v[(k + 1) % v.len()].clone()));
+        }
+    }
+    let mut splits: Vec<Vec<Point<N>>> = vec![Vec::new(); edges.len()];
+    let mut touching: HashSet<Point<N>> = HashSet::new();
+    for (i, j, contact) in intersections(&edges, ctx, |_, _| true) {
+        let ((ci, ki), (cj, kj)) = (owner[i], owner[j]);
+        if ci == cj {
+            let len = curves[ci].len();
+            let shared = if kj == ki + 1 { Some(&curves[ci][kj]) } else if ki == 0 && kj == len - 1 { Some(&curves[ci][0]) } else { None };
+            match (&contact, shared) {
+                (Contact::Touching(p), Some(s)) if p == s => continue,
+                (Contact::Touching(p) | Contact::Crossing(p) | Contact::Overlap(p, _), _) => {
+                    return Err(YinError::NotSimple { curve: ci, vertex: ki, point: p.to_string() })
+                }
+                (Contact::Disjoint, _) => continue,
+            }
+        }
+        match contact {
+            Contact::Crossing(p) => {
+                return Err(YinError::ProperCrossing { curve_a: ci, vertex_a: ki, curve_b: cj, vertex_b: kj, point: p.to_string() })
+            }
+            Contact::Overlap(p, q) => {
+                return Err(YinError::SharedEdge {
+                    curve_a: ci,
+                    vertex_a: ki,
+                    curve_b: cj,
+                    vertex_b: kj,
+                    from: p.to_string(),
+                    to: q.to_string(),
+                })
+            }
+            Contact::Touching(p) => {
+                splits[i].push(p.clone());
+                splits[j].push(p.clone());
+                touching.insert(p);
+            }
+            Contact::Disjoint => {}
+        }
+    }
+    let (curves, passages) = insert_touching_points(curves, &edges, splits, &touching);
+    check_touches_do_not_cross(&passages, ctx)?;
+    let (spadjor, origin) = Spadjor::assemble(curves, &touching, ctx);
+    check_structure(&spadjor, &origin, &passages)?;
+    Ok(spadjor)
+}
+
+/// Make every touching point a vertex of each curve through it (so that S_V cuts there), and
+/// list, per touching point, the curves passing through it.
+fn insert_touching_points<N: Num>(
+    curves: Vec<Vec<Point<N>>>,
+    edges: &[Edge<N>],
+    mut splits: Vec<Vec<Point<N>>>,
+    touching: &HashSet<Point<N>>,
+) -> (Vec<Vec<Point<N>>>, HashMap<Point<N>, Vec<Passage<N>>>) {
+    let mut out = Vec::with_capacity(curves.len());
+    let mut passages: HashMap<Point<N>, Vec<Passage<N>>> = HashMap::new();
+    let mut e = 0;
+    for (c, v) in curves.into_iter().enumerate() {
+        let mut w: Vec<(Point<N>, usize)> = Vec::with_capacity(v.len());
+        for k in 0..v.len() {
+            w.push((v[k].clone(), k));
+            let (a, b) = (&edges[e].0, &edges[e].1);
+            let s = &mut splits[e];
+            s.retain(|p| p != a && p != b);
+            s.sort();
+            s.dedup();
+            if a > b {
+                s.reverse();
+            }
+            w.extend(s.drain(..).map(|p| (p, k)));
+            e += 1;
+        }
+        let n = w.len();
+        for t in 0..n {
+            if touching.contains(&w[t].0) {
+                let (prev, next) = (w[(t + n - 1) % n].0.clone(), w[(t + 1) % n].0.clone());
+                passages.entry(w[t].0.clone()).or_default().push((c, w[t].1, prev, next));
+            }
+        }
+        out.push(w.into_iter().map(|(p, _)| p).collect());
+    }
+    (out, passages)
+}
+
+/// At a touching point, two curves must not cross: the rays of one lie in one sector of the other.
+fn check_touches_do_not_cross<N: Num>(passages: &HashMap<Point<N>, Vec<Passage<N>>>, ctx: &N::Ctx) -> Result<(), YinError> {
+    for (p, list) in passages {
+        for (x, (c1, k1, prev1, next1)) in list.iter().enumerate() {
+            for (c2, k2, prev2, next2) in &list[x + 1..] {
+                let before = |q: &Point<N>| cmp_clockwise_from(p, prev1, q, next1, ctx) == Ordering::Less;
+                if before(prev2) != before(next2) {
+                    return Err(YinError::ProperCrossing { curve_a: *c1, vertex_a: *k1, curve_b: *c2, vertex_b: *k2, point: p.to_string() });
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Orientations alternate with nesting, outermost curves agree, atoms are connected
+/// (seed 000 Def. 3.16–3.17).
+fn check_structure<N: Num>(s: &Spadjor<N>, origin: &[usize], passages: &HashMap<Point<N>, Vec<Passage<N>>>) -> Result<(), YinError> {
+    let name = |o: bool| if o { "positively" } else { "negatively" };
+    for (j, p) in s.parent.iter().enumerate() {
+        if let Some(i) = *p {
+            if s.positive[i] == s.positive[j] {
+                return Err(YinError::NestedSameOrientation { outer: origin[i], inner: origin[j], orientation: name(s.positive[j]) });
+            }
+        }
+    }
+    let root = |pos: bool| (0..s.curves.len()).find(|&i| s.parent[i].is_none() && s.positive[i] == pos);
+    if let (Some(a), Some(b)) = (root(true), root(false)) {
+        return Err(YinError::MixedOutermost { positive: origin[a], negative: origin[b] });
+    }
+    // Atoms connected: curves and touching points of one atom form a forest.
+    let mut canonical = vec![0; origin.len()];
+    for (i, &o) in origin.iter().enumerate() {
+        canonical[o] = i;
+    }
+    let mut atom_of = vec![0; origin.len()];
+    for (a, atom) in s.atoms.iter().enumerate() {
+        for &i in atom.outer.iter().chain(&atom.holes) {
+            atom_of[i] = a;
+        }
+    }
+    let mut uf = UnionFind::new(origin.len());
+    for (p, list) in passages {
+        let mut by_atom: HashMap<usize, Vec<usize>> = HashMap::new();
+        for (c, ..) in list {
+            let i = canonical[*c];
+            by_atom.entry(atom_of[i]).or_default().push(i);
+        }
+        for (a, group) in by_atom {
+            if group.len() < 2 {
+                continue;
+            }
+            let node = uf.add();
+            for &i in &group {
+                if !uf.union(node, i) {
+                    let atom = &s.atoms[a];
+                    let curves = atom.outer.iter().chain(&atom.holes).map(|&i| origin[i]).collect();
+                    return Err(YinError::DisconnectedAtom { curves, point: p.to_string() });
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Disjoint sets for the forest test of atom connectivity.
+struct UnionFind {
+    parent: Vec<usize>,
+}
+
+impl UnionFind {
+    fn new(n: usize) -> UnionFind {
+        UnionFind { parent: (0..n).collect() }
+    }
+
+    fn add(&mut self) -> usize {
+        self.parent.push(self.parent.len());
+        self.parent.len() - 1
+    }
+
+    fn find(&mut self, mut x: usize) -> usize {
+        while self.parent[x] != x {
+            self.parent[x] = self.parent[self.parent[x]];
+            x = self.parent[x];
+        }
+        x
+    }
+
+    /// Join the sets of `a` and `b`; false if they were already one (a cycle).
+    fn union(&mut self, a: usize, b: usize) -> bool {
+        let (ra, rb) = (self.find(a), self.find(b));
+        self.parent[ra] = rb;
+        ra != rb
+    }
+}

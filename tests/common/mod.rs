@@ -1,0 +1,45 @@
+//! Shapes shared by the integration tests.
+#![allow(dead_code)]
+
+use yinset::kernel::Point;
+use yinset::num::Rational;
+use yinset::yin2::YinSet2;
+
+pub type Y = YinSet2<Rational>;
+
+/// Exact rational p/q.
+pub fn q(p: i64, d: i64) -> Rational {
+    Rational::new(p.into(), d.into())
+}
+
+/// A vertex cycle from integer pairs.
+pub fn ring(c: &[(i64, i64)]) -> Vec<Point<Rational>> {
+    c.iter().map(|&(x, y)| Point::int(x, y)).collect()
+}
+
+/// Axis-aligned rectangle [x0,x1]×[y0,y1], counterclockwise.
+pub fn rect(x0: i64, y0: i64, x1: i64, y1: i64) -> Vec<Point<Rational>> {
+    ring(&[(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+}
+
+/// The same cycle, clockwise.
+pub fn rev(mut v: Vec<Point<Rational>>) -> Vec<Point<Rational>> {
+    v.reverse();
+    v
+}
+
+/// The Yin set bounded by the given cycles (panics with the validator's message if invalid).
+pub fn yin(curves: Vec<Vec<Point<Rational>>>) -> Y {
+    YinSet2::from_curves(curves).unwrap_or_else(|e| panic!("invalid test shape: {e}"))
+}
+
+/// Exact area (panics if unbounded).
+pub fn area(y: &Y) -> Rational {
+    y.area().expect("bounded")
+}
+
+/// Assert that a set passes the exact validator.
+pub fn valid(y: &Y) -> &Y {
+    y.validate().unwrap_or_else(|e| panic!("output fails the validator: {e}\n{y:?}"));
+    y
+}
