@@ -51,7 +51,10 @@ fn hole_touching_its_outer_curve() {
     assert_eq!(a.betti().holes, vec![1]);
     assert_eq!(area(&a), q(16 - 2, 1));
     // The touching point became a vertex of the outer curve.
-    assert!(a.curves().iter().all(|c| c.vertices().contains(&Point::int(2, 0))));
+    assert!(a
+        .curves()
+        .iter()
+        .all(|c| c.vertices().contains(&Point::int(2, 0))));
     let c = valid(&a.complement()).clone();
     assert_eq!(c.complement(), a);
     assert_eq!(c.betti().components, 2, "unbounded part + the triangle");
@@ -98,7 +101,17 @@ fn collinear_overlap_same_direction() {
     let m = valid(&a.meet(&b)).clone();
     assert_eq!(m, yin(vec![rect(1, 0, 2, 1)]));
     let j = valid(&a.join(&b)).clone();
-    assert_eq!(j, yin(vec![ring(&[(0, 0), (3, 0), (3, 1), (2, 1), (2, 2), (0, 2)])]));
+    assert_eq!(
+        j,
+        yin(vec![ring(&[
+            (0, 0),
+            (3, 0),
+            (3, 1),
+            (2, 1),
+            (2, 2),
+            (0, 2)
+        ])])
+    );
 }
 
 #[test]
@@ -117,7 +130,11 @@ fn collinear_overlap_opposite_direction() {
 
 #[test]
 fn idempotence_and_complement_laws() {
-    let a = yin(vec![rect(0, 0, 4, 4), rev(rect(1, 1, 2, 2)), rect(5, 0, 6, 1)]);
+    let a = yin(vec![
+        rect(0, 0, 4, 4),
+        rev(rect(1, 1, 2, 2)),
+        rect(5, 0, 6, 1),
+    ]);
     assert_eq!(a.meet(&a), a);
     assert_eq!(a.join(&a), a);
     assert!(a.meet(&a.complement()).is_empty());
@@ -144,7 +161,11 @@ fn unbounded_yin_sets() {
 
 #[test]
 fn island_inside_a_hole() {
-    let a = yin(vec![rect(0, 0, 10, 10), rev(rect(2, 2, 8, 8)), rect(4, 4, 6, 6)]);
+    let a = yin(vec![
+        rect(0, 0, 10, 10),
+        rev(rect(2, 2, 8, 8)),
+        rect(4, 4, 6, 6),
+    ]);
     assert_eq!(a.betti().components, 2);
     assert_eq!(a.betti().total_holes, 1);
     assert_eq!(a.parents().iter().filter(|p| p.is_some()).count(), 2);
@@ -155,13 +176,49 @@ fn island_inside_a_hole() {
 #[test]
 fn validation_names_curve_and_vertex() {
     let bad = |c| Y::from_curves(c).unwrap_err();
-    assert_eq!(bad(vec![ring(&[(0, 0), (1, 0)])]), YinError::TooFewVertices { curve: 0, count: 2 });
-    assert!(matches!(bad(vec![rect(0, 0, 1, 1), ring(&[(0, 0), (1, 0), (1, 0), (0, 1)])]), YinError::RepeatedVertex { curve: 1, vertex: 2, .. }));
-    assert!(matches!(bad(vec![ring(&[(0, 0), (2, 2), (2, 0), (0, 2)])]), YinError::NotSimple { curve: 0, .. }));
-    assert!(matches!(bad(vec![rect(0, 0, 2, 2), rect(1, 1, 3, 3)]), YinError::ProperCrossing { curve_a: 0, curve_b: 1, .. }));
-    assert!(matches!(bad(vec![rect(0, 0, 2, 2), rect(2, 0, 3, 2)]), YinError::SharedEdge { .. }));
-    assert!(matches!(bad(vec![rect(0, 0, 4, 4), rect(1, 1, 2, 2)]), YinError::NestedSameOrientation { outer: 0, inner: 1, .. }));
-    assert!(matches!(bad(vec![rect(0, 0, 1, 1), rev(rect(3, 3, 4, 4))]), YinError::MixedOutermost { .. }));
+    assert_eq!(
+        bad(vec![ring(&[(0, 0), (1, 0)])]),
+        YinError::TooFewVertices { curve: 0, count: 2 }
+    );
+    assert!(matches!(
+        bad(vec![
+            rect(0, 0, 1, 1),
+            ring(&[(0, 0), (1, 0), (1, 0), (0, 1)])
+        ]),
+        YinError::RepeatedVertex {
+            curve: 1,
+            vertex: 2,
+            ..
+        }
+    ));
+    assert!(matches!(
+        bad(vec![ring(&[(0, 0), (2, 2), (2, 0), (0, 2)])]),
+        YinError::NotSimple { curve: 0, .. }
+    ));
+    assert!(matches!(
+        bad(vec![rect(0, 0, 2, 2), rect(1, 1, 3, 3)]),
+        YinError::ProperCrossing {
+            curve_a: 0,
+            curve_b: 1,
+            ..
+        }
+    ));
+    assert!(matches!(
+        bad(vec![rect(0, 0, 2, 2), rect(2, 0, 3, 2)]),
+        YinError::SharedEdge { .. }
+    ));
+    assert!(matches!(
+        bad(vec![rect(0, 0, 4, 4), rect(1, 1, 2, 2)]),
+        YinError::NestedSameOrientation {
+            outer: 0,
+            inner: 1,
+            ..
+        }
+    ));
+    assert!(matches!(
+        bad(vec![rect(0, 0, 1, 1), rev(rect(3, 3, 4, 4))]),
+        YinError::MixedOutermost { .. }
+    ));
     assert_eq!(bad(vec![]), YinError::NoCurves);
     // A crossing through a shared vertex (no edge overlap): the curves pass through (1,1).
     let x1 = ring(&[(0, 0), (1, 1), (2, 0), (2, 2), (0, 2)]);
@@ -172,7 +229,10 @@ fn validation_names_curve_and_vertex() {
 #[test]
 fn canonical_form_ignores_start_order_and_collinear_vertices() {
     let a = yin(vec![rect(0, 0, 2, 2), rect(3, 0, 4, 1)]);
-    let b = yin(vec![ring(&[(4, 0), (4, 1), (3, 1), (3, 0)]), ring(&[(2, 2), (1, 2), (0, 2), (0, 0), (2, 0)])]);
+    let b = yin(vec![
+        ring(&[(4, 0), (4, 1), (3, 1), (3, 0)]),
+        ring(&[(2, 2), (1, 2), (0, 2), (0, 0), (2, 0)]),
+    ]);
     assert_eq!(a, b);
     use std::collections::hash_map::DefaultHasher;
     use std::hash::{Hash, Hasher};

@@ -9,17 +9,16 @@ use std::cmp::Ordering;
 ///
 /// The edge `β_out` chosen by S2R-b, the one whose counterclockwise angle ∠β_out v β_in is
 /// smallest, is the minimum of this order with `r` the start of `β_in`.
-pub fn cmp_clockwise_from<N: Num>(v: &Point<N>, r: &Point<N>, p: &Point<N>, q: &Point<N>, ctx: &N::Ctx) -> Ordering {
+pub fn cmp_clockwise_from<N: Num>(
+    v: &Point<N>,
+    r: &Point<N>,
+    p: &Point<N>,
+    q: &Point<N>,
+    ctx: &N::Ctx,
+) -> Ordering {
     let half_p = half(v, r, p, ctx);
     let half_q = half(v, r, q, ctx);
-    half_p.cmp(&half_q).then_with(|| {
-        // Same half-turn: p comes first iff q is clockwise of p.
-        match orient(v, p, q, ctx) {
-            Ordering::Less => Ordering::Less,
-            Ordering::Greater => Ordering::Greater,
-            Ordering::Equal => Ordering::Equal,
-        }
-    })
+    half_p.cmp(&half_q).then_with(|| orient(v, p, q, ctx))
 }
 
 /// 0 if the clockwise angle from `v → r` to `v → p` is in (0, π], 1 if in (π, 2π].
@@ -53,9 +52,12 @@ mod tests {
     fn clockwise_order_around_origin() {
         let v = p(0, 0);
         let r = p(0, -1); // reference: down
-        // clockwise from down: left (π/2), up (π), right (3π/2), down itself (2π)
+                          // clockwise from down: left (π/2), up (π), right (3π/2), down itself (2π)
         let mut rays = vec![p(0, -3), p(5, 0), p(0, 2), p(-1, 0), p(1, 1), p(-1, -1)];
         rays.sort_by(|a, b| cmp_clockwise_from(&v, &r, a, b, &()));
-        assert_eq!(rays, vec![p(-1, -1), p(-1, 0), p(0, 2), p(1, 1), p(5, 0), p(0, -3)]);
+        assert_eq!(
+            rays,
+            vec![p(-1, -1), p(-1, 0), p(0, 2), p(1, 1), p(5, 0), p(0, -3)]
+        );
     }
 }

@@ -21,7 +21,10 @@ impl<N: Num> Point<N> {
 
     /// The point with integer coordinates (x, y).
     pub fn int(x: i64, y: i64) -> Point<N> {
-        Point { x: N::from_i64(x), y: N::from_i64(y) }
+        Point {
+            x: N::from_i64(x),
+            y: N::from_i64(y),
+        }
     }
 
     /// The midpoint of `self` and `other` (exact in exact mode).
@@ -76,7 +79,10 @@ impl<N: Num> BBox<N> {
     pub fn of<'a>(points: impl IntoIterator<Item = &'a Point<N>>) -> Option<BBox<N>> {
         let mut it = points.into_iter();
         let first = it.next()?;
-        let mut b = BBox { min: first.clone(), max: first.clone() };
+        let mut b = BBox {
+            min: first.clone(),
+            max: first.clone(),
+        };
         for p in it {
             b.include(p);
         }
@@ -109,11 +115,17 @@ impl<N: Num> BBox<N> {
 
     /// True if `other` lies inside `self` (closed boxes).
     pub fn contains_box(&self, other: &BBox<N>) -> bool {
-        self.min.x <= other.min.x && self.min.y <= other.min.y && other.max.x <= self.max.x && other.max.y <= self.max.y
+        self.min.x <= other.min.x
+            && self.min.y <= other.min.y
+            && other.max.x <= self.max.x
+            && other.max.y <= self.max.y
     }
 
     /// The largest coordinate magnitude, as an `f64` (for float mode's default ε).
     pub fn extent(&self) -> f64 {
-        [&self.min.x, &self.min.y, &self.max.x, &self.max.y].iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max)
+        [&self.min.x, &self.min.y, &self.max.x, &self.max.y]
+            .iter()
+            .map(|v| v.to_f64().abs())
+            .fold(0.0, f64::max)
     }
 }

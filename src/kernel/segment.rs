@@ -24,7 +24,13 @@ pub fn on_closed_segment<N: Num>(a: &Point<N>, b: &Point<N>, p: &Point<N>) -> bo
 }
 
 /// Classify the closed segments `ab` and `cd` (each of positive length).
-pub fn classify<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, d: &Point<N>, ctx: &N::Ctx) -> Contact<N> {
+pub fn classify<N: Num>(
+    a: &Point<N>,
+    b: &Point<N>,
+    c: &Point<N>,
+    d: &Point<N>,
+    ctx: &N::Ctx,
+) -> Contact<N> {
     let o1 = orient(a, b, c, ctx);
     let o2 = orient(a, b, d, ctx);
     if o1 == Ordering::Equal && o2 == Ordering::Equal {
@@ -38,7 +44,13 @@ pub fn classify<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, d: &Point<N>, 
             return Contact::Touching(p.clone());
         }
     }
-    if o1 != o2 && o1 != Ordering::Equal && o2 != Ordering::Equal && o3 != o4 && o3 != Ordering::Equal && o4 != Ordering::Equal {
+    if o1 != o2
+        && o1 != Ordering::Equal
+        && o2 != Ordering::Equal
+        && o3 != o4
+        && o3 != Ordering::Equal
+        && o4 != Ordering::Equal
+    {
         return Contact::Crossing(crossing_point(a, b, c, d));
     }
     Contact::Disjoint
@@ -63,8 +75,18 @@ fn collinear<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, d: &Point<N>) -> 
 fn crossing_point<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, d: &Point<N>) -> Point<N> {
     let cross = |ux: N, uy: N, vx: N, vy: N| ux * vy - uy * vx;
     let (dcx, dcy) = (d.x.clone() - c.x.clone(), d.y.clone() - c.y.clone());
-    let num = cross(c.x.clone() - a.x.clone(), c.y.clone() - a.y.clone(), dcx.clone(), dcy.clone());
-    let den = cross(b.x.clone() - a.x.clone(), b.y.clone() - a.y.clone(), dcx, dcy);
+    let num = cross(
+        c.x.clone() - a.x.clone(),
+        c.y.clone() - a.y.clone(),
+        dcx.clone(),
+        dcy.clone(),
+    );
+    let den = cross(
+        b.x.clone() - a.x.clone(),
+        b.y.clone() - a.y.clone(),
+        dcx,
+        dcy,
+    );
     a.lerp(b, &(num / den))
 }
 
@@ -89,20 +111,41 @@ mod tests {
 
     #[test]
     fn touching_at_endpoint_and_interior() {
-        assert_eq!(classify(&p(0, 0), &p(2, 0), &p(1, 0), &p(1, 5), &()), Contact::Touching(p(1, 0)));
-        assert_eq!(classify(&p(0, 0), &p(2, 0), &p(2, 0), &p(3, 5), &()), Contact::Touching(p(2, 0)));
+        assert_eq!(
+            classify(&p(0, 0), &p(2, 0), &p(1, 0), &p(1, 5), &()),
+            Contact::Touching(p(1, 0))
+        );
+        assert_eq!(
+            classify(&p(0, 0), &p(2, 0), &p(2, 0), &p(3, 5), &()),
+            Contact::Touching(p(2, 0))
+        );
     }
 
     #[test]
     fn collinear_cases() {
-        assert_eq!(classify(&p(0, 0), &p(2, 0), &p(3, 0), &p(5, 0), &()), Contact::Disjoint);
-        assert_eq!(classify(&p(0, 0), &p(2, 0), &p(2, 0), &p(5, 0), &()), Contact::Touching(p(2, 0)));
-        assert_eq!(classify(&p(0, 0), &p(4, 0), &p(5, 0), &p(1, 0), &()), Contact::Overlap(p(1, 0), p(4, 0)));
-        assert_eq!(classify(&p(4, 0), &p(0, 0), &p(1, 0), &p(5, 0), &()), Contact::Overlap(p(4, 0), p(1, 0)));
+        assert_eq!(
+            classify(&p(0, 0), &p(2, 0), &p(3, 0), &p(5, 0), &()),
+            Contact::Disjoint
+        );
+        assert_eq!(
+            classify(&p(0, 0), &p(2, 0), &p(2, 0), &p(5, 0), &()),
+            Contact::Touching(p(2, 0))
+        );
+        assert_eq!(
+            classify(&p(0, 0), &p(4, 0), &p(5, 0), &p(1, 0), &()),
+            Contact::Overlap(p(1, 0), p(4, 0))
+        );
+        assert_eq!(
+            classify(&p(4, 0), &p(0, 0), &p(1, 0), &p(5, 0), &()),
+            Contact::Overlap(p(4, 0), p(1, 0))
+        );
     }
 
     #[test]
     fn disjoint_near_miss() {
-        assert_eq!(classify(&p(0, 0), &p(2, 2), &p(2, 0), &p(3, -1), &()), Contact::Disjoint);
+        assert_eq!(
+            classify(&p(0, 0), &p(2, 2), &p(2, 0), &p(3, -1), &()),
+            Contact::Disjoint
+        );
     }
 }

@@ -37,7 +37,13 @@ impl Tolerance {
 
     /// A user-chosen ε > 0.
     pub fn new(eps: f64) -> Tolerance {
-        Tolerance { eps: if eps.is_finite() && eps > 0.0 { eps } else { 0.0 } }
+        Tolerance {
+            eps: if eps.is_finite() && eps > 0.0 {
+                eps
+            } else {
+                0.0
+            },
+        }
     }
 
     /// The tolerance in force (0 until resolved from an input's extent).
@@ -113,7 +119,9 @@ impl Num for Float {
 
     fn from_literal(lit: &Literal) -> Self {
         let sign = if lit.negative { "-" } else { "" };
-        let num: f64 = format!("{sign}{}e{}", lit.digits, lit.exp10).parse().unwrap_or(f64::NAN);
+        let num: f64 = format!("{sign}{}e{}", lit.digits, lit.exp10)
+            .parse()
+            .unwrap_or(f64::NAN);
         let den: f64 = lit.den.parse().unwrap_or(f64::NAN);
         Float::new(num / den)
     }
@@ -131,7 +139,10 @@ impl Num for Float {
     }
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], ctx: &Tolerance) -> Ordering {
-        let p = |q: [&Float; 2]| robust::Coord { x: q[0].0, y: q[1].0 };
+        let p = |q: [&Float; 2]| robust::Coord {
+            x: q[0].0,
+            y: q[1].0,
+        };
         let det = robust::orient2d(p(a), p(b), p(c));
         let len = (b[0].0 - a[0].0).hypot(b[1].0 - a[1].0);
         if det.abs() <= ctx.eps * len {
@@ -142,14 +153,18 @@ impl Num for Float {
     }
 
     fn combine_ctx(a: Tolerance, b: Tolerance) -> Tolerance {
-        Tolerance { eps: a.eps.max(b.eps) }
+        Tolerance {
+            eps: a.eps.max(b.eps),
+        }
     }
 
     fn resolve_ctx(ctx: Tolerance, extent: f64) -> Tolerance {
         if ctx.eps > 0.0 {
             ctx
         } else {
-            Tolerance { eps: (extent * Tolerance::RELATIVE_DEFAULT).max(f64::MIN_POSITIVE) }
+            Tolerance {
+                eps: (extent * Tolerance::RELATIVE_DEFAULT).max(f64::MIN_POSITIVE),
+            }
         }
     }
 }
@@ -169,7 +184,13 @@ mod tests {
         let f = Float::new;
         let (a, b) = ([&f(0.0), &f(0.0)], [&f(1.0), &f(0.0)]);
         let near = [&f(0.5), &f(1e-9)];
-        assert_eq!(Float::orient2d(a, b, near, &Tolerance::new(1e-6)), Ordering::Equal);
-        assert_eq!(Float::orient2d(a, b, near, &Tolerance::new(1e-12)), Ordering::Greater);
+        assert_eq!(
+            Float::orient2d(a, b, near, &Tolerance::new(1e-6)),
+            Ordering::Equal
+        );
+        assert_eq!(
+            Float::orient2d(a, b, near, &Tolerance::new(1e-12)),
+            Ordering::Greater
+        );
     }
 }

@@ -54,7 +54,9 @@ impl Num for GmpRational {
     }
 
     fn from_f64(v: f64) -> Result<Self, NumError> {
-        Rational::from_f64(v).map(GmpRational).ok_or(NumError::NotFinite(v))
+        Rational::from_f64(v)
+            .map(GmpRational)
+            .ok_or(NumError::NotFinite(v))
     }
 
     fn from_literal(lit: &Literal) -> Self {

@@ -32,7 +32,10 @@ impl Literal {
             if den.bytes().all(|c| c == b'0') {
                 return Err(NumError::ZeroDenominator(text.to_string()));
             }
-            return Ok(Literal { den: den.to_string(), ..num });
+            return Ok(Literal {
+                den: den.to_string(),
+                ..num
+            });
         }
         Literal::parse_decimal(s, text)
     }
@@ -50,7 +53,10 @@ impl Literal {
         };
         let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
         let all_digits = |t: &str| t.bytes().all(|c| c.is_ascii_digit());
-        if (int_part.is_empty() && frac_part.is_empty()) || !all_digits(int_part) || !all_digits(frac_part) {
+        if (int_part.is_empty() && frac_part.is_empty())
+            || !all_digits(int_part)
+            || !all_digits(frac_part)
+        {
             return Err(err());
         }
         let mut exp10: i64 = 0;
@@ -76,8 +82,17 @@ impl Literal {
         }
         let mut digits = format!("{int_part}{frac_part}");
         let trimmed = digits.trim_start_matches('0');
-        digits = if trimmed.is_empty() { "0".to_string() } else { trimmed.to_string() };
-        Ok(Literal { negative, digits, exp10, den: "1".to_string() })
+        digits = if trimmed.is_empty() {
+            "0".to_string()
+        } else {
+            trimmed.to_string()
+        };
+        Ok(Literal {
+            negative,
+            digits,
+            exp10,
+            den: "1".to_string(),
+        })
     }
 }
 
@@ -88,18 +103,34 @@ mod tests {
     #[test]
     fn decimal_with_exponent() {
         let l = Literal::parse("4.5040114e+00").unwrap();
-        assert_eq!((l.negative, l.digits.as_str(), l.exp10), (false, "45040114", -7));
+        assert_eq!(
+            (l.negative, l.digits.as_str(), l.exp10),
+            (false, "45040114", -7)
+        );
     }
 
     #[test]
     fn fraction_and_sign() {
         let l = Literal::parse("-7/2").unwrap();
-        assert_eq!((l.negative, l.digits.as_str(), l.den.as_str()), (true, "7", "2"));
+        assert_eq!(
+            (l.negative, l.digits.as_str(), l.den.as_str()),
+            (true, "7", "2")
+        );
     }
 
     #[test]
     fn rejects_garbage() {
-        for bad in ["", "-", "1.2.3", "e5", "1e", "abc", "1/0", "1/x", "1e9999999999"] {
+        for bad in [
+            "",
+            "-",
+            "1.2.3",
+            "e5",
+            "1e",
+            "abc",
+            "1/0",
+            "1/x",
+            "1e9999999999",
+        ] {
             assert!(Literal::parse(bad).is_err(), "{bad:?} accepted");
         }
     }

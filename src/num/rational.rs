@@ -69,8 +69,14 @@ mod tests {
         assert_eq!(x, Rational::new(45040114.into(), 10_000_000.into()));
         let tenth = Rational::parse("0.1").unwrap();
         assert_eq!(tenth * Rational::from_i64(10), Rational::from_i64(1));
-        assert_eq!(Rational::parse("1/3").unwrap(), Rational::new(1.into(), 3.into()));
-        assert_eq!(Rational::parse("-2.5e-1").unwrap(), Rational::new((-1).into(), 4.into()));
+        assert_eq!(
+            Rational::parse("1/3").unwrap(),
+            Rational::new(1.into(), 3.into())
+        );
+        assert_eq!(
+            Rational::parse("-2.5e-1").unwrap(),
+            Rational::new((-1).into(), 4.into())
+        );
     }
 
     #[test]

@@ -46,7 +46,10 @@ impl<N: Num> Curve<N> {
 
     /// The bounding box.
     pub fn bbox(&self) -> BBox<N> {
-        BBox::of(&self.vertices).unwrap_or(BBox { min: Point::int(0, 0), max: Point::int(0, 0) })
+        BBox::of(&self.vertices).unwrap_or(BBox {
+            min: Point::int(0, 0),
+            max: Point::int(0, 0),
+        })
     }
 
     /// The same curve with the opposite orientation.
@@ -78,7 +81,11 @@ pub(crate) fn twice_signed_area<N: Num>(v: &[Point<N>]) -> N {
 /// Canonical form of one curve (seed 000 Thm 3.21 up to start vertex and straight runs):
 /// drop vertices in the middle of a straight run unless they are in `keep` (touching points),
 /// then start at the lexicographically smallest vertex.
-pub(crate) fn canonical_curve<N: Num>(mut v: Vec<Point<N>>, keep: &HashSet<Point<N>>, ctx: &N::Ctx) -> Curve<N> {
+pub(crate) fn canonical_curve<N: Num>(
+    mut v: Vec<Point<N>>,
+    keep: &HashSet<Point<N>>,
+    ctx: &N::Ctx,
+) -> Curve<N> {
     loop {
         let n = v.len();
         if n <= 3 {
@@ -87,7 +94,9 @@ pub(crate) fn canonical_curve<N: Num>(mut v: Vec<Point<N>>, keep: &HashSet<Point
         let drop: Vec<bool> = (0..n)
             .map(|k| {
                 let (p, q, r) = (&v[(k + n - 1) % n], &v[k], &v[(k + 1) % n]);
-                !keep.contains(q) && orient(p, q, r, ctx) == Ordering::Equal && on_closed_segment(p, r, q)
+                !keep.contains(q)
+                    && orient(p, q, r, ctx) == Ordering::Equal
+                    && on_closed_segment(p, r, q)
             })
             .collect();
         if !drop.iter().any(|&d| d) {
@@ -98,7 +107,12 @@ pub(crate) fn canonical_curve<N: Num>(mut v: Vec<Point<N>>, keep: &HashSet<Point
         if kept < 3 {
             break;
         }
-        v = v.into_iter().zip(drop).filter(|(_, d)| !d).map(|(p, _)| p).collect();
+        v = v
+            .into_iter()
+            .zip(drop)
+            .filter(|(_, d)| !d)
+            .map(|(p, _)| p)
+            .collect();
     }
     canonical_rotation(&mut v);
     Curve { vertices: v }
@@ -122,15 +136,25 @@ mod tests {
 
     #[test]
     fn canonical_form_drops_straight_runs_and_rotates() {
-        let a = canonical_curve(pts(&[(2, 0), (2, 2), (1, 2), (0, 2), (0, 0), (1, 0)]), &HashSet::new(), &());
-        assert_eq!(a.vertices(), pts(&[(0, 0), (2, 0), (2, 2), (0, 2)]).as_slice());
+        let a = canonical_curve(
+            pts(&[(2, 0), (2, 2), (1, 2), (0, 2), (0, 0), (1, 0)]),
+            &HashSet::new(),
+            &(),
+        );
+        assert_eq!(
+            a.vertices(),
+            pts(&[(0, 0), (2, 0), (2, 2), (0, 2)]).as_slice()
+        );
     }
 
     #[test]
     fn canonical_form_keeps_touching_points() {
         let keep: HashSet<_> = pts(&[(1, 0)]).into_iter().collect();
         let a = canonical_curve(pts(&[(2, 0), (2, 2), (0, 2), (0, 0), (1, 0)]), &keep, &());
-        assert_eq!(a.vertices(), pts(&[(0, 0), (1, 0), (2, 0), (2, 2), (0, 2)]).as_slice());
+        assert_eq!(
+            a.vertices(),
+            pts(&[(0, 0), (1, 0), (2, 0), (2, 2), (0, 2)]).as_slice()
+        );
     }
 
     #[test]

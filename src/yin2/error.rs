@@ -15,19 +15,44 @@ pub enum YinError {
     TooFewVertices { curve: usize, count: usize },
     /// Two consecutive vertices are equal.
     #[error("curve {curve}, vertex {vertex}: repeats the previous vertex {point}")]
-    RepeatedVertex { curve: usize, vertex: usize, point: String },
+    RepeatedVertex {
+        curve: usize,
+        vertex: usize,
+        point: String,
+    },
     /// A curve meets itself other than at consecutive edges' shared vertex.
     #[error("curve {curve}, edge from vertex {vertex}: the curve is not simple, it meets itself at {point}")]
-    NotSimple { curve: usize, vertex: usize, point: String },
+    NotSimple {
+        curve: usize,
+        vertex: usize,
+        point: String,
+    },
     /// Two curves cross properly.
     #[error("curves {curve_a} and {curve_b} cross at {point} (edges from vertices {vertex_a} and {vertex_b})")]
-    ProperCrossing { curve_a: usize, vertex_a: usize, curve_b: usize, vertex_b: usize, point: String },
+    ProperCrossing {
+        curve_a: usize,
+        vertex_a: usize,
+        curve_b: usize,
+        vertex_b: usize,
+        point: String,
+    },
     /// Two curves share a stretch of boundary.
     #[error("curves {curve_a} and {curve_b} share the edge from {from} to {to} (edges from vertices {vertex_a} and {vertex_b})")]
-    SharedEdge { curve_a: usize, vertex_a: usize, curve_b: usize, vertex_b: usize, from: String, to: String },
+    SharedEdge {
+        curve_a: usize,
+        vertex_a: usize,
+        curve_b: usize,
+        vertex_b: usize,
+        from: String,
+        to: String,
+    },
     /// A curve directly inside another of the same orientation.
     #[error("curve {inner} lies directly inside curve {outer} and both are {orientation} oriented: orientations must alternate with nesting (seed 000 Def. 3.16)")]
-    NestedSameOrientation { outer: usize, inner: usize, orientation: &'static str },
+    NestedSameOrientation {
+        outer: usize,
+        inner: usize,
+        orientation: &'static str,
+    },
     /// Outermost curves of both orientations.
     #[error("outermost curves {positive} (positive) and {negative} (negative) cannot both be outermost: the set would be both bounded and unbounded (seed 000 Lemma 3.18)")]
     MixedOutermost { positive: usize, negative: usize },

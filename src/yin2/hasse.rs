@@ -31,7 +31,11 @@ impl Betti {
     /// The Betti numbers of a set whose atoms are `atoms`.
     pub(crate) fn of_atoms(atoms: &[Atom]) -> Betti {
         let holes: Vec<usize> = atoms.iter().map(|a| a.holes.len()).collect();
-        Betti { components: atoms.len(), total_holes: holes.iter().sum(), holes }
+        Betti {
+            components: atoms.len(),
+            total_holes: holes.iter().sum(),
+            holes,
+        }
     }
 }
 
@@ -53,8 +57,10 @@ pub(crate) fn parents<N: Num>(curves: &[Curve<N>], ctx: &N::Ctx) -> Vec<Option<u
         }
         let queries: Vec<Point<N>> = candidates.iter().map(|&j| samples[j].clone()).collect();
         let ccw = curves[i].is_positive();
-        let edges: Vec<(&Point<N>, &Point<N>)> =
-            curves[i].edges().map(|(a, b)| if ccw { (a, b) } else { (b, a) }).collect();
+        let edges: Vec<(&Point<N>, &Point<N>)> = curves[i]
+            .edges()
+            .map(|(a, b)| if ccw { (a, b) } else { (b, a) })
+            .collect();
         let located = locate_in_edges(&edges, false, &queries, ctx);
         for (&j, loc) in candidates.iter().zip(located) {
             if loc == Location::Inside && parent[j].is_none_or(|p| areas[i] < areas[p]) {
@@ -73,10 +79,16 @@ pub(crate) fn atoms(positive: &[bool], parent: &[Option<usize>]) -> Vec<Atom> {
     for (i, &pos) in positive.iter().enumerate() {
         if pos {
             atom_of[i] = atoms.len();
-            atoms.push(Atom { outer: Some(i), holes: Vec::new() });
+            atoms.push(Atom {
+                outer: Some(i),
+                holes: Vec::new(),
+            });
         }
     }
-    let mut unbounded = Atom { outer: None, holes: Vec::new() };
+    let mut unbounded = Atom {
+        outer: None,
+        holes: Vec::new(),
+    };
     for (j, &pos) in positive.iter().enumerate() {
         if pos {
             continue;

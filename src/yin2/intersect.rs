@@ -1,50 +1,634 @@
-//! MRS-a of seed 000 Def. 4.8: all contacts between the edges of polygons, by a plane sweep.
+//! MRS-a of seed 000 Def. 4.8: all contacts between edges, by a Bentley–Ottmann sweep in
+//! O((n + I) log n) (seed 002 §1.3).
+//!
+//! The sweep line is tilted infinitesimally, so events are taken in the lexicographic order of
+//! points and a vertical edge runs from its lower to its upper end. At each event `p` the edges
+//! through `p` (those starting there, ending there, or containing it) are taken out of the
+//! status, every pair of them that first meets at `p` is reported, and the ones that go on are
+//! put back in the order of their directions after `p`; only the two new neighbour pairs are
+//! tested for a crossing ahead. Every decision is [`orient`], [`classify`] or the order of points.
 
-use crate::kernel::{classify, Contact, Point};
+use crate::kernel::{classify, orient, Contact, Point};
 use crate::num::Num;
+use std::cmp::Ordering;
+use std::collections::BTreeMap;
 
 /// A closed straight edge `a → b` of positive length.
 pub type Edge<N> = (Point<N>, Point<N>);
 
 /// All pairs `(i, j)`, `i < j`, of edges that meet and for which `wanted(i, j)` holds, with
-/// their contact. The result is sorted by `(i, j)`.
-///
-/// A sweep in x over the edges' extents: each edge is tested against the edges still active
-/// whose y-extent overlaps its own.
+/// their contact, sorted by `(i, j)`: Bentley–Ottmann for MRS-a, O((n + I) log n) (seed 002 §1.3).
 pub fn intersections<N: Num>(
     edges: &[Edge<N>],
     ctx: &N::Ctx,
     wanted: impl Fn(usize, usize) -> bool,
 ) -> Vec<(usize, usize, Contact<N>)> {
-    let lo = |e: &Edge<N>| if e.0 <= e.1 { e.0.clone() } else { e.1.clone() };
-    let hi = |e: &Edge<N>| if e.0 <= e.1 { e.1.clone() } else { e.0.clone() };
-    let ylo = |e: &Edge<N>| e.0.y.clone().min(e.1.y.clone());
-    let yhi = |e: &Edge<N>| e.0.y.clone().max(e.1.y.clone());
-    let mut order: Vec<usize> = (0..edges.len()).collect();
-    let starts: Vec<Point<N>> = edges.iter().map(lo).collect();
-    order.sort_by(|&i, &j| starts[i].cmp(&starts[j]));
-    let ends: Vec<N> = edges.iter().map(|e| hi(e).x).collect();
-    let mut active: Vec<usize> = Vec::new();
-    let mut out = Vec::new();
-    for &i in &order {
-        let x = &starts[i].x;
-        active.retain(|&j| &ends[j] >= x);
-        let (y0, y1) = (ylo(&edges[i]), yhi(&edges[i]));
-        for &j in &active {
-            if yhi(&edges[j]) < y0 || ylo(&edges[j]) > y1 {
-                continue;
-            }
-            let (a, b) = (i.min(j), i.max(j));
-            if !wanted(a, b) {
-                continue;
-            }
-            let c = classify(&edges[a].0, &edges[a].1, &edges[b].0, &edges[b].1, ctx);
-            if c != Contact::Disjoint {
-                out.push((a, b, c));
+    let mut pairs = Sweep::new(edges, ctx).run();
+    pairs.sort_unstable();
+    pairs.dedup();
+    pairs
+        .into_iter()
+        .filter(|&(i, j)| wanted(i, j))
+        .filter_map(|(i, j)| {
+            let c = classify(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, ctx);
+            (c != Contact::Disjoint).then_some((i, j, c))
+        })
+        .collect()
+}
+
+/// No node (the empty treap).
+const NIL: usize = usize::MAX;
+
+/// The sweep status of seed 002 §1.3: a treap over the edges cut by the sweep line, bottom to top.
+///
+/// The order is implicit (held by the tree's shape); it is searched with monotone predicates
+/// evaluated at the current event, and an edge is removed through its node (parent links), so
+/// no comparison between two stored edges is ever needed.
+struct Status {
+    left: Vec<usize>,
+    right: Vec<usize>,
+    up: Vec<usize>,
+    prio: Vec<u64>,
+    live: Vec<bool>,
+    root: usize,
+}
+
+impl Status {
+    /// An empty status for the edges `0..n` (priorities from a fixed hash: deterministic output).
+    fn new(n: usize) -> Status {
+        let prio = (0..n as u64)
+            .map(|i| {
+                let mut z = i.wrapping_add(0x9e37_79b9_7f4a_7c15);
+                z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+                z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+                z ^ (z >> 31)
+            })
+            .collect();
+        Status {
+            left: vec![NIL; n],
+            right: vec![NIL; n],
+            up: vec![NIL; n],
+            prio,
+            live: vec![false; n],
+            root: NIL,
+        }
+    }
+
+    /// Detach node `x` from every link (before it is re-inserted or dropped).
+    fn reset(&mut self, x: usize) {
+        self.left[x] = NIL;
+        self.right[x] = NIL;
+        self.up[x] = NIL;
+    }
+
+    /// Split treap `t` into the nodes where `goes_right` is false and those where it is true
+    /// (`goes_right` must be monotone along the order for a meaningful result).
+    fn split(&mut self, mut t: usize, mut goes_right: impl FnMut(usize) -> bool) -> (usize, usize) {
+        let (mut lroot, mut rroot, mut lhook, mut rhook) = (NIL, NIL, NIL, NIL);
+        while t != NIL {
+            if goes_right(t) {
+                if rhook == NIL {
+                    rroot = t;
+                    self.up[t] = NIL;
+                } else {
+                    self.left[rhook] = t;
+                    self.up[t] = rhook;
+                }
+                rhook = t;
+                t = self.left[t];
+            } else {
+                if lhook == NIL {
+                    lroot = t;
+                    self.up[t] = NIL;
+                } else {
+                    self.right[lhook] = t;
+                    self.up[t] = lhook;
+                }
+                lhook = t;
+                t = self.right[t];
             }
         }
-        active.push(i);
+        if lhook != NIL {
+            self.right[lhook] = NIL;
+        }
+        if rhook != NIL {
+            self.left[rhook] = NIL;
+        }
+        (lroot, rroot)
     }
-    out.sort_by(|p, q| (p.0, p.1).cmp(&(q.0, q.1)));
-    out
+
+    /// The treap holding all of `a` followed by all of `b`.
+    fn merge(&mut self, mut a: usize, mut b: usize) -> usize {
+        let (mut root, mut hook, mut hook_right) = (NIL, NIL, false);
+        loop {
+            let (x, done) = if a == NIL {
+                (b, true)
+            } else if b == NIL {
+                (a, true)
+            } else if self.prio[a] >= self.prio[b] {
+                (a, false)
+            } else {
+                (b, false)
+            };
+            if hook == NIL {
+                root = x;
+            } else if hook_right {
+                self.right[hook] = x;
+            } else {
+                self.left[hook] = x;
+            }
+            if x != NIL {
+                self.up[x] = hook;
+            }
+            if done {
+                return root;
+            }
+            hook = x;
+            if x == a {
+                hook_right = true;
+                a = self.right[a];
+            } else {
+                hook_right = false;
+                b = self.left[b];
+            }
+        }
+    }
+
+    /// Remove node `x` from the main tree through its parent link.
+    fn remove(&mut self, x: usize) {
+        let m = self.merge(self.left[x], self.right[x]);
+        let par = self.up[x];
+        if m != NIL {
+            self.up[m] = par;
+        }
+        if par == NIL {
+            self.root = m;
+        } else if self.left[par] == x {
+            self.left[par] = m;
+        } else {
+            self.right[par] = m;
+        }
+        self.reset(x);
+        self.live[x] = false;
+    }
+
+    /// The first node of treap `t` (`NIL` if empty).
+    fn first(&self, mut t: usize) -> usize {
+        while t != NIL && self.left[t] != NIL {
+            t = self.left[t];
+        }
+        t
+    }
+
+    /// The last node of treap `t` (`NIL` if empty).
+    fn last(&self, mut t: usize) -> usize {
+        while t != NIL && self.right[t] != NIL {
+            t = self.right[t];
+        }
+        t
+    }
+
+    /// Append the nodes of treap `t` to `out`, in order.
+    fn collect(&self, t: usize, out: &mut Vec<usize>) {
+        let mut stack = Vec::new();
+        let mut x = t;
+        while x != NIL || !stack.is_empty() {
+            while x != NIL {
+                stack.push(x);
+                x = self.left[x];
+            }
+            if let Some(y) = stack.pop() {
+                out.push(y);
+                x = self.right[y];
+            }
+        }
+    }
+}
+
+/// A merge sort that terminates and never panics even if `cmp` is not a total order (float
+/// mode's ε-predicates), for the orders around an event of seed 002 §1.3.
+fn sort_robust(v: &mut [usize], cmp: &mut impl FnMut(usize, usize) -> Ordering) {
+    if v.len() <= 12 {
+        for i in 1..v.len() {
+            let mut j = i;
+            while j > 0 && cmp(v[j - 1], v[j]) == Ordering::Greater {
+                v.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+        return;
+    }
+    let mid = v.len() / 2;
+    sort_robust(&mut v[..mid], cmp);
+    sort_robust(&mut v[mid..], cmp);
+    let mut merged = Vec::with_capacity(v.len());
+    let (mut i, mut j) = (0, mid);
+    while i < mid && j < v.len() {
+        if cmp(v[j], v[i]) == Ordering::Less {
+            merged.push(v[j]);
+            j += 1;
+        } else {
+            merged.push(v[i]);
+            i += 1;
+        }
+    }
+    merged.extend_from_slice(&v[i..mid]);
+    merged.extend_from_slice(&v[j..]);
+    v.copy_from_slice(&merged);
+}
+
+/// The state of the Bentley–Ottmann sweep of seed 002 §1.3 over one edge set.
+struct Sweep<'a, N: Num> {
+    edges: &'a [Edge<N>],
+    /// Each edge as `(lo, hi)`, its ends in sweep order.
+    seg: Vec<(&'a Point<N>, &'a Point<N>)>,
+    ctx: &'a N::Ctx,
+    status: Status,
+    /// Crossings ahead of the sweep, with the edges found crossing there.
+    crossings: BTreeMap<Point<N>, Vec<usize>>,
+    /// Event stamp of the last time each edge was taken out of the status.
+    mark: Vec<usize>,
+    /// Candidate pairs `(i, j)`, `i < j`.
+    pairs: Vec<(usize, usize)>,
+}
+
+impl<'a, N: Num> Sweep<'a, N> {
+    /// Set up the sweep of seed 002 §1.3 over `edges`.
+    fn new(edges: &'a [Edge<N>], ctx: &'a N::Ctx) -> Self {
+        let seg = edges
+            .iter()
+            .map(|(a, b)| if a <= b { (a, b) } else { (b, a) })
+            .collect();
+        Sweep {
+            edges,
+            seg,
+            ctx,
+            status: Status::new(edges.len()),
+            crossings: BTreeMap::new(),
+            mark: vec![usize::MAX; edges.len()],
+            pairs: Vec::new(),
+        }
+    }
+
+    /// Run the sweep of seed 002 §1.3: every pair of edges that meet, once, in exact mode.
+    fn run(mut self) -> Vec<(usize, usize)> {
+        let mut ends: Vec<(&Point<N>, usize, bool)> = Vec::with_capacity(2 * self.seg.len());
+        for (i, &(lo, hi)) in self.seg.iter().enumerate() {
+            ends.push((lo, i, false));
+            ends.push((hi, i, true));
+        }
+        ends.sort_by(|a, b| a.0.cmp(b.0));
+        let (mut k, mut stamp) = (0, 0);
+        let (mut starting, mut ending) = (Vec::new(), Vec::new());
+        loop {
+            let next_end = ends.get(k).map(|e| e.0);
+            let take_crossing = match (self.crossings.first_key_value(), next_end) {
+                (None, None) => break,
+                (Some((q, _)), Some(e)) => q <= e,
+                (Some(_), None) => true,
+                (None, Some(_)) => false,
+            };
+            let (p, through) = match (take_crossing, next_end) {
+                (false, Some(e)) => (e.clone(), Vec::new()),
+                _ => match self.crossings.pop_first() {
+                    Some(x) => x,
+                    None => break,
+                },
+            };
+            starting.clear();
+            ending.clear();
+            while let Some(&(q, i, is_end)) = ends.get(k) {
+                if *q != p {
+                    break;
+                }
+                if is_end {
+                    ending.push(i);
+                } else {
+                    starting.push(i);
+                }
+                k += 1;
+            }
+            self.event(&p, &starting, &ending, &through, stamp);
+            stamp += 1;
+        }
+        self.pairs
+    }
+
+    /// Handle event `p` of seed 002 §1.3: take out the edges through `p`, report the pairs
+    /// meeting first at `p`, put back the edges going on in their order after `p`, and test the
+    /// new neighbours for crossings ahead.
+    fn event(
+        &mut self,
+        p: &Point<N>,
+        starting: &[usize],
+        ending: &[usize],
+        through: &[usize],
+        stamp: usize,
+    ) {
+        let (seg, ctx) = (&self.seg, self.ctx);
+        let status = &mut self.status;
+        // Edges known to pass through p (ending here, or found crossing here): out by handle.
+        let mut old = Vec::new();
+        for &s in ending.iter().chain(through) {
+            if status.live[s] && self.mark[s] != stamp {
+                self.mark[s] = stamp;
+                status.remove(s);
+                old.push(s);
+            }
+        }
+        // The rest of the edges through p form the middle of the status.
+        let side = |t: usize| orient(seg[t].0, seg[t].1, p, ctx);
+        let (below, rest) = status.split(status.root, |t| side(t) != Ordering::Greater);
+        let (on, above) = status.split(rest, |t| side(t) == Ordering::Less);
+        status.collect(on, &mut old);
+        for &s in &old {
+            status.reset(s);
+            status.live[s] = false;
+        }
+        // Pairs meeting first at p: all pairs with an edge starting here, and the pairs of
+        // edges arriving from different directions (collinear ones met before p).
+        sort_robust(&mut old, &mut |a, b| {
+            orient(p, seg[a].0, seg[b].0, ctx).reverse().then(a.cmp(&b))
+        });
+        let pair = |a: usize, b: usize| (a.min(b), a.max(b));
+        let mut group_end = 0;
+        for k in 0..old.len() {
+            if k == group_end {
+                group_end = k + 1;
+                while group_end < old.len()
+                    && orient(p, seg[old[group_end - 1]].0, seg[old[group_end]].0, ctx)
+                        == Ordering::Equal
+                {
+                    group_end += 1;
+                }
+            }
+            self.pairs
+                .extend(old[group_end..].iter().map(|&b| pair(old[k], b)));
+        }
+        for (k, &s) in starting.iter().enumerate() {
+            self.pairs
+                .extend(starting[k + 1..].iter().chain(&old).map(|&b| pair(s, b)));
+        }
+        // Back into the status: the edges going on past p, by their direction after p.
+        let mut next: Vec<usize> = old
+            .iter()
+            .chain(starting)
+            .copied()
+            .filter(|&s| seg[s].1 > p)
+            .collect();
+        sort_robust(&mut next, &mut |a, b| {
+            orient(p, seg[a].1, seg[b].1, ctx).reverse().then(a.cmp(&b))
+        });
+        let (lower, upper) = (status.last(below), status.first(above));
+        let mut middle = NIL;
+        for &s in &next {
+            status.live[s] = true;
+            middle = status.merge(middle, s);
+        }
+        let joined = status.merge(below, middle);
+        status.root = status.merge(joined, above);
+        match (next.first(), next.last()) {
+            (Some(&f), Some(&l)) => {
+                self.check(lower, f, p);
+                self.check(l, upper, p);
+            }
+            _ => self.check(lower, upper, p),
+        }
+    }
+
+    /// Schedule the crossing of neighbours `s` and `t` if it lies ahead of `p` (seed 002 §1.3).
+    fn check(&mut self, s: usize, t: usize, p: &Point<N>) {
+        if s == NIL || t == NIL {
+            return;
+        }
+        let (i, j) = (s.min(t), s.max(t));
+        let (a, b) = (&self.edges[i], &self.edges[j]);
+        if let Contact::Crossing(q) = classify(&a.0, &a.1, &b.0, &b.1, self.ctx) {
+            if q > *p {
+                self.crossings.entry(q).or_default().extend([i, j]);
+            } else {
+                // Only with rounded crossing points (float mode): keep the pair anyway.
+                self.pairs.push((i, j));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::{Float, Rational, Tolerance};
+    use proptest::prelude::*;
+
+    type Seg = ((i64, i64), (i64, i64));
+
+    fn edges_of<N: Num>(segs: &[Seg]) -> Vec<Edge<N>> {
+        segs.iter().map(|&((a, b), (c, d))| (Point::int(a, b), Point::int(c, d))).collect()
+    }
+
+    /// The O(n²) oracle: every pair, classified.
+    fn brute<N: Num>(
+        edges: &[Edge<N>],
+        ctx: &N::Ctx,
+        wanted: impl Fn(usize, usize) -> bool,
+    ) -> Vec<(usize, usize, Contact<N>)> {
+        let mut out = Vec::new();
+        for i in 0..edges.len() {
+            for j in i + 1..edges.len() {
+                if wanted(i, j) {
+                    let c = classify(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, ctx);
+                    if c != Contact::Disjoint {
+                        out.push((i, j, c));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    fn check_exact(segs: &[Seg], wanted: impl Fn(usize, usize) -> bool + Copy) -> usize {
+        let edges = edges_of::<Rational>(segs);
+        let got = intersections(&edges, &(), wanted);
+        let want = brute(&edges, &(), wanted);
+        assert_eq!(got, want, "segments: {segs:?}");
+        got.len()
+    }
+
+    /// Float mode: always a sorted subset of the oracle (the contacts are classified alike).
+    fn check_float(segs: &[Seg]) -> (usize, usize) {
+        let edges = edges_of::<Float>(segs);
+        let ctx = Float::resolve_ctx(Tolerance::default(), 8.0);
+        let got = intersections(&edges, &ctx, |_, _| true);
+        let want = brute(&edges, &ctx, |_, _| true);
+        assert!(got.windows(2).all(|w| (w[0].0, w[0].1) < (w[1].0, w[1].1)));
+        assert!(got.iter().all(|x| want.contains(x)), "segments: {segs:?}");
+        (got.len(), want.len())
+    }
+
+    fn seg() -> impl Strategy<Value = Seg> {
+        let c = || 0..=4i64;
+        prop_oneof![
+            3 => ((c(), c()), (c(), c())),
+            2 => (c(), c(), c()).prop_map(|(y, a, b)| ((a, y), (b, y))),
+            2 => (c(), c(), c()).prop_map(|(x, a, b)| ((x, a), (x, b))),
+            2 => (c(), c()).prop_map(|(a, b)| ((a, a), (b, b))),
+            1 => (c(), c()).prop_map(|(a, b)| ((a, 4 - a), (b, 4 - b))),
+            2 => (c(), c()).prop_map(|q| ((2, 2), q)),
+            1 => (0..=2i64, 0..=2i64).prop_map(|(a, b)| ((2 * a, a), (2 * b, b))),
+        ]
+    }
+
+    fn segs(zero_length: bool) -> impl Strategy<Value = Vec<Seg>> {
+        proptest::collection::vec(seg(), 0..40)
+            .prop_map(move |v| v.into_iter().filter(|s| zero_length || s.0 != s.1).collect())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(600))]
+
+        #[test]
+        fn sweep_equals_brute_force(s in segs(false)) {
+            check_exact(&s, |_, _| true);
+        }
+
+        #[test]
+        fn sweep_respects_wanted(s in segs(false), m in 1usize..5, na in 0usize..40) {
+            check_exact(&s, |i, j| (i * 7 + j * 3) % (m + 1) != 0);
+            check_exact(&s, |i, j| (i < na) != (j < na));
+        }
+
+        #[test]
+        fn zero_length_edges_do_not_break_it(s in segs(true)) {
+            check_exact(&s, |_, _| true);
+        }
+
+        #[test]
+        fn float_mode_is_a_subset(s in segs(false)) {
+            check_float(&s);
+        }
+    }
+
+    #[test]
+    fn star_through_one_point() {
+        // 16 edges through (0, 0): 12 crossing it, 4 ending there, with two duplicates.
+        let mut s: Vec<Seg> = vec![];
+        for (a, b) in [(1, 0), (0, 1), (1, 1), (1, -1), (2, 1), (1, 2), (2, -1), (1, -2), (3, 1), (1, 3)] {
+            s.push(((-a, -b), (a, b)));
+        }
+        s.extend([((5, 0), (-5, 0)), ((0, 5), (0, -5))]);
+        s.extend([((0, 0), (4, 1)), ((-4, 1), (0, 0)), ((0, 0), (0, 7)), ((0, 0), (-3, -3))]);
+        let n = s.len();
+        assert_eq!(check_exact(&s, |_, _| true), n * (n - 1) / 2);
+    }
+
+    #[test]
+    fn overlapping_collinear_chain() {
+        // Edges [i, i + 3] on the x-axis, alternating directions, plus the same on a diagonal
+        // and a vertical line, and a transversal through all of them.
+        let mut s: Vec<Seg> = vec![];
+        for i in 0..10 {
+            let (a, b) = if i % 2 == 0 { (i, i + 3) } else { (i + 3, i) };
+            s.push(((a, 0), (b, 0)));
+            s.push(((a, a), (b, b)));
+            s.push(((5, a), (5, b)));
+        }
+        s.push(((0, 13), (13, 0)));
+        check_exact(&s, |_, _| true);
+    }
+
+    #[test]
+    fn crossing_grid() {
+        let mut s: Vec<Seg> = vec![];
+        for i in 0..12 {
+            s.push(((-1, i), (12, i)));
+            s.push(((i, 12), (i, -1)));
+        }
+        let got = check_exact(&s, |_, _| true);
+        assert_eq!(got, 144);
+        // Closing the grid's frame adds touching and overlapping contacts.
+        s.extend([((-1, -1), (12, -1)), ((12, -1), (12, 12)), ((-1, 12), (12, 12)), ((-1, -1), (-1, 12))]);
+        s.extend([((3, 3), (3, 8)), ((3, 5), (9, 5)), ((0, 0), (11, 11)), ((11, 0), (0, 11))]);
+        check_exact(&s, |_, _| true);
+    }
+
+    #[test]
+    fn duplicates_and_reversals() {
+        let mut s: Vec<Seg> = vec![];
+        for _ in 0..4 {
+            s.extend([((0, 0), (3, 3)), ((3, 3), (0, 0)), ((1, 0), (1, 4)), ((1, 4), (1, 0))]);
+        }
+        let n = s.len();
+        assert_eq!(check_exact(&s, |_, _| true), n * (n - 1) / 2);
+    }
+
+    #[test]
+    fn float_mode_on_axis_parallel_grids() {
+        let mut s: Vec<Seg> = vec![];
+        for i in 0..6 {
+            s.push(((-1, i), (6, i)));
+            s.push(((i, 6), (i, -1)));
+            s.push(((i, i), (i + 2, i)));
+        }
+        let (got, want) = check_float(&s);
+        assert_eq!(got, want);
+    }
+
+    /// A deterministic generator of `n` short segments in a large square, a quarter of them
+    /// axis-parallel on a coarse grid (collinear overlaps, shared ends, T-junctions).
+    fn random_segments(n: usize, seed: u64) -> Vec<Seg> {
+        let mut state = seed;
+        let mut next = move |m: i64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % m as u64) as i64
+        };
+        (0..n)
+            .map(|_| {
+                if next(4) == 0 {
+                    let (x, y, l) = (next(500) * 64, next(500) * 64, (1 + next(4)) * 64);
+                    if next(2) == 0 {
+                        ((x, y), (x + l, y))
+                    } else {
+                        ((x, y + l), (x, y))
+                    }
+                } else {
+                    let (x, y) = (next(32_000), next(32_000));
+                    ((x, y), (x + next(401) - 200, y + next(401) - 200))
+                }
+            })
+            .filter(|s| s.0 != s.1)
+            .collect()
+    }
+
+    /// The oracle for many edges: integer bounding boxes first, then `classify`.
+    fn brute_boxed(segs: &[Seg]) -> Vec<(usize, usize, Contact<Rational>)> {
+        let boxes: Vec<[i64; 4]> =
+            segs.iter().map(|&((a, b), (c, d))| [a.min(c), b.min(d), a.max(c), b.max(d)]).collect();
+        let edges = edges_of::<Rational>(segs);
+        let mut out = Vec::new();
+        for i in 0..segs.len() {
+            let bi = boxes[i];
+            for j in i + 1..segs.len() {
+                let bj = boxes[j];
+                if bi[0] <= bj[2] && bj[0] <= bi[2] && bi[1] <= bj[3] && bj[1] <= bi[3] {
+                    let c = classify(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, &());
+                    if c != Contact::Disjoint {
+                        out.push((i, j, c));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn twenty_thousand_random_segments() {
+        let segs = random_segments(20_000, 0x2545_f491_4f6c_dd1d);
+        let edges = edges_of::<Rational>(&segs);
+        let got = intersections(&edges, &(), |_, _| true);
+        let want = brute_boxed(&segs);
+        assert!(want.len() > 1000);
+        assert_eq!(got, want);
+    }
 }

@@ -40,7 +40,11 @@ fn cmp_edges<N: Num>(s: &Key<'_, N>, t: &Key<'_, N>) -> Ordering {
         return cmp_edges(t, s).reverse();
     }
     // t starts at or right of s's start: compare t's start (or end) with s's line.
-    let mut o = if s.lo == t.lo { Ordering::Equal } else { orient(s.lo, s.hi, t.lo, s.ctx) };
+    let mut o = if s.lo == t.lo {
+        Ordering::Equal
+    } else {
+        orient(s.lo, s.hi, t.lo, s.ctx)
+    };
     if o == Ordering::Equal {
         o = orient(s.lo, s.hi, t.hi, s.ctx);
     }
@@ -94,7 +98,14 @@ pub fn locate_in_edges<N: Num>(
         }
         events.push((&lo.x, 1, keys.len()));
         events.push((&hi.x, 0, keys.len()));
-        keys.push(Key { lo, hi, from, to, id, ctx });
+        keys.push(Key {
+            lo,
+            hi,
+            from,
+            to,
+            id,
+            ctx,
+        });
     }
     verticals.sort();
     for (i, q) in queries.iter().enumerate() {
@@ -102,7 +113,11 @@ pub fn locate_in_edges<N: Num>(
     }
     events.sort_by(|a, b| a.0.cmp(b.0).then(a.1.cmp(&b.1)));
 
-    let outside_all = if unbounded { Location::Inside } else { Location::Outside };
+    let outside_all = if unbounded {
+        Location::Inside
+    } else {
+        Location::Outside
+    };
     let mut out = vec![outside_all; queries.len()];
     let mut status: BTreeSet<&Key<'_, N>> = BTreeSet::new();
     for (_, kind, i) in events {
@@ -118,7 +133,14 @@ pub fn locate_in_edges<N: Num>(
                 out[i] = if vertices.binary_search(&p).is_ok() || on_vertical(&verticals, p) {
                     Location::OnBoundary
                 } else {
-                    let probe = Key { lo: p, hi: p, from: p, to: p, id: usize::MAX, ctx };
+                    let probe = Key {
+                        lo: p,
+                        hi: p,
+                        from: p,
+                        to: p,
+                        id: usize::MAX,
+                        ctx,
+                    };
                     classify_between(&status, &probe, p, outside_all, ctx)
                 };
             }
@@ -174,10 +196,26 @@ mod tests {
     fn square_with_vertical_and_horizontal_edges() {
         let v = [p(0, 0), p(2, 0), p(2, 2), p(0, 2)];
         let edges: Vec<_> = (0..4).map(|k| (&v[k], &v[(k + 1) % 4])).collect();
-        let q = [p(1, 1), p(3, 1), p(0, 1), p(1, 0), p(2, 2), p(-1, 1), p(1, 2), p(2, 1), p(1, 3)];
+        let q = [
+            p(1, 1),
+            p(3, 1),
+            p(0, 1),
+            p(1, 0),
+            p(2, 2),
+            p(-1, 1),
+            p(1, 2),
+            p(2, 1),
+            p(1, 3),
+        ];
         use Location::*;
         let got = locate_in_edges(&edges, false, &q, &());
-        assert_eq!(got, vec![Inside, Outside, OnBoundary, OnBoundary, OnBoundary, Outside, OnBoundary, OnBoundary, Outside]);
+        assert_eq!(
+            got,
+            vec![
+                Inside, Outside, OnBoundary, OnBoundary, OnBoundary, Outside, OnBoundary,
+                OnBoundary, Outside
+            ]
+        );
         // The reversed square is its complement.
         let rev: Vec<_> = edges.iter().map(|&(a, b)| (b, a)).collect();
         let got = locate_in_edges(&rev, true, &q[..2], &());
@@ -188,9 +226,21 @@ mod tests {
     fn query_directly_above_a_vertex_and_between_touching_triangles() {
         // Two triangles touching at (2,1); queries at x = 2 above and below the touch.
         let v = [p(0, 0), p(2, 1), p(0, 2), p(4, 0), p(4, 2), p(2, 1)];
-        let edges = vec![(&v[0], &v[1]), (&v[1], &v[2]), (&v[2], &v[0]), (&v[3], &v[4]), (&v[4], &v[5]), (&v[5], &v[3])];
+        let edges = vec![
+            (&v[0], &v[1]),
+            (&v[1], &v[2]),
+            (&v[2], &v[0]),
+            (&v[3], &v[4]),
+            (&v[4], &v[5]),
+            (&v[5], &v[3]),
+        ];
         use Location::*;
-        let got = locate_in_edges(&edges, false, &[p(2, 0), p(2, 3), p(1, 1), p(3, 1), p(2, 1)], &());
+        let got = locate_in_edges(
+            &edges,
+            false,
+            &[p(2, 0), p(2, 3), p(1, 1), p(3, 1), p(2, 1)],
+            &(),
+        );
         assert_eq!(got, vec![Outside, Outside, Inside, Inside, OnBoundary]);
     }
 }

@@ -23,7 +23,12 @@ impl<N: Num> YinSet2<N> {
 
 /// MRS-a..d on two realizable spadjors, then the pasting map.
 fn meet_spadjors<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, ctx: N::Ctx) -> YinSet2<N> {
-    let edges: Vec<Edge<N>> = a.edges().into_iter().chain(b.edges()).map(|(p, q)| (p.clone(), q.clone())).collect();
+    let edges: Vec<Edge<N>> = a
+        .edges()
+        .into_iter()
+        .chain(b.edges())
+        .map(|(p, q)| (p.clone(), q.clone()))
+        .collect();
     let na = a.curves.iter().map(|c| c.len()).sum::<usize>();
     // MRS-a: V, the points of P(𝒥) ∩ P(𝒦) (isolated points and ends of shared paths).
     let mut cuts: Vec<Vec<Point<N>>> = vec![Vec::new(); edges.len()];
@@ -88,5 +93,8 @@ fn cut_edge<N: Num>(e: &Edge<N>, mut cut: Vec<Point<N>>) -> Vec<(Point<N>, Point
     stops.push(a.clone());
     stops.extend(cut);
     stops.push(b.clone());
-    stops.windows(2).map(|w| (w[0].clone(), w[1].clone())).collect()
+    stops
+        .windows(2)
+        .map(|w| (w[0].clone(), w[1].clone()))
+        .collect()
 }

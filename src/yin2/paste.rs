@@ -14,7 +14,11 @@ pub(crate) struct Segmented<N: Num> {
 
 impl<N: Num> Segmented<N> {
     pub(crate) fn new() -> Segmented<N> {
-        Segmented { points: Vec::new(), index: HashMap::new(), edges: Vec::new() }
+        Segmented {
+            points: Vec::new(),
+            index: HashMap::new(),
+            edges: Vec::new(),
+        }
     }
 
     /// The id of a point (interned).
@@ -54,7 +58,10 @@ impl<N: Num> Segmented<N> {
             out[a].push(e);
             indegree[b] += 1;
         }
-        let touching = (0..n).filter(|&v| indegree[v] > 1).map(|v| self.points[v].clone()).collect();
+        let touching = (0..n)
+            .filter(|&v| indegree[v] > 1)
+            .map(|v| self.points[v].clone())
+            .collect();
         let mut used = vec![false; self.edges.len()];
         let mut pos = vec![usize::MAX; n];
         let mut loops = Vec::new();
@@ -73,7 +80,12 @@ impl<N: Num> Segmented<N> {
                     for &e in &cycle {
                         pos[self.edges[e].0] = usize::MAX;
                     }
-                    loops.push(cycle.iter().map(|&e| self.points[self.edges[e].0].clone()).collect());
+                    loops.push(
+                        cycle
+                            .iter()
+                            .map(|&e| self.points[self.edges[e].0].clone())
+                            .collect(),
+                    );
                     continue;
                 }
                 match self.next_piece(last, &out[v], &used, ctx) {
@@ -97,11 +109,27 @@ impl<N: Num> Segmented<N> {
 
     /// S2R-b: of the unused pieces leaving the end of `incoming`, the one with the smallest
     /// counterclockwise angle ∠β_out v β_in, i.e. the clockwise neighbour.
-    fn next_piece(&self, incoming: usize, candidates: &[usize], used: &[bool], ctx: &N::Ctx) -> Option<usize> {
+    fn next_piece(
+        &self,
+        incoming: usize,
+        candidates: &[usize],
+        used: &[bool],
+        ctx: &N::Ctx,
+    ) -> Option<usize> {
         let (from, v) = self.edges[incoming];
         let (vp, rp) = (&self.points[v], &self.points[from]);
-        candidates.iter().copied().filter(|&e| !used[e]).min_by(|&e, &f| {
-            cmp_clockwise_from(vp, rp, &self.points[self.edges[e].1], &self.points[self.edges[f].1], ctx)
-        })
+        candidates
+            .iter()
+            .copied()
+            .filter(|&e| !used[e])
+            .min_by(|&e, &f| {
+                cmp_clockwise_from(
+                    vp,
+                    rp,
+                    &self.points[self.edges[e].1],
+                    &self.points[self.edges[f].1],
+                    ctx,
+                )
+            })
     }
 }

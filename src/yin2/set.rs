@@ -39,18 +39,37 @@ impl<N: Num> Spadjor<N> {
     /// Build from curves already simple and pairwise almost disjoint, with every touching point
     /// among `touching`: canonical form, Hasse diagram, atoms, Betti numbers. Also returns, for
     /// each canonical curve, the index of the loop it came from.
-    pub(crate) fn assemble(loops: Vec<Vec<Point<N>>>, touching: &HashSet<Point<N>>, ctx: &N::Ctx) -> (Spadjor<N>, Vec<usize>) {
-        let mut curves: Vec<(Curve<N>, usize)> =
-            loops.into_iter().enumerate().map(|(i, v)| (canonical_curve(v, touching, ctx), i)).collect();
+    pub(crate) fn assemble(
+        loops: Vec<Vec<Point<N>>>,
+        touching: &HashSet<Point<N>>,
+        ctx: &N::Ctx,
+    ) -> (Spadjor<N>, Vec<usize>) {
+        let mut curves: Vec<(Curve<N>, usize)> = loops
+            .into_iter()
+            .enumerate()
+            .map(|(i, v)| (canonical_curve(v, touching, ctx), i))
+            .collect();
         curves.sort();
         let (curves, origin): (Vec<Curve<N>>, Vec<usize>) = curves.into_iter().unzip();
         let positive: Vec<bool> = curves.iter().map(|c| c.is_positive()).collect();
         let parent = parents(&curves, ctx);
         let atoms = atoms(&positive, &parent);
         let betti = Betti::of_atoms(&atoms);
-        let total: N = curves.iter().fold(N::zero(), |acc, c| acc + c.twice_signed_area());
+        let total: N = curves
+            .iter()
+            .fold(N::zero(), |acc, c| acc + c.twice_signed_area());
         let bounded = total.sign() == Ordering::Greater;
-        (Spadjor { curves, positive, parent, atoms, betti, bounded }, origin)
+        (
+            Spadjor {
+                curves,
+                positive,
+                parent,
+                atoms,
+                betti,
+                bounded,
+            },
+            origin,
+        )
     }
 
     /// All directed edges of all curves.
@@ -67,16 +86,25 @@ impl<N: Num> Spadjor<N> {
 impl<N: Num> YinSet2<N> {
     /// 0̂, the empty set.
     pub fn empty() -> YinSet2<N> {
-        YinSet2 { repr: Repr::Empty, ctx: N::Ctx::default() }
+        YinSet2 {
+            repr: Repr::Empty,
+            ctx: N::Ctx::default(),
+        }
     }
 
     /// 1̂, the whole plane.
     pub fn full() -> YinSet2<N> {
-        YinSet2 { repr: Repr::Full, ctx: N::Ctx::default() }
+        YinSet2 {
+            repr: Repr::Full,
+            ctx: N::Ctx::default(),
+        }
     }
 
     pub(crate) fn from_spadjor(s: Spadjor<N>, ctx: N::Ctx) -> YinSet2<N> {
-        YinSet2 { repr: Repr::Spadjor(s), ctx }
+        YinSet2 {
+            repr: Repr::Spadjor(s),
+            ctx,
+        }
     }
 
     /// The same set carrying another context (float mode: another ε).
@@ -137,7 +165,11 @@ impl<N: Num> YinSet2<N> {
     pub fn betti(&self) -> Betti {
         match &self.repr {
             Repr::Empty => Betti::default(),
-            Repr::Full => Betti { components: 1, holes: vec![0], total_holes: 0 },
+            Repr::Full => Betti {
+                components: 1,
+                holes: vec![0],
+                total_holes: 0,
+            },
             Repr::Spadjor(s) => s.betti.clone(),
         }
     }
@@ -147,16 +179,22 @@ impl<N: Num> YinSet2<N> {
         match &self.repr {
             Repr::Empty => Some(N::zero()),
             Repr::Full => None,
-            Repr::Spadjor(s) if s.bounded => {
-                Some(s.curves.iter().fold(N::zero(), |acc, c| acc + c.twice_signed_area()).half())
-            }
+            Repr::Spadjor(s) if s.bounded => Some(
+                s.curves
+                    .iter()
+                    .fold(N::zero(), |acc, c| acc + c.twice_signed_area())
+                    .half(),
+            ),
             Repr::Spadjor(_) => None,
         }
     }
 
     /// The bounding box of the boundary (`None` for 0̂ and 1̂).
     pub fn bbox(&self) -> Option<BBox<N>> {
-        self.curves().iter().map(|c| c.bbox()).reduce(|a, b| a.union(&b))
+        self.curves()
+            .iter()
+            .map(|c| c.bbox())
+            .reduce(|a, b| a.union(&b))
     }
 
     /// Locate each point: inside, outside or on the boundary (seed 002 Alg. 1).

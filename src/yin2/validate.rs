@@ -26,9 +26,16 @@ impl<N: Num> YinSet2<N> {
     }
 
     /// As [`YinSet2::from_curves`], with the given context (float mode: the tolerance ε).
-    pub fn from_curves_with(curves: Vec<Vec<Point<N>>>, ctx: N::Ctx) -> Result<YinSet2<N>, YinError> {
+    pub fn from_curves_with(
+        curves: Vec<Vec<Point<N>>>,
+        ctx: N::Ctx,
+    ) -> Result<YinSet2<N>, YinError> {
         let curves = basic_checks(curves)?;
-        let extent = curves.iter().flatten().map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs())).fold(0.0, f64::max);
+        let extent = curves
+            .iter()
+            .flatten()
+            .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
+            .fold(0.0, f64::max);
         let ctx = N::resolve_ctx(ctx, extent);
         let spadjor = realize(curves, &ctx)?;
         Ok(YinSet2::from_spadjor(spadjor, ctx))
@@ -40,7 +47,11 @@ impl<N: Num> YinSet2<N> {
         if self.curves().is_empty() {
             return Ok(());
         }
-        let raw: Vec<Vec<Point<N>>> = self.curves().iter().map(|c| c.vertices().to_vec()).collect();
+        let raw: Vec<Vec<Point<N>>> = self
+            .curves()
+            .iter()
+            .map(|c| c.vertices().to_vec())
+            .collect();
         let rebuilt = YinSet2::from_curves_with(raw, self.ctx)?;
         if rebuilt == *self {
             Ok(())
@@ -60,17 +71,27 @@ fn basic_checks<N: Num>(curves: Vec<Vec<Point<N>>>) -> Result<Vec<Vec<Point<N>>>
         .enumerate()
         .map(|(c, mut v)| {
             if let Some(k) = v.iter().position(|p| !p.x.is_finite() || !p.y.is_finite()) {
-                return Err(YinError::NotFinite { curve: c, vertex: k });
+                return Err(YinError::NotFinite {
+                    curve: c,
+                    vertex: k,
+                });
             }
             if v.len() > 1 && v.first() == v.last() {
                 v.pop();
             }
             if v.len() < 3 {
-                return Err(YinError::TooFewVertices { curve: c, count: v.len() });
+                return Err(YinError::TooFewVertices {
+                    curve: c,
+                    count: v.len(),
+                });
             }
             let n = v.len();
             if let Some(k) = (0..n).find(|&k| v[k] == v[(k + 1) % n]) {
-                return Err(YinError::RepeatedVertex { curve: c, vertex: (k + 1) % n, point: v[k].to_string() });
+                return Err(YinError::RepeatedVertex {
+                    curve: c,
+                    vertex: (k + 1) % n,
+                    point: v[k].to_string(),
+                });
             }
             Ok(v)
         })
@@ -79,6 +100,9 @@ fn basic_checks<N: Num>(curves: Vec<Vec<Point<N>>>) -> Result<Vec<Vec<Point<N>>>
 
 /// The curves through one touching point: (curve, original edge index, previous, next vertex).
 type Passage<N> = (usize, usize, Point<N>, Point<N>);
+
+/// Curves with touching points inserted, and the passages through each touching point.
+type Inserted<N> = (Vec<Vec<Point<N>>>, HashMap<Point<N>, Vec<Passage<N>>>);
 
 /// Check simplicity, almost-disjointness and the orientation structure; build the spadjor.
 fn realize<N: Num>(curves: Vec<Vec<Point<N>>>, ctx: &N::Ctx) -> Result<Spadjor<N>, YinError> {
@@ -96,18 +120,34 @@ fn realize<N: Num>(curves: Vec<Vec<Point<N>>>, ctx: &N::Ctx) -> Result<Spadjor<N
         let ((ci, ki), (cj, kj)) = (owner[i], owner[j]);
         if ci == cj {
             let len = curves[ci].len();
-            let shared = if kj == ki + 1 { Some(&curves[ci][kj]) } else if ki == 0 && kj == len - 1 { Some(&curves[ci][0]) } else { None };
+            let shared = if kj == ki + 1 {
+                Some(&curves[ci][kj])
+            } else if ki == 0 && kj == len - 1 {
+                Some(&curves[ci][0])
+            } else {
+                None
+            };
             match (&contact, shared) {
                 (Contact::Touching(p), Some(s)) if p == s => continue,
                 (Contact::Touching(p) | Contact::Crossing(p) | Contact::Overlap(p, _), _) => {
-                    return Err(YinError::NotSimple { curve: ci, vertex: ki, point: p.to_string() })
+                    return Err(YinError::NotSimple {
+                        curve: ci,
+                        vertex: ki,
+                        point: p.to_string(),
+                    })
                 }
                 (Contact::Disjoint, _) => continue,
             }
         }
         match contact {
             Contact::Crossing(p) => {
-                return Err(YinError::ProperCrossing { curve_a: ci, vertex_a: ki, curve_b: cj, vertex_b: kj, point: p.to_string() })
+                return Err(YinError::ProperCrossing {
+                    curve_a: ci,
+                    vertex_a: ki,
+                    curve_b: cj,
+                    vertex_b: kj,
+                    point: p.to_string(),
+                })
             }
             Contact::Overlap(p, q) => {
                 return Err(YinError::SharedEdge {
@@ -141,14 +181,14 @@ fn insert_touching_points<N: Num>(
     edges: &[Edge<N>],
     mut splits: Vec<Vec<Point<N>>>,
     touching: &HashSet<Point<N>>,
-) -> (Vec<Vec<Point<N>>>, HashMap<Point<N>, Vec<Passage<N>>>) {
+) -> Inserted<N> {
     let mut out = Vec::with_capacity(curves.len());
     let mut passages: HashMap<Point<N>, Vec<Passage<N>>> = HashMap::new();
     let mut e = 0;
     for (c, v) in curves.into_iter().enumerate() {
         let mut w: Vec<(Point<N>, usize)> = Vec::with_capacity(v.len());
-        for k in 0..v.len() {
-            w.push((v[k].clone(), k));
+        for (k, vertex) in v.iter().enumerate() {
+            w.push((vertex.clone(), k));
             let (a, b) = (&edges[e].0, &edges[e].1);
             let s = &mut splits[e];
             s.retain(|p| p != a && p != b);
@@ -164,7 +204,10 @@ fn insert_touching_points<N: Num>(
         for t in 0..n {
             if touching.contains(&w[t].0) {
                 let (prev, next) = (w[(t + n - 1) % n].0.clone(), w[(t + 1) % n].0.clone());
-                passages.entry(w[t].0.clone()).or_default().push((c, w[t].1, prev, next));
+                passages
+                    .entry(w[t].0.clone())
+                    .or_default()
+                    .push((c, w[t].1, prev, next));
             }
         }
         out.push(w.into_iter().map(|(p, _)| p).collect());
@@ -173,13 +216,23 @@ fn insert_touching_points<N: Num>(
 }
 
 /// At a touching point, two curves must not cross: the rays of one lie in one sector of the other.
-fn check_touches_do_not_cross<N: Num>(passages: &HashMap<Point<N>, Vec<Passage<N>>>, ctx: &N::Ctx) -> Result<(), YinError> {
+fn check_touches_do_not_cross<N: Num>(
+    passages: &HashMap<Point<N>, Vec<Passage<N>>>,
+    ctx: &N::Ctx,
+) -> Result<(), YinError> {
     for (p, list) in passages {
         for (x, (c1, k1, prev1, next1)) in list.iter().enumerate() {
             for (c2, k2, prev2, next2) in &list[x + 1..] {
-                let before = |q: &Point<N>| cmp_clockwise_from(p, prev1, q, next1, ctx) == Ordering::Less;
+                let before =
+                    |q: &Point<N>| cmp_clockwise_from(p, prev1, q, next1, ctx) == Ordering::Less;
                 if before(prev2) != before(next2) {
-                    return Err(YinError::ProperCrossing { curve_a: *c1, vertex_a: *k1, curve_b: *c2, vertex_b: *k2, point: p.to_string() });
+                    return Err(YinError::ProperCrossing {
+                        curve_a: *c1,
+                        vertex_a: *k1,
+                        curve_b: *c2,
+                        vertex_b: *k2,
+                        point: p.to_string(),
+                    });
                 }
             }
         }
@@ -189,18 +242,30 @@ fn check_touches_do_not_cross<N: Num>(passages: &HashMap<Point<N>, Vec<Passage<N
 
 /// Orientations alternate with nesting, outermost curves agree, atoms are connected
 /// (seed 000 Def. 3.16–3.17).
-fn check_structure<N: Num>(s: &Spadjor<N>, origin: &[usize], passages: &HashMap<Point<N>, Vec<Passage<N>>>) -> Result<(), YinError> {
+fn check_structure<N: Num>(
+    s: &Spadjor<N>,
+    origin: &[usize],
+    passages: &HashMap<Point<N>, Vec<Passage<N>>>,
+) -> Result<(), YinError> {
     let name = |o: bool| if o { "positively" } else { "negatively" };
     for (j, p) in s.parent.iter().enumerate() {
         if let Some(i) = *p {
             if s.positive[i] == s.positive[j] {
-                return Err(YinError::NestedSameOrientation { outer: origin[i], inner: origin[j], orientation: name(s.positive[j]) });
+                return Err(YinError::NestedSameOrientation {
+                    outer: origin[i],
+                    inner: origin[j],
+                    orientation: name(s.positive[j]),
+                });
             }
         }
     }
-    let root = |pos: bool| (0..s.curves.len()).find(|&i| s.parent[i].is_none() && s.positive[i] == pos);
+    let root =
+        |pos: bool| (0..s.curves.len()).find(|&i| s.parent[i].is_none() && s.positive[i] == pos);
     if let (Some(a), Some(b)) = (root(true), root(false)) {
-        return Err(YinError::MixedOutermost { positive: origin[a], negative: origin[b] });
+        return Err(YinError::MixedOutermost {
+            positive: origin[a],
+            negative: origin[b],
+        });
     }
     // Atoms connected: curves and touching points of one atom form a forest.
     let mut canonical = vec![0; origin.len()];
@@ -228,8 +293,16 @@ fn check_structure<N: Num>(s: &Spadjor<N>, origin: &[usize], passages: &HashMap<
             for &i in &group {
                 if !uf.union(node, i) {
                     let atom = &s.atoms[a];
-                    let curves = atom.outer.iter().chain(&atom.holes).map(|&i| origin[i]).collect();
-                    return Err(YinError::DisconnectedAtom { curves, point: p.to_string() });
+                    let curves = atom
+                        .outer
+                        .iter()
+                        .chain(&atom.holes)
+                        .map(|&i| origin[i])
+                        .collect();
+                    return Err(YinError::DisconnectedAtom {
+                        curves,
+                        point: p.to_string(),
+                    });
                 }
             }
         }
@@ -244,7 +317,9 @@ struct UnionFind {
 
 impl UnionFind {
     fn new(n: usize) -> UnionFind {
-        UnionFind { parent: (0..n).collect() }
+        UnionFind {
+            parent: (0..n).collect(),
+        }
     }
 
     fn add(&mut self) -> usize {

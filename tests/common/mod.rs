@@ -40,6 +40,7 @@ pub fn area(y: &Y) -> Rational {
 
 /// Assert that a set passes the exact validator.
 pub fn valid(y: &Y) -> &Y {
-    y.validate().unwrap_or_else(|e| panic!("output fails the validator: {e}\n{y:?}"));
+    y.validate()
+        .unwrap_or_else(|e| panic!("output fails the validator: {e}\n{y:?}"));
     y
 }
