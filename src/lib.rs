@@ -1,7 +1,4 @@
-//! # yinset
-//!
-//! The Boolean algebra of Yin sets (Zhang & Li, seed 000), exact on rationals and ε-robust on
-//! floats, in one generic code path.
+#![doc = include_str!("../README.md")]
 pub mod demo;
 pub mod io;
 pub mod kernel;
