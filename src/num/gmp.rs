@@ -1,6 +1,6 @@
 //! The GMP exact backend (feature `gmp`): `rug::Rational` on the system libgmp.
 
-use super::{exact_orient, Literal, Num, NumError};
+use super::{exact_orient, filtered_orient, Literal, Num, NumError};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::fmt;
@@ -84,7 +84,8 @@ impl Num for GmpRational {
     }
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
-        exact_orient(a, b, c)
+        let f = |p: [&Self; 2]| [p[0].0.to_f64(), p[1].0.to_f64()];
+        filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| exact_orient(a, b, c))
     }
 }
 

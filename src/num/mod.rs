@@ -123,6 +123,28 @@ pub trait Num:
     }
 }
 
+/// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within relative
+/// error 2⁻⁵³ of the exact ones, if the error bound proves it; `None` if it cannot decide.
+///
+/// With M the largest magnitude and conversions within 2 ulps, each coordinate is off by at most
+/// 2M·u (u = 2⁻⁵³), each difference by 6M·u, each product by 26M²·u, the determinant by
+/// 53M²·u; 128M²·u is safe.
+pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
+    let m = [a[0], a[1], b[0], b[1], c[0], c[1]].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    let bound = 128.0 * m * m * f64::EPSILON * 0.5;
+    if !det.is_finite() || !bound.is_finite() || m < 1e-140 {
+        return None;
+    }
+    if det > bound {
+        Some(Ordering::Greater)
+    } else if det < -bound {
+        Some(Ordering::Less)
+    } else {
+        None
+    }
+}
+
 /// Sign of the 2×2 determinant `(b − a) × (c − a)` in exact arithmetic: the shared body of
 /// the exact backends' [`Num::orient2d`].
 pub(crate) fn exact_orient<N>(a: [&N; 2], b: [&N; 2], c: [&N; 2]) -> Ordering
@@ -132,4 +154,28 @@ where
     let l = (b[0].clone() - a[0].clone()) * (c[1].clone() - a[1].clone());
     let r = (b[1].clone() - a[1].clone()) * (c[0].clone() - a[0].clone());
     l.cmp(&r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn filter_decides_clear_cases_and_defers_near_degenerate_ones() {
+        assert_eq!(filtered_orient([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]), Some(Ordering::Greater));
+        assert_eq!(filtered_orient([0.0, 0.0], [1.0, 0.0], [0.0, -1.0]), Some(Ordering::Less));
+        assert_eq!(filtered_orient([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]), None);
+        assert_eq!(filtered_orient([0.0, 0.0], [1.0, 1.0], [2.0, 2.0 + 1e-15]), None);
+        assert_eq!(filtered_orient([0.0, 0.0], [f64::MAX, 0.0], [0.0, 1.0]), None);
+    }
+
+    #[test]
+    fn filtered_orientation_agrees_with_exact_on_near_collinear_rationals() {
+        // c is 1e-30 above the line through a and b: the filter must defer to exact arithmetic.
+        let r = |s: &str| Rational::parse(s).unwrap();
+        let (a, b) = ([r("0"), r("0")], [r("1"), r("1")]);
+        let c = [r("0.5"), r("0.500000000000000000000000000001")];
+        let o = Rational::orient2d([&a[0], &a[1]], [&b[0], &b[1]], [&c[0], &c[1]], &());
+        assert_eq!(o, Ordering::Greater);
+    }
 }

@@ -1,6 +1,6 @@
 //! The default exact backend: `num-rational`'s big rationals.
 
-use super::{exact_orient, Literal, Num, NumError};
+use super::{exact_orient, filtered_orient, Literal, Num, NumError};
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
@@ -55,7 +55,8 @@ impl Num for Rational {
     }
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
-        exact_orient(a, b, c)
+        let f = |p: [&Self; 2]| [Num::to_f64(p[0]), Num::to_f64(p[1])];
+        filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| exact_orient(a, b, c))
     }
 }
 
