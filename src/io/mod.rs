@@ -1,0 +1,73 @@
+//! Text formats read and written exactly: the `yin2` curve lists ([`yin2_text`]), WKT
+//! ([`wkt`]) and GeoJSON ([`geojson`]).
+//!
+//! Readers parse every coordinate with [`crate::num::Num::parse`], so exact backends get the
+//! decimal text's value without rounding; they never panic, and report malformed input as a
+//! [`ParseError`] with its line and column. Rings are returned open (a closing repetition of
+//! the first point is stripped); validity (enough distinct points, simplicity) is the kernel's
+//! business, not the readers'.
+
+mod decimal;
+mod error;
+pub mod geojson;
+#[cfg(test)]
+mod testdata;
+pub mod wkt;
+pub mod yin2_text;
+
+pub use error::ParseError;
+
+use crate::kernel::Point;
+
+/// A polygon as the GIS formats give it: an exterior ring and interior rings (holes), each open
+/// (without the closing repetition of its first point).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Polygon<N> {
+    /// The outer boundary.
+    pub exterior: Vec<Point<N>>,
+    /// The holes.
+    pub interiors: Vec<Vec<Point<N>>>,
+}
+
+impl<N> Polygon<N> {
+    /// All rings: the exterior first, then the holes.
+    pub fn rings(&self) -> impl Iterator<Item = &[Point<N>]> {
+        std::iter::once(self.exterior.as_slice()).chain(self.interiors.iter().map(Vec::as_slice))
+    }
+}
+
+/// `ring` without the closing repetition of its first point, if it has one.
+fn open_ring<N: PartialEq>(mut ring: Vec<Point<N>>) -> Vec<Point<N>> {
+    if ring.len() > 1 && ring.first() == ring.last() {
+        ring.pop();
+    }
+    ring
+}
+
+/// The points of `ring` followed by its first point again (the closed form of the formats).
+fn closed<N>(ring: &[Point<N>]) -> impl Iterator<Item = &Point<N>> {
+    ring.iter().chain(ring.first())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    #[test]
+    fn rings_open_and_close() {
+        let p = |x| Point::<Rational>::int(x, 0);
+        assert_eq!(
+            open_ring(vec![p(1), p(2), p(3), p(1)]),
+            vec![p(1), p(2), p(3)]
+        );
+        assert_eq!(open_ring(vec![p(1), p(2)]), vec![p(1), p(2)]);
+        assert_eq!(open_ring(Vec::<Point<Rational>>::new()), vec![]);
+        let ring = [p(1), p(2)];
+        assert_eq!(
+            closed(&ring).cloned().collect::<Vec<_>>(),
+            vec![p(1), p(2), p(1)]
+        );
+        assert_eq!(closed::<Rational>(&[]).count(), 0);
+    }
+}
