@@ -52,7 +52,7 @@ fn closed<N>(ring: &[Point<N>]) -> impl Iterator<Item = &Point<N>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::Rational;
+    use crate::num::{Float, Rational};
 
     #[test]
     fn rings_open_and_close() {
@@ -69,5 +69,15 @@ mod tests {
             vec![p(1), p(2), p(1)]
         );
         assert_eq!(closed::<Rational>(&[]).count(), 0);
+    }
+
+    #[test]
+    fn readers_work_in_float_mode() {
+        let wkt = wkt::read_polygons::<Float>("POLYGON ((0 0, 0.1 0, 0 1, 0 0))").unwrap();
+        assert_eq!(wkt[0].exterior[1].x, Float::new(0.1));
+        let json = r#"{"type": "Polygon", "coordinates": [[[0, 0], [0.1, 0], [0, 1]]]}"#;
+        assert_eq!(geojson::read_polygons::<Float>(json).unwrap(), wkt);
+        let curves = yin2_text::read_curves::<Float>("0 0\n0.1 0\n0 1\n").unwrap();
+        assert_eq!(curves[0], wkt[0].exterior);
     }
 }
