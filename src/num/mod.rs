@@ -130,7 +130,9 @@ pub trait Num:
 /// 2M·u (u = 2⁻⁵³), each difference by 6M·u, each product by 26M²·u, the determinant by
 /// 53M²·u; 128M²·u is safe.
 pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
-    let m = [a[0], a[1], b[0], b[1], c[0], c[1]].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let m = [a[0], a[1], b[0], b[1], c[0], c[1]]
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
     let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     let bound = 128.0 * m * m * f64::EPSILON * 0.5;
     if !det.is_finite() || !bound.is_finite() || m < 1e-140 {
@@ -162,11 +164,23 @@ mod tests {
 
     #[test]
     fn filter_decides_clear_cases_and_defers_near_degenerate_ones() {
-        assert_eq!(filtered_orient([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]), Some(Ordering::Greater));
-        assert_eq!(filtered_orient([0.0, 0.0], [1.0, 0.0], [0.0, -1.0]), Some(Ordering::Less));
+        assert_eq!(
+            filtered_orient([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]),
+            Some(Ordering::Greater)
+        );
+        assert_eq!(
+            filtered_orient([0.0, 0.0], [1.0, 0.0], [0.0, -1.0]),
+            Some(Ordering::Less)
+        );
         assert_eq!(filtered_orient([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]), None);
-        assert_eq!(filtered_orient([0.0, 0.0], [1.0, 1.0], [2.0, 2.0 + 1e-15]), None);
-        assert_eq!(filtered_orient([0.0, 0.0], [f64::MAX, 0.0], [0.0, 1.0]), None);
+        assert_eq!(
+            filtered_orient([0.0, 0.0], [1.0, 1.0], [2.0, 2.0 + 1e-15]),
+            None
+        );
+        assert_eq!(
+            filtered_orient([0.0, 0.0], [f64::MAX, 0.0], [0.0, 1.0]),
+            None
+        );
     }
 
     #[test]
