@@ -1,10 +1,11 @@
 //! Meet (seed 000 Def. 4.8, MRS-a..d) in O((n + I) log n) (seed 002 §1.3).
 
-use super::intersect::{intersections, Edge};
+use super::cut::cut_at_contacts;
+use super::intersect::Edge;
 use super::locate::Location;
 use super::paste::Segmented;
 use super::set::{Repr, Spadjor, YinSet2};
-use crate::kernel::{Contact, Point};
+use crate::kernel::Point;
 use crate::num::Num;
 use std::collections::HashSet;
 
@@ -30,24 +31,14 @@ fn meet_spadjors<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, ctx: N::Ctx) -> YinSet2
         .map(|(p, q)| (p.clone(), q.clone()))
         .collect();
     let na = a.curves.iter().map(|c| c.len()).sum::<usize>();
-    // MRS-a: V, the points of P(𝒥) ∩ P(𝒦) (isolated points and ends of shared paths).
-    let mut cuts: Vec<Vec<Point<N>>> = vec![Vec::new(); edges.len()];
-    for (i, j, contact) in intersections(&edges, &ctx, |i, j| (i < na) != (j < na)) {
-        let points = match contact {
-            Contact::Crossing(p) | Contact::Touching(p) => vec![p],
-            Contact::Overlap(p, q) => vec![p, q],
-            Contact::Disjoint => vec![],
-        };
-        cuts[i].extend(points.iter().cloned());
-        cuts[j].extend(points);
-    }
-    // MRS-b: S_V of both spadjors, as interned pieces.
+    // MRS-a, MRS-b: S_V of both spadjors, V the points of P(𝒥) ∩ P(𝒦), as interned pieces.
     let mut g = Segmented::new();
     let mut pieces_a = Vec::new();
     let mut pieces_b = Vec::new();
-    for (i, (e, cut)) in edges.iter().zip(cuts).enumerate() {
+    let cut = cut_at_contacts(&edges, &ctx, |i, j| (i < na) != (j < na));
+    for (i, pieces) in cut.into_iter().enumerate() {
         let target = if i < na { &mut pieces_a } else { &mut pieces_b };
-        for (p, q) in cut_edge(e, cut) {
+        for (p, q) in pieces {
             target.push((g.id(&p), g.id(&q), p, q));
         }
     }
@@ -78,23 +69,4 @@ fn meet_spadjors<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, ctx: N::Ctx) -> YinSet2
         }
     }
     g.paste(ctx)
-}
-
-/// S_V on one edge: the pieces between consecutive cut points, in the edge's direction.
-fn cut_edge<N: Num>(e: &Edge<N>, mut cut: Vec<Point<N>>) -> Vec<(Point<N>, Point<N>)> {
-    let (a, b) = (&e.0, &e.1);
-    cut.retain(|p| p != a && p != b);
-    cut.sort();
-    cut.dedup();
-    if a > b {
-        cut.reverse();
-    }
-    let mut stops = Vec::with_capacity(cut.len() + 2);
-    stops.push(a.clone());
-    stops.extend(cut);
-    stops.push(b.clone());
-    stops
-        .windows(2)
-        .map(|w| (w[0].clone(), w[1].clone()))
-        .collect()
 }

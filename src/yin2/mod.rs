@@ -2,7 +2,9 @@
 
 mod complement;
 mod curve;
+mod cut;
 mod error;
+mod fill;
 mod hasse;
 pub mod intersect;
 mod locate;
@@ -14,6 +16,7 @@ mod validate;
 
 pub use curve::Curve;
 pub use error::YinError;
+pub use fill::FillRule;
 pub use hasse::{Atom, Betti};
 pub use locate::{locate_in_edges, Location};
 pub use set::YinSet2;
