@@ -44,3 +44,7 @@ pub fn valid(y: &Y) -> &Y {
         .unwrap_or_else(|e| panic!("output fails the validator: {e}\n{y:?}"));
     y
 }
+
+pub mod cells;
+pub mod gen;
+pub mod laws;
