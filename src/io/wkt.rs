@@ -3,7 +3,8 @@
 //! Read: `POLYGON`, `MULTIPOLYGON` and `GEOMETRYCOLLECTION`s of them (nested collections too),
 //! each possibly `EMPTY`; keywords are case-insensitive. Coordinates are two numbers per
 //! point, read exactly (decimals, and also fractions `p/q`, which are not OGC WKT). Z and M
-//! coordinates and non-polygonal types (`POINT`, `LINESTRING`, …) are rejected with an error.
+//! coordinates and non-polygonal types (`POINT`, `LINESTRING`, …) are rejected with an error,
+//! except by [`read_polygonal_parts`], which skips the points and curves of any geometry.
 //!
 //! Written: a `MULTIPOLYGON` with each ring closed by repeating its first point, as OGC
 //! requires; numbers are exact decimals where their expansion terminates, fractions `p/q`
@@ -38,10 +39,37 @@ const NON_POLYGONAL: [&str; 10] = [
     "TIN",
 ];
 
+/// Geometry types of dimension 0 or 1, which [`read_polygonal_parts`] skips.
+const LOWER_DIMENSIONAL: [&str; 8] = [
+    "POINT",
+    "MULTIPOINT",
+    "LINESTRING",
+    "LINEARRING",
+    "MULTILINESTRING",
+    "CIRCULARSTRING",
+    "COMPOUNDCURVE",
+    "MULTICURVE",
+];
+
 /// Read the polygons of one WKT geometry (a collection's polygons in order, a multipolygon's
 /// parts, one polygon, or none for `EMPTY`).
 pub fn read_polygons<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, ParseError> {
-    let mut parser = Parser { text, pos: 0 };
+    read(text, false)
+}
+
+/// Read the polygons of one WKT geometry of any type, skipping its points and curves (the parts
+/// that have no area, such as the `LINESTRING`s of an overlay result's `GEOMETRYCOLLECTION`).
+pub fn read_polygonal_parts<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, ParseError> {
+    read(text, true)
+}
+
+/// Read one geometry, skipping lower-dimensional parts if `skip_lower`.
+fn read<N: Num>(text: &str, skip_lower: bool) -> Result<Vec<Polygon<N>>, ParseError> {
+    let mut parser = Parser {
+        text,
+        pos: 0,
+        skip_lower,
+    };
     let polygons = parser.geometry(0)?;
     match parser.next() {
         None => Ok(polygons),
@@ -76,6 +104,7 @@ pub fn write_multipolygon<N: Num>(polys: &[Polygon<N>]) -> String {
 struct Parser<'a> {
     text: &'a str,
     pos: usize,
+    skip_lower: bool,
 }
 
 impl<'a> Parser<'a> {
@@ -147,6 +176,12 @@ impl<'a> Parser<'a> {
             let message = format!("`{word}` with Z or M coordinates: only 2D is supported");
             return Err(self.error(at, message));
         }
+        if self.skip_lower && LOWER_DIMENSIONAL.contains(&upper.as_str()) {
+            if !self.keyword("EMPTY") {
+                self.list(Self::skip_item)?;
+            }
+            return Ok(Vec::new());
+        }
         if NON_POLYGONAL.contains(&upper.as_str()) {
             let message = format!("`{word}` is not polygonal: {POLYGONAL_ONLY}");
             return Err(self.error(at, message));
@@ -191,6 +226,21 @@ impl<'a> Parser<'a> {
                         "unbalanced parentheses: `(` at line {line}, column {column} not closed"
                     );
                     return Err(self.error(self.text.len(), message));
+                }
+            }
+        }
+    }
+
+    /// One item of a skipped list: words and parenthesized lists, in any sequence.
+    fn skip_item(&mut self) -> Result<(), ParseError> {
+        loop {
+            match self.peek() {
+                Some((_, "(")) => {
+                    self.list(Self::skip_item)?;
+                }
+                Some((_, ")" | ",")) | None => return Ok(()),
+                Some(_) => {
+                    self.next();
                 }
             }
         }
@@ -434,6 +484,31 @@ mod tests {
             ")".repeat(MAX_NESTING)
         );
         assert!(read(&ok).unwrap().is_empty());
+    }
+
+    #[test]
+    fn polygonal_parts_skip_points_and_curves() {
+        let text = "GEOMETRYCOLLECTION (POINT (200 240), LINESTRING (0 0, 1 1), POINT EMPTY, \
+                    POLYGON ((0 0, 1 0, 1 1)), MULTILINESTRING ((0 0, 1 1), (2 2, 3 3)), \
+                    COMPOUNDCURVE (CIRCULARSTRING (0 0, 1 1, 2 0), (2 0, 3 0)), \
+                    MULTIPOLYGON (((2 2, 3 2, 3 3))))";
+        let polys = read_polygonal_parts::<Rational>(text).unwrap();
+        assert_eq!(polys.len(), 2);
+        assert_eq!(polys[1].exterior[0], Point::int(2, 2));
+        assert!(
+            read_polygonal_parts::<Rational>("MULTIPOINT ((1 2), (3 4))")
+                .unwrap()
+                .is_empty()
+        );
+        // Still checked: balance, what follows, and area types that are not read.
+        for (bad, message) in [
+            ("LINESTRING (0 0, 1 1", "not closed"),
+            ("POINT (1 2) x", "unexpected `x`"),
+            ("TRIANGLE ((0 0, 1 0, 0 1, 0 0))", "not polygonal"),
+        ] {
+            let e = read_polygonal_parts::<Rational>(bad).unwrap_err();
+            assert!(e.message.contains(message), "{bad}: {e}");
+        }
     }
 
     /// The texts of the `<a>`, `<b>` and `<op …>` elements of a JTS test-suite XML document.
