@@ -1,4 +1,5 @@
 #![doc = include_str!("../README.md")]
+pub mod cli;
 pub mod demo;
 pub mod io;
 pub mod kernel;

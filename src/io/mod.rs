@@ -10,6 +10,7 @@
 mod decimal;
 mod error;
 pub mod geojson;
+pub mod svg;
 #[cfg(test)]
 mod testdata;
 pub mod wkt;

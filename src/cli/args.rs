@@ -1,0 +1,213 @@
+//! The command line's grammar: subcommands and their options (clap derive).
+
+use super::format::Format;
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// Boolean algebra of 2D Yin sets, exact on rationals (float mode with --eps).
+#[derive(Parser, Debug)]
+#[command(
+    name = "yinset",
+    version,
+    about,
+    after_help = "With no subcommand, runs the built-in demonstration.\n\
+                  Inputs are yin2 text, WKT or GeoJSON, chosen by --from or the file extension \
+                  (.txt/.yin2, .wkt, .geojson/.json); `-` is standard input or output.\n\
+                  Exit status: 0 success, 1 bad input or failed checks, 2 wrong usage."
+)]
+pub struct Cli {
+    /// What to do (default: the demonstration).
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Run the built-in demonstration (what `yinset` alone does).
+    Demo,
+    /// Intersection A ∧ B.
+    Meet(Binary),
+    /// Regularized union A ∨ B.
+    Join(Binary),
+    /// Complement A′: the interior of what A leaves out.
+    Complement(Unary),
+    /// Difference A ∧ B′.
+    Difference(Binary),
+    /// Symmetric difference (A ∧ B′) ∨ (A′ ∧ B).
+    Xor(Binary),
+    /// Say for each point (`x y` per line) whether it is inside, outside or on the boundary.
+    Locate(LocateArgs),
+    /// Print Betti numbers, curves, Hasse diagram, area and bounding box as JSON.
+    Info(Single),
+    /// Draw one or more sets as SVG.
+    Render(RenderArgs),
+    /// Check that the input is a Yin set's boundary, explaining why not.
+    Validate(Single),
+    /// Rewrite a set in another format (canonical form, through the Yin set).
+    Convert(Unary),
+    /// Check Boolean-algebra laws with == on random exact Yin sets (a smoke test of the build).
+    Axioms(AxiomsArgs),
+}
+
+/// How inputs are read.
+#[derive(Args, Debug, Clone, Default)]
+pub struct ReadOpts {
+    /// Input format (default: from the file extension; yin2 for standard input).
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub from: Option<Format>,
+    /// Read the rings as polygon soup and take the region they cover under this rule.
+    #[arg(long, value_enum, value_name = "RULE")]
+    pub fill: Option<FillArg>,
+    /// Float mode with tolerance E > 0 (default: exact rational arithmetic).
+    #[arg(long, value_name = "E", value_parser = positive_eps, allow_hyphen_values = true)]
+    pub eps: Option<f64>,
+}
+
+/// Where and how a resulting set is written.
+#[derive(Args, Debug, Clone, Default)]
+pub struct WriteOpts {
+    /// Output file (`-` or absent: standard output); its extension picks the format.
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+    /// Output format (default: from the --output extension, else yin2).
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub to: Option<Format>,
+}
+
+/// A fill rule for polygon soup.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FillArg {
+    /// Points of non-zero winding number.
+    Nonzero,
+    /// Points inside an odd number of rings.
+    Evenodd,
+}
+
+/// Two input sets, one output set.
+#[derive(Args, Debug)]
+pub struct Binary {
+    /// The first operand (`-`: standard input).
+    pub a: PathBuf,
+    /// The second operand (`-`: standard input).
+    pub b: PathBuf,
+    #[command(flatten)]
+    pub read: ReadOpts,
+    #[command(flatten)]
+    pub write: WriteOpts,
+}
+
+/// One input set, one output set.
+#[derive(Args, Debug)]
+pub struct Unary {
+    /// The input set (`-`: standard input).
+    pub input: PathBuf,
+    #[command(flatten)]
+    pub read: ReadOpts,
+    #[command(flatten)]
+    pub write: WriteOpts,
+}
+
+/// One input set, a report on standard output.
+#[derive(Args, Debug)]
+pub struct Single {
+    /// The input set (`-`: standard input).
+    pub input: PathBuf,
+    #[command(flatten)]
+    pub read: ReadOpts,
+}
+
+/// A set and the points to locate in it.
+#[derive(Args, Debug)]
+pub struct LocateArgs {
+    /// The set (`-`: standard input).
+    pub set: PathBuf,
+    /// Points, one `x y` per line (default `-`: standard input).
+    #[arg(default_value = "-")]
+    pub points: PathBuf,
+    #[command(flatten)]
+    pub read: ReadOpts,
+}
+
+/// Sets to draw and where.
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// The sets, drawn in order, later ones on top (`-`: standard input).
+    #[arg(required = true)]
+    pub inputs: Vec<PathBuf>,
+    /// The SVG file (`-` or absent: standard output).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+    #[command(flatten)]
+    pub read: ReadOpts,
+}
+
+/// How many random checks, from which seed.
+#[derive(Args, Debug)]
+pub struct AxiomsArgs {
+    /// Number of random triples (A, B, C); every law is checked on each.
+    #[arg(default_value_t = 100)]
+    pub n: u64,
+    /// Seed of the random generator (the same seed gives the same sets).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+}
+
+/// Parse `--eps`: a finite number greater than zero.
+fn positive_eps(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(eps) if eps.is_finite() && eps > 0.0 => Ok(eps),
+        Ok(_) => Err("the tolerance must be a finite number greater than 0".to_string()),
+        Err(e) => Err(format!("not a number: {e}")),
+    }
+}
+
+impl Command {
+    /// The read options of a subcommand that reads sets.
+    pub fn read_opts(&self) -> Option<&ReadOpts> {
+        match self {
+            Command::Meet(b) | Command::Join(b) | Command::Difference(b) | Command::Xor(b) => {
+                Some(&b.read)
+            }
+            Command::Complement(u) | Command::Convert(u) => Some(&u.read),
+            Command::Info(s) | Command::Validate(s) => Some(&s.read),
+            Command::Locate(l) => Some(&l.read),
+            Command::Render(r) => Some(&r.read),
+            Command::Demo | Command::Axioms(_) => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn grammar_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn eps_must_be_positive_and_finite() {
+        assert_eq!(positive_eps("1e-9"), Ok(1e-9));
+        for bad in ["0", "-1", "inf", "NaN", "x"] {
+            assert!(positive_eps(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn options_follow_their_subcommand() {
+        let cli = Cli::try_parse_from([
+            "yinset", "meet", "a.wkt", "-", "--eps", "0.5", "--to", "geojson",
+        ])
+        .unwrap();
+        let Some(Command::Meet(b)) = cli.command else {
+            panic!("not meet")
+        };
+        assert_eq!((b.read.eps, b.write.to), (Some(0.5), Some(Format::Geojson)));
+        assert!(Cli::try_parse_from(["yinset", "axioms", "5", "--eps", "1"]).is_err());
+        assert!(Cli::try_parse_from(["yinset", "info", "a", "--to", "wkt"]).is_err());
+        assert!(Cli::try_parse_from(["yinset"]).unwrap().command.is_none());
+    }
+}

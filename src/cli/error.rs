@@ -1,0 +1,54 @@
+//! What can go wrong on the command line, each naming what and where, and its exit status.
+
+use crate::io::ParseError;
+use crate::yin2::YinError;
+use std::process::ExitCode;
+
+/// A failure of the `yinset` command.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// Wrong usage: conflicting or incomplete options.
+    #[error("{0}")]
+    Usage(String),
+    /// A file or standard input could not be read.
+    #[error("cannot read {name}: {source}")]
+    Read {
+        name: String,
+        source: std::io::Error,
+    },
+    /// A file or standard output could not be written.
+    #[error("cannot write {name}: {source}")]
+    Write {
+        name: String,
+        source: std::io::Error,
+    },
+    /// Malformed text.
+    #[error("{name}: {source}")]
+    Parse { name: String, source: ParseError },
+    /// Well-formed text whose curves do not bound a Yin set.
+    #[error("{name} is not a Yin set: {source}{note}")]
+    Invalid {
+        name: String,
+        source: Box<YinError>,
+        note: String,
+    },
+    /// An unbounded set asked for in a format of bounded polygons.
+    #[error("the set is unbounded (it contains everything far enough out), so it cannot be written as {format} polygons: write yin2 instead (--to yin2)")]
+    Unbounded { format: &'static str },
+    /// `--fill` before the kernel can build a set from polygon soup.
+    #[error("--fill is not available yet in this build (the kernel's fill rules have not landed): remove --fill and give curves that already bound a Yin set")]
+    FillUnavailable,
+    /// Some random axiom checks failed.
+    #[error("{failed} of {total} axiom checks failed")]
+    AxiomsFailed { failed: u64, total: u64 },
+}
+
+impl CliError {
+    /// The exit status: 2 for wrong usage, 1 for everything else.
+    pub fn exit_code(&self) -> ExitCode {
+        match self {
+            CliError::Usage(_) => ExitCode::from(2),
+            _ => ExitCode::FAILURE,
+        }
+    }
+}

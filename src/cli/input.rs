@@ -1,0 +1,85 @@
+//! Files and standard input → Yin sets: read, decode, validate (or fill), with located errors.
+
+use super::args::{FillArg, ReadOpts};
+use super::decode::{decode, Decoded, Rings};
+use super::error::CliError;
+use super::format::{is_std, Format};
+use super::progress;
+use crate::num::Num;
+use crate::yin2::YinSet2;
+use std::io::Read;
+use std::path::Path;
+
+/// How `path` is named in messages.
+pub fn name(path: &Path) -> String {
+    if is_std(path) {
+        "standard input".to_string()
+    } else {
+        format!("`{}`", path.display())
+    }
+}
+
+/// Reject more than one of `paths` reading standard input.
+pub fn one_stdin<'a>(paths: impl IntoIterator<Item = &'a Path>) -> Result<(), CliError> {
+    if paths.into_iter().filter(|p| is_std(p)).count() > 1 {
+        return Err(CliError::Usage(
+            "conflicting inputs: standard input (`-`) can be read only once".to_string(),
+        ));
+    }
+    Ok(())
+}
+
+/// The text of `path` (`-`: standard input).
+pub fn read_text(path: &Path) -> Result<String, CliError> {
+    let mut text = String::new();
+    let read = if is_std(path) {
+        std::io::stdin().read_to_string(&mut text).map(|_| ())
+    } else {
+        std::fs::File::open(path).and_then(|mut f| f.read_to_string(&mut text).map(|_| ()))
+    };
+    read.map(|()| text).map_err(|source| CliError::Read {
+        name: name(path),
+        source,
+    })
+}
+
+/// The Yin set in `path`, read as `opts` say, with number context `ctx`.
+pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2<N>, CliError> {
+    let format = Format::of_input(path, opts.from)?;
+    let text = read_text(path)?;
+    let rings = match decode::<N>(&text, format) {
+        Ok(Decoded::Full) => return Ok(YinSet2::full().with_ctx(ctx)),
+        Ok(Decoded::Rings(rings)) => rings,
+        Err(source) => {
+            return Err(CliError::Parse {
+                name: name(path),
+                source,
+            })
+        }
+    };
+    if rings.rings.is_empty() {
+        return Ok(YinSet2::empty().with_ctx(ctx));
+    }
+    let message = || format!("reading {}", name(path));
+    progress::while_working(message, rings.vertices(), || {
+        build(path, rings, opts.fill, ctx)
+    })
+}
+
+/// The Yin set bounded by `rings`, or covered by them under `fill`.
+fn build<N: Num>(
+    path: &Path,
+    rings: Rings<N>,
+    fill: Option<FillArg>,
+    ctx: N::Ctx,
+) -> Result<YinSet2<N>, CliError> {
+    if fill.is_some() {
+        return Err(CliError::FillUnavailable);
+    }
+    let Rings { rings, origins } = rings;
+    YinSet2::from_curves_with(rings, ctx).map_err(|source| CliError::Invalid {
+        name: name(path),
+        note: origins.locate_error(&source),
+        source: Box::new(source),
+    })
+}

@@ -1,0 +1,284 @@
+//! SVG pictures of Yin sets: regions filled, positively oriented curves solid and negatively
+//! oriented ones dashed (seed 000 Fig. 13), non-manifold points (vertices shared by two or more
+//! curves, where curves touch) marked with dots.
+//!
+//! Coordinates are written as `f64` (the picture is not exact); the y axis points up. An
+//! unbounded set is filled to the edge of the picture.
+
+use crate::kernel::Point;
+use crate::num::Num;
+use crate::yin2::{Curve, YinSet2};
+use std::collections::HashMap;
+use std::fmt::Write;
+
+/// Width of the picture in pixels; the height follows the drawing's aspect ratio.
+const WIDTH_PX: f64 = 800.0;
+
+/// Colours of successive layers.
+const PALETTE: [&str; 6] = [
+    "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf",
+];
+
+/// The SVG document drawing each `(label, set)`, later layers on top, with a legend of labels.
+pub fn write_svg<N: Num>(layers: &[(&str, &YinSet2<N>)]) -> String {
+    let corners = layers
+        .iter()
+        .filter_map(|(_, set)| set.bbox())
+        .flat_map(|b| [b.min.to_f64(), b.max.to_f64()]);
+    let frame = Frame::around(corners, layers.len());
+    let mut svg = frame.header();
+    let mut labels = Vec::new();
+    for (k, (label, set)) in layers.iter().enumerate() {
+        let colour = PALETTE[k % PALETTE.len()];
+        let _ = writeln!(svg, "<g><title>{}</title>", escape(label));
+        frame.layer(&mut svg, set, colour);
+        svg.push_str("</g>\n");
+        labels.push((*label, colour));
+    }
+    frame.legend(&mut svg, &labels);
+    svg.push_str("</svg>\n");
+    svg
+}
+
+/// The drawn window in world coordinates, with the sizes derived from it.
+struct Frame {
+    /// Lower-left corner.
+    min: [f64; 2],
+    /// Upper-right corner.
+    max: [f64; 2],
+    /// A length for strokes, dots and text: the larger side over 400.
+    unit: f64,
+    /// Decimals written for coordinates.
+    decimals: usize,
+}
+
+impl Frame {
+    /// The window around `points` with a margin (the unit square around the origin if none),
+    /// and room at the top for a legend of `labels` lines.
+    fn around(points: impl Iterator<Item = [f64; 2]>, labels: usize) -> Frame {
+        let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in points.filter(|p| p[0].is_finite() && p[1].is_finite()) {
+            for i in 0..2 {
+                min[i] = min[i].min(p[i]);
+                max[i] = max[i].max(p[i]);
+            }
+        }
+        if min[0] > max[0] {
+            (min, max) = ([-1.0; 2], [1.0; 2]);
+        }
+        let side = (max[0] - min[0]).max(max[1] - min[1]);
+        let side = if side > 0.0 { side } else { 1.0 };
+        let (margin, unit) = (side * 0.05, side / 400.0);
+        let legend = (30 + 18 * labels) as f64 * unit;
+        Frame {
+            min: [min[0] - margin, min[1] - margin],
+            max: [max[0] + margin, max[1] + margin + legend],
+            unit,
+            decimals: (5.0 - side.log10().floor()).clamp(0.0, 15.0) as usize,
+        }
+    }
+
+    /// A world point in SVG user space (y flipped).
+    fn xy(&self, p: [f64; 2]) -> String {
+        format!("{:.*} {:.*}", self.decimals, p[0], self.decimals, -p[1])
+    }
+
+    /// The opening `<svg>` element, sized to the window's aspect ratio, on a white background.
+    fn header(&self) -> String {
+        let (w, h) = (self.max[0] - self.min[0], self.max[1] - self.min[1]);
+        let height_px = (WIDTH_PX * h / w).clamp(50.0, 4.0 * WIDTH_PX);
+        let d = self.decimals;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH_PX}" height="{height_px:.0}" viewBox="{:.d$} {:.d$} {w:.d$} {h:.d$}">"#,
+            self.min[0], -self.max[1]
+        );
+        let _ = writeln!(
+            s,
+            r#"<rect x="{:.d$}" y="{:.d$}" width="{w:.d$}" height="{h:.d$}" fill="white"/>"#,
+            self.min[0], -self.max[1]
+        );
+        s
+    }
+
+    /// Path data of closed polygons.
+    fn path<I: IntoIterator<Item = [f64; 2]>>(&self, rings: impl Iterator<Item = I>) -> String {
+        let mut d = String::new();
+        for ring in rings {
+            for (k, p) in ring.into_iter().enumerate() {
+                d.push_str(if k == 0 { "M" } else { " L" });
+                d.push_str(&self.xy(p));
+            }
+            d.push_str(" Z ");
+        }
+        d
+    }
+
+    /// The window as a counterclockwise ring (the far part of an unbounded set).
+    fn window_ring(&self) -> [[f64; 2]; 4] {
+        let (a, b) = (self.min, self.max);
+        [a, [b[0], a[1]], b, [a[0], b[1]]]
+    }
+
+    /// Draw `set` in `colour`: fill, curves, non-manifold points.
+    fn layer<N: Num>(&self, svg: &mut String, set: &YinSet2<N>, colour: &str) {
+        let ring = |c: &Curve<N>| c.vertices().iter().map(Point::to_f64).collect::<Vec<_>>();
+        let window = (!set.is_bounded()).then(|| self.window_ring().to_vec());
+        let fill = self.path(window.into_iter().chain(set.curves().iter().map(ring)));
+        if !fill.is_empty() {
+            let _ = writeln!(
+                svg,
+                r#"<path d="{fill}" fill="{colour}" fill-opacity="0.3" fill-rule="nonzero" stroke="none"/>"#
+            );
+        }
+        let u = self.unit;
+        for (positive, dash) in [
+            (true, String::new()),
+            (
+                false,
+                format!(
+                    r#" stroke-dasharray="{:.*} {:.*}""#,
+                    self.decimals,
+                    5.0 * u,
+                    self.decimals,
+                    3.0 * u
+                ),
+            ),
+        ] {
+            let d = self.path(
+                set.curves()
+                    .iter()
+                    .filter(|c| c.is_positive() == positive)
+                    .map(ring),
+            );
+            if !d.is_empty() {
+                let _ = writeln!(
+                    svg,
+                    r#"<path d="{d}" fill="none" stroke="{colour}" stroke-width="{:.*}" stroke-linejoin="round"{dash}/>"#,
+                    self.decimals, u
+                );
+            }
+        }
+        for p in non_manifold_points(set) {
+            let [x, y] = p.to_f64();
+            let _ = writeln!(
+                svg,
+                r#"<circle cx="{:.*}" cy="{:.*}" r="{:.*}" fill="black"/>"#,
+                self.decimals,
+                x,
+                self.decimals,
+                -y,
+                self.decimals,
+                3.0 * u
+            );
+        }
+    }
+
+    /// The legend at the top left: a swatch and label per layer, then the key to the line
+    /// styles; drawn in a local frame of [`Frame::unit`] so that text is set at a normal size.
+    fn legend(&self, svg: &mut String, labels: &[(&str, &str)]) {
+        let _ = writeln!(
+            svg,
+            r#"<g transform="translate({:.*} {:.*}) scale({})" font-family="sans-serif">"#,
+            self.decimals, self.min[0], self.decimals, -self.max[1], self.unit
+        );
+        for (k, (label, colour)) in labels.iter().enumerate() {
+            let y = 10 + 18 * k;
+            let _ = writeln!(
+                svg,
+                r#"<rect x="10" y="{y}" width="12" height="12" fill="{colour}" fill-opacity="0.5"/><text x="28" y="{}" font-size="12">{}</text>"#,
+                y + 11,
+                escape(label)
+            );
+        }
+        let _ = writeln!(
+            svg,
+            r#"<text x="10" y="{}" font-size="10" fill="dimgray">solid: positively oriented, dashed: negatively oriented, dot: non-manifold point</text>"#,
+            24 + 18 * labels.len()
+        );
+        svg.push_str("</g>\n");
+    }
+}
+
+/// The vertices shared by two or more curves of `set` (where its curves touch), sorted.
+pub fn non_manifold_points<N: Num>(set: &YinSet2<N>) -> Vec<Point<N>> {
+    let mut count: HashMap<&Point<N>, usize> = HashMap::new();
+    for c in set.curves() {
+        for p in c.vertices() {
+            *count.entry(p).or_default() += 1;
+        }
+    }
+    let mut shared: Vec<Point<N>> = count
+        .into_iter()
+        .filter(|&(_, n)| n >= 2)
+        .map(|(p, _)| p.clone())
+        .collect();
+    shared.sort();
+    shared
+}
+
+/// `text` with the XML special characters escaped.
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    fn rect(x0: i64, y0: i64, x1: i64, y1: i64) -> Vec<Point<Rational>> {
+        [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+            .iter()
+            .map(|&(x, y)| Point::int(x, y))
+            .collect()
+    }
+
+    #[test]
+    fn touching_squares_have_one_non_manifold_point() {
+        let set = YinSet2::from_curves(vec![rect(0, 0, 1, 1), rect(1, 1, 2, 2)]).unwrap();
+        assert_eq!(non_manifold_points(&set), vec![Point::int(1, 1)]);
+        let svg = write_svg(&[("two squares", &set)]);
+        assert_eq!(svg.matches("<circle").count(), 1);
+        assert!(svg.contains(r#"cx="1.00000" cy="-1.00000""#), "{svg}");
+        assert!(
+            !svg.contains("stroke-dasharray"),
+            "no negative curve: {svg}"
+        );
+    }
+
+    #[test]
+    fn holes_are_dashed_and_complements_fill_the_window() {
+        let mut hole = rect(1, 1, 2, 2);
+        hole.reverse();
+        let set = YinSet2::from_curves(vec![rect(0, 0, 3, 3), hole]).unwrap();
+        let svg = write_svg(&[("a & <b>", &set), ("outside", &set.complement())]);
+        assert_eq!(svg.matches("stroke-dasharray").count(), 2);
+        assert_eq!(svg.matches("fill-rule=\"nonzero\"").count(), 2);
+        assert!(svg.contains("a &amp; &lt;b&gt;"));
+        // The complement's fill starts with the window ring, then its curves.
+        let fills: Vec<&str> = svg
+            .lines()
+            .filter(|l| l.contains("fill-opacity=\"0.3\""))
+            .collect();
+        assert_eq!(fills[1].matches('M').count(), 3, "{}", fills[1]);
+        assert!(svg.starts_with("<svg ") && svg.ends_with("</svg>\n"));
+    }
+
+    #[test]
+    fn empty_and_full_sets_draw_without_curves() {
+        let svg = write_svg(&[
+            ("none", &YinSet2::<Rational>::empty()),
+            ("all", &YinSet2::full()),
+        ]);
+        assert_eq!(svg.matches("fill-opacity=\"0.3\"").count(), 1);
+        assert!(
+            svg.contains(r#"viewBox="-1.10000 -1.43000 2.20000 2.53000""#),
+            "{svg}"
+        );
+    }
+}

@@ -1,0 +1,387 @@
+//! The `yinset` binary end to end: every subcommand, panda ∧ Mickey, pipelines, and malformed
+//! input (each a message naming what and where, a non-zero exit status, no panic).
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use predicates::str::contains;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use tempfile::TempDir;
+use yinset::io::yin2_text::read_curves;
+use yinset::num::{Num, Rational};
+use yinset::yin2::YinSet2;
+
+/// The binary under test.
+fn yinset() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_yinset"))
+}
+
+/// A scratch directory for one test.
+fn scratch() -> TempDir {
+    tempfile::tempdir().expect("a temporary directory")
+}
+
+/// Write `text` to `name` in `dir`; its path.
+fn file(dir: &TempDir, name: &str, text: &str) -> PathBuf {
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).expect("write a scratch file");
+    path
+}
+
+/// The curve files of `../shared/data/2d/<shape>` concatenated with blank lines, in `dir`.
+fn shared_shape(dir: &TempDir, shape: &str) -> PathBuf {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data/2d")
+        .join(shape);
+    let mut names: Vec<PathBuf> = std::fs::read_dir(&src)
+        .unwrap_or_else(|e| panic!("missing test data {}: {e}", src.display()))
+        .map(|e| e.expect("a directory entry").path())
+        .collect();
+    names.sort();
+    let texts: Vec<String> = names
+        .iter()
+        .map(|p| std::fs::read_to_string(p).expect("a curve file"))
+        .collect();
+    file(dir, &format!("{shape}.txt"), &texts.join("\n"))
+}
+
+/// The Yin set in a yin2 text (the command's output), read by the library.
+fn parse(text: &str) -> YinSet2<Rational> {
+    let curves = read_curves(text).expect("yin2 output parses");
+    if curves.is_empty() {
+        return if text.contains("whole plane") {
+            YinSet2::full()
+        } else {
+            YinSet2::empty()
+        };
+    }
+    YinSet2::from_curves(curves).expect("the output is a Yin set")
+}
+
+/// Run with `args` (and `stdin`), expect success; standard output.
+fn ok(args: &[&str], stdin: &str) -> String {
+    let out = yinset().args(args).write_stdin(stdin).assert().success();
+    String::from_utf8(out.get_output().stdout.clone()).expect("UTF-8 output")
+}
+
+/// Run with `args`, expect exit status `code` and a message on stderr containing each of
+/// `needles`, and no panic.
+fn fails(args: &[&str], stdin: &str, code: i32, needles: &[&str]) {
+    let mut assert = yinset()
+        .args(args)
+        .write_stdin(stdin)
+        .assert()
+        .code(code)
+        .stderr(contains("panicked").not());
+    for needle in needles {
+        assert = assert.stderr(contains(*needle));
+    }
+}
+
+/// A path as `&str`.
+fn s(p: &Path) -> &str {
+    p.to_str().expect("UTF-8 path")
+}
+
+/// A 4×4 square with a triangular hole touching its bottom edge at (2, 0).
+const FRAME: &str = "0 0\n4 0\n4 4\n0 4\n0 0\n\n2 0\n1 2\n3 2\n";
+/// A bar overlapping FRAME's right side.
+const BAR: &str = "3 1\n6 1\n6 3\n3 3\n";
+
+#[test]
+fn no_arguments_runs_the_demo() {
+    let out = ok(&[], "");
+    assert!(out.contains("check (A')' == A: true"), "{out}");
+    assert_eq!(ok(&["demo"], ""), out);
+}
+
+#[test]
+fn boolean_operations_agree_with_the_library() {
+    let dir = scratch();
+    let (a, b) = (file(&dir, "a.txt", FRAME), file(&dir, "b.yin2", BAR));
+    let (ya, yb) = (parse(FRAME), parse(BAR));
+    let cases = [
+        ("meet", &ya & &yb),
+        ("join", &ya | &yb),
+        ("difference", &ya - &yb),
+        ("xor", &ya ^ &yb),
+    ];
+    for (op, want) in cases {
+        assert_eq!(parse(&ok(&[op, s(&a), s(&b)], "")), want, "{op}");
+    }
+    // Complement reads standard input and writes the unbounded result as yin2.
+    let outside = ok(&["complement", "-"], FRAME);
+    assert_eq!(parse(&outside), !&ya);
+    assert_eq!(parse(&ok(&["complement", "-"], &outside)), ya);
+}
+
+#[test]
+fn empty_and_whole_plane_survive_a_pipeline() {
+    let dir = scratch();
+    let a = file(&dir, "a.txt", FRAME);
+    let empty = ok(&["difference", s(&a), s(&a)], "");
+    assert!(parse(&empty).is_empty(), "{empty}");
+    let full = ok(&["complement", "-"], &empty);
+    assert!(parse(&full).is_full(), "{full}");
+    let info: Value = serde_json::from_str(&ok(&["info", "-"], &full)).unwrap();
+    assert_eq!(
+        (info["set"].as_str(), info["bounded"].as_bool()),
+        (Some("full"), Some(false))
+    );
+}
+
+#[test]
+fn panda_meet_mickey_is_exact() {
+    let dir = scratch();
+    let (panda, mickey) = (shared_shape(&dir, "panda"), shared_shape(&dir, "mickey"));
+    let pm = dir.path().join("pm.txt");
+    let out = ok(&["meet", s(&panda), s(&mickey), "-o", s(&pm)], "");
+    assert_eq!(out, "", "the result goes to the file");
+    let text = std::fs::read_to_string(&pm).unwrap();
+    assert!(
+        text.lines().any(|l| l.contains('/')),
+        "exact rationals are written"
+    );
+    let read = |p: &Path| parse(&std::fs::read_to_string(p).unwrap());
+    assert_eq!(read(&pm), &read(&panda) & &read(&mickey));
+    // |P ∧ M| + |P ∨ M| = |P| + |M| exactly, from the areas `info` prints.
+    let area = |p: &Path| {
+        let info: Value = serde_json::from_str(&ok(&["info", s(p)], "")).unwrap();
+        Rational::parse(info["area"]["exact"].as_str().unwrap()).unwrap()
+    };
+    let pj = dir.path().join("pj.txt");
+    ok(&["join", s(&panda), s(&mickey), "-o", s(&pj)], "");
+    assert_eq!(area(&pm) + area(&pj), area(&panda) + area(&mickey));
+    let svg = dir.path().join("pm.svg");
+    ok(
+        &["render", s(&panda), s(&mickey), s(&pm), "-o", s(&svg)],
+        "",
+    );
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(svg.contains("pm.txt") && svg.contains("stroke-dasharray"));
+}
+
+#[test]
+fn info_reports_topology_area_and_box() {
+    let info: Value = serde_json::from_str(&ok(&["info", "-"], FRAME)).unwrap();
+    assert_eq!(info["betti"]["components"], 1);
+    assert_eq!(info["betti"]["holes"], serde_json::json!([1]));
+    assert_eq!(info["area"]["exact"], "14");
+    assert_eq!(info["area"]["float"], 14.0);
+    assert_eq!(info["hasse"][1]["parent"], 0);
+    assert_eq!(info["hasse"][1]["orientation"], "negative");
+    assert_eq!(info["bbox"]["max"][1]["exact"], "4");
+    assert_eq!(
+        (info["curves"].clone(), info["exact"].clone()),
+        (2.into(), true.into())
+    );
+}
+
+#[test]
+fn locate_classifies_points_from_stdin() {
+    let dir = scratch();
+    let a = file(&dir, "a.txt", FRAME);
+    let out = ok(&["locate", s(&a)], "# x y\n1/2 1/2\n2 1\n2 0\n9 9\n");
+    assert_eq!(out, "inside\noutside\nboundary\noutside\n");
+    let points = file(&dir, "p.txt", "3.5 3.5\n");
+    assert_eq!(ok(&["locate", "-", s(&points)], FRAME), "inside\n");
+}
+
+#[test]
+fn render_draws_holes_dashed_and_touching_points() {
+    let svg = ok(&["render", "-"], FRAME);
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    assert_eq!(
+        svg.matches("stroke-dasharray").count(),
+        1,
+        "one negative curve"
+    );
+    assert_eq!(
+        svg.matches("<circle").count(),
+        1,
+        "the hole touches at (2, 0)"
+    );
+}
+
+#[test]
+fn validate_accepts_and_explains() {
+    let out = ok(&["validate", "-"], FRAME);
+    assert!(
+        out.contains("is a Yin set") && out.contains("b0 = 1"),
+        "{out}"
+    );
+    let crossing = "0 0\n2 0\n2 2\n0 2\n\n1 1\n3 1\n3 3\n1 3\n";
+    fails(
+        &["validate", "-"],
+        crossing,
+        1,
+        &["standard input is not a Yin set", "cross"],
+    );
+}
+
+#[test]
+fn convert_round_trips_through_wkt_and_geojson() {
+    let dir = scratch();
+    let a = file(&dir, "a.txt", FRAME);
+    let wkt = ok(&["convert", s(&a), "--to", "wkt"], "");
+    assert!(wkt.starts_with("MULTIPOLYGON (((0 0, 2 0, 4 0"), "{wkt}");
+    let json = dir.path().join("a.geojson");
+    ok(&["convert", "--from", "wkt", "-", "-o", s(&json)], &wkt);
+    let back = ok(&["convert", s(&json)], "");
+    assert_eq!(parse(&back), parse(FRAME));
+    // Polygons in any orientation are turned exterior-ccw, holes-cw.
+    let cw = "POLYGON ((0 0, 0 4, 4 4, 4 0, 0 0), (2 0, 3 2, 1 2, 2 0))";
+    assert_eq!(
+        parse(&ok(&["convert", "--from", "wkt", "-"], cw)),
+        parse(FRAME)
+    );
+}
+
+#[test]
+fn float_mode_with_eps() {
+    let dir = scratch();
+    let (a, b) = (file(&dir, "a.txt", FRAME), file(&dir, "b.txt", BAR));
+    let out = ok(
+        &["meet", s(&a), s(&b), "--eps", "1e-9", "--to", "geojson"],
+        "",
+    );
+    let json: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(json["type"], "MultiPolygon");
+    let info: Value = serde_json::from_str(&ok(&["info", "-", "--eps", "1e-9"], FRAME)).unwrap();
+    assert_eq!(
+        (info["exact"].clone(), info["area"]["float"].clone()),
+        (false.into(), 14.0.into())
+    );
+}
+
+#[test]
+fn axioms_pass_and_report() {
+    yinset()
+        .args(["axioms", "4", "--seed", "5"])
+        .assert()
+        .success()
+        .stdout(contains(
+            "4 random triples × 9 laws, seed 5: 36 passed, 0 failed",
+        ));
+}
+
+#[test]
+fn parse_errors_give_line_and_column() {
+    let dir = scratch();
+    let bad = file(&dir, "bad.txt", "0 0\n1 0\n1 x\n");
+    fails(
+        &["info", s(&bad)],
+        "",
+        1,
+        &["bad.txt", "line 3, column 3", "`x` is not a number"],
+    );
+    let wkt = file(&dir, "bad.wkt", "POLYGON ((0 0, 1 0, 1 1, 0 0)");
+    fails(&["convert", s(&wkt)], "", 1, &["bad.wkt", "line 1, column"]);
+    let json = file(
+        &dir,
+        "bad.geojson",
+        "{\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [1]]]}",
+    );
+    fails(&["convert", s(&json)], "", 1, &["bad.geojson", "line 1"]);
+    fails(
+        &["locate", "-", "-"],
+        "",
+        2,
+        &["standard input", "only once"],
+    );
+    let points = file(&dir, "pts.txt", "0 0\n1 2 3\n");
+    fails(&["locate", s(&bad), s(&points)], "", 1, &["line 3"]);
+    let set = file(&dir, "set.txt", FRAME);
+    fails(
+        &["locate", s(&set), s(&points)],
+        "",
+        1,
+        &["pts.txt", "line 2, column 5"],
+    );
+}
+
+#[test]
+fn invalid_sets_are_explained_in_the_input_terms() {
+    let wkt = "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))";
+    fails(
+        &["info", "--from", "wkt", "-"],
+        wkt,
+        1,
+        &["not a Yin set", "curve 1 is polygon 1's exterior ring"],
+    );
+    fails(
+        &["validate", "-"],
+        "0 0\n1 0\n",
+        1,
+        &["curve 0", "at least 3"],
+    );
+}
+
+#[test]
+fn unreadable_files_and_unknown_formats() {
+    let dir = scratch();
+    let missing = dir.path().join("missing.txt");
+    fails(
+        &["info", s(&missing)],
+        "",
+        1,
+        &["cannot read", "missing.txt"],
+    );
+    fails(&["info", s(dir.path())], "", 2, &["--from"]);
+    let dat = file(&dir, "a.dat", FRAME);
+    fails(&["info", s(&dat)], "", 2, &["a.dat", "--from"]);
+    assert!(ok(&["info", "--from", "yin2", s(&dat)], "").contains("\"betti\""));
+    let unwritable = dir.path().join("no/such/dir/out.txt");
+    fails(
+        &["convert", "-", "-o", s(&unwritable)],
+        FRAME,
+        1,
+        &["cannot write", "out.txt"],
+    );
+}
+
+#[test]
+fn conflicting_or_wrong_options_are_usage_errors() {
+    let dir = scratch();
+    let a = file(&dir, "a.txt", FRAME);
+    fails(
+        &["convert", s(&a), "--to", "wkt", "-o", "x.geojson"],
+        "",
+        2,
+        &["conflicting options"],
+    );
+    fails(&["convert", s(&a), "-o", "x.out"], "", 2, &["--to"]);
+    fails(&["meet", "-", "-"], FRAME, 2, &["only once"]);
+    fails(
+        &["info", s(&a), "--eps", "0"],
+        "",
+        2,
+        &["--eps", "greater than 0"],
+    );
+    fails(
+        &["info", s(&a), "--eps", "-1e-9"],
+        "",
+        2,
+        &["--eps", "greater than 0"],
+    );
+    fails(&["info", s(&a), "--to", "wkt"], "", 2, &["--to"]);
+    fails(&["axioms", "--eps", "1e-9"], "", 2, &["--eps"]);
+    fails(&["meet", s(&a)], "", 2, &["<B>"]);
+    fails(&["frobnicate"], "", 2, &["frobnicate"]);
+}
+
+#[test]
+fn unbounded_sets_are_not_written_as_polygons() {
+    fails(
+        &["complement", "-", "--to", "wkt"],
+        FRAME,
+        1,
+        &["unbounded", "--to yin2"],
+    );
+    fails(
+        &["complement", "-", "-o", "out.geojson"],
+        FRAME,
+        1,
+        &["unbounded", "GeoJSON"],
+    );
+}
