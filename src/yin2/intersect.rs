@@ -1,12 +1,11 @@
-//! MRS-a of seed 000 Def. 4.8: all contacts between edges, by a Bentley–Ottmann sweep in
-//! O((n + I) log n) (seed 002 §1.3).
-//!
-//! The sweep line is tilted infinitesimally, so events are taken in the lexicographic order of
-//! points and a vertical edge runs from its lower to its upper end. At each event `p` the edges
-//! through `p` (those starting there, ending there, or containing it) are taken out of the
-//! status, every pair of them that first meets at `p` is reported, and the ones that go on are
-//! put back in the order of their directions after `p`; only the two new neighbour pairs are
-//! tested for a crossing ahead. Every decision is [`orient`], [`classify`] or the order of points.
+//! MRS-a of seed 000 Def. 4.8 by a Bentley–Ottmann sweep in O((n + I) log n) (seed 002 §1.3).
+
+// The sweep line is tilted infinitesimally, so events come in the lexicographic order of points
+// and a vertical edge runs from its lower to its upper end. At each event `p` the edges through
+// `p` (starting there, ending there, or containing it) are taken out of the status, every pair
+// of them that first meets at `p` is reported, and the ones that go on are put back in the order
+// of their directions after `p`; only the two new neighbour pairs are tested for a crossing
+// ahead. Every decision is `orient`, `classify` or the order of points.
 
 use crate::kernel::{classify, orient, Contact, Point};
 use crate::num::Num;
@@ -16,8 +15,7 @@ use std::collections::BTreeMap;
 /// A closed straight edge `a → b` of positive length.
 pub type Edge<N> = (Point<N>, Point<N>);
 
-/// All pairs `(i, j)`, `i < j`, of edges that meet and for which `wanted(i, j)` holds, with
-/// their contact, sorted by `(i, j)`: Bentley–Ottmann for MRS-a, O((n + I) log n) (seed 002 §1.3).
+/// MRS-a in O((n + I) log n) (seed 002 §1.3): meeting pairs `i < j` with `wanted`, by `(i, j)`.
 pub fn intersections<N: Num>(
     edges: &[Edge<N>],
     ctx: &N::Ctx,
@@ -40,10 +38,9 @@ pub fn intersections<N: Num>(
 const NIL: usize = usize::MAX;
 
 /// The sweep status of seed 002 §1.3: a treap over the edges cut by the sweep line, bottom to top.
-///
-/// The order is implicit (held by the tree's shape); it is searched with monotone predicates
-/// evaluated at the current event, and an edge is removed through its node (parent links), so
-/// no comparison between two stored edges is ever needed.
+// The order is implicit (held by the tree's shape): it is searched with monotone predicates at
+// the current event, and an edge is removed through its node (parent links), so two stored edges
+// are never compared.
 struct Status {
     left: Vec<usize>,
     right: Vec<usize>,
@@ -81,8 +78,7 @@ impl Status {
         self.up[x] = NIL;
     }
 
-    /// Split treap `t` into the nodes where `goes_right` is false and those where it is true
-    /// (`goes_right` must be monotone along the order for a meaningful result).
+    /// Split treap `t` into the nodes where the monotone predicate `goes_right` is false, then true.
     fn split(&mut self, mut t: usize, mut goes_right: impl FnMut(usize) -> bool) -> (usize, usize) {
         let (mut lroot, mut rroot, mut lhook, mut rhook) = (NIL, NIL, NIL, NIL);
         while t != NIL {
@@ -205,8 +201,7 @@ impl Status {
     }
 }
 
-/// A merge sort that terminates and never panics even if `cmp` is not a total order (float
-/// mode's ε-predicates), for the orders around an event of seed 002 §1.3.
+/// Merge sort for the orders around an event (seed 002 §1.3), safe if `cmp` is not total (ε).
 fn sort_robust(v: &mut [usize], cmp: &mut impl FnMut(usize, usize) -> Ordering) {
     if v.len() <= 12 {
         for i in 1..v.len() {
@@ -314,9 +309,7 @@ impl<'a, N: Num> Sweep<'a, N> {
         self.pairs
     }
 
-    /// Handle event `p` of seed 002 §1.3: take out the edges through `p`, report the pairs
-    /// meeting first at `p`, put back the edges going on in their order after `p`, and test the
-    /// new neighbours for crossings ahead.
+    /// Event `p` (seed 002 §1.3): report pairs first meeting at `p`, reorder the edges through it.
     fn event(
         &mut self,
         p: &Point<N>,
@@ -403,6 +396,11 @@ impl<'a, N: Num> Sweep<'a, N> {
         }
         let (i, j) = (s.min(t), s.max(t));
         let (a, b) = (&self.edges[i], &self.edges[j]);
+        // A crossing needs overlapping y-extents (the x-extents overlap at the sweep line).
+        let (ya, yb) = ((&a.0.y).min(&a.1.y), (&b.0.y).min(&b.1.y));
+        if (&a.0.y).max(&a.1.y) < yb || (&b.0.y).max(&b.1.y) < ya {
+            return;
+        }
         if let Contact::Crossing(q) = classify(&a.0, &a.1, &b.0, &b.1, self.ctx) {
             if q > *p {
                 self.crossings.entry(q).or_default().extend([i, j]);
@@ -423,7 +421,9 @@ mod tests {
     type Seg = ((i64, i64), (i64, i64));
 
     fn edges_of<N: Num>(segs: &[Seg]) -> Vec<Edge<N>> {
-        segs.iter().map(|&((a, b), (c, d))| (Point::int(a, b), Point::int(c, d))).collect()
+        segs.iter()
+            .map(|&((a, b), (c, d))| (Point::int(a, b), Point::int(c, d)))
+            .collect()
     }
 
     /// The O(n²) oracle: every pair, classified.
@@ -454,15 +454,16 @@ mod tests {
         got.len()
     }
 
-    /// Float mode: always a sorted subset of the oracle (the contacts are classified alike).
-    fn check_float(segs: &[Seg]) -> (usize, usize) {
+    /// Float mode: equal to the oracle here, as the rounding of crossing points stays far below ε.
+    fn check_float(segs: &[Seg]) -> usize {
         let edges = edges_of::<Float>(segs);
         let ctx = Float::resolve_ctx(Tolerance::default(), 8.0);
         let got = intersections(&edges, &ctx, |_, _| true);
         let want = brute(&edges, &ctx, |_, _| true);
         assert!(got.windows(2).all(|w| (w[0].0, w[0].1) < (w[1].0, w[1].1)));
         assert!(got.iter().all(|x| want.contains(x)), "segments: {segs:?}");
-        (got.len(), want.len())
+        assert_eq!(got.len(), want.len(), "segments: {segs:?}");
+        got.len()
     }
 
     fn seg() -> impl Strategy<Value = Seg> {
@@ -479,12 +480,15 @@ mod tests {
     }
 
     fn segs(zero_length: bool) -> impl Strategy<Value = Vec<Seg>> {
-        proptest::collection::vec(seg(), 0..40)
-            .prop_map(move |v| v.into_iter().filter(|s| zero_length || s.0 != s.1).collect())
+        proptest::collection::vec(seg(), 0..40).prop_map(move |v| {
+            v.into_iter()
+                .filter(|s| zero_length || s.0 != s.1)
+                .collect()
+        })
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(600))]
+        #![proptest_config(ProptestConfig { cases: 600, failure_persistence: None, ..ProptestConfig::default() })]
 
         #[test]
         fn sweep_equals_brute_force(s in segs(false)) {
@@ -499,11 +503,13 @@ mod tests {
 
         #[test]
         fn zero_length_edges_do_not_break_it(s in segs(true)) {
-            check_exact(&s, |_, _| true);
+            // `classify` is not meant for points, so only the other pairs are compared.
+            let proper = |i: usize, j: usize| s[i].0 != s[i].1 && s[j].0 != s[j].1;
+            check_exact(&s, proper);
         }
 
         #[test]
-        fn float_mode_is_a_subset(s in segs(false)) {
+        fn float_mode_equals_brute_force(s in segs(false)) {
             check_float(&s);
         }
     }
@@ -512,11 +518,27 @@ mod tests {
     fn star_through_one_point() {
         // 16 edges through (0, 0): 12 crossing it, 4 ending there, with two duplicates.
         let mut s: Vec<Seg> = vec![];
-        for (a, b) in [(1, 0), (0, 1), (1, 1), (1, -1), (2, 1), (1, 2), (2, -1), (1, -2), (3, 1), (1, 3)] {
+        for (a, b) in [
+            (1, 0),
+            (0, 1),
+            (1, 1),
+            (1, -1),
+            (2, 1),
+            (1, 2),
+            (2, -1),
+            (1, -2),
+            (3, 1),
+            (1, 3),
+        ] {
             s.push(((-a, -b), (a, b)));
         }
         s.extend([((5, 0), (-5, 0)), ((0, 5), (0, -5))]);
-        s.extend([((0, 0), (4, 1)), ((-4, 1), (0, 0)), ((0, 0), (0, 7)), ((0, 0), (-3, -3))]);
+        s.extend([
+            ((0, 0), (4, 1)),
+            ((-4, 1), (0, 0)),
+            ((0, 0), (0, 7)),
+            ((0, 0), (-3, -3)),
+        ]);
         let n = s.len();
         assert_eq!(check_exact(&s, |_, _| true), n * (n - 1) / 2);
     }
@@ -546,8 +568,18 @@ mod tests {
         let got = check_exact(&s, |_, _| true);
         assert_eq!(got, 144);
         // Closing the grid's frame adds touching and overlapping contacts.
-        s.extend([((-1, -1), (12, -1)), ((12, -1), (12, 12)), ((-1, 12), (12, 12)), ((-1, -1), (-1, 12))]);
-        s.extend([((3, 3), (3, 8)), ((3, 5), (9, 5)), ((0, 0), (11, 11)), ((11, 0), (0, 11))]);
+        s.extend([
+            ((-1, -1), (12, -1)),
+            ((12, -1), (12, 12)),
+            ((-1, 12), (12, 12)),
+            ((-1, -1), (-1, 12)),
+        ]);
+        s.extend([
+            ((3, 3), (3, 8)),
+            ((3, 5), (9, 5)),
+            ((0, 0), (11, 11)),
+            ((11, 0), (0, 11)),
+        ]);
         check_exact(&s, |_, _| true);
     }
 
@@ -555,7 +587,12 @@ mod tests {
     fn duplicates_and_reversals() {
         let mut s: Vec<Seg> = vec![];
         for _ in 0..4 {
-            s.extend([((0, 0), (3, 3)), ((3, 3), (0, 0)), ((1, 0), (1, 4)), ((1, 4), (1, 0))]);
+            s.extend([
+                ((0, 0), (3, 3)),
+                ((3, 3), (0, 0)),
+                ((1, 0), (1, 4)),
+                ((1, 4), (1, 0)),
+            ]);
         }
         let n = s.len();
         assert_eq!(check_exact(&s, |_, _| true), n * (n - 1) / 2);
@@ -569,12 +606,11 @@ mod tests {
             s.push(((i, 6), (i, -1)));
             s.push(((i, i), (i + 2, i)));
         }
-        let (got, want) = check_float(&s);
-        assert_eq!(got, want);
+        // 36 crossings, 6 overlaps, 15 T-junctions and crossings of the short edges.
+        assert_eq!(check_float(&s), 57);
     }
 
-    /// A deterministic generator of `n` short segments in a large square, a quarter of them
-    /// axis-parallel on a coarse grid (collinear overlaps, shared ends, T-junctions).
+    /// `n` short segments in a large square, a quarter axis-parallel on a coarse grid (overlaps).
     fn random_segments(n: usize, seed: u64) -> Vec<Seg> {
         let mut state = seed;
         let mut next = move |m: i64| {
@@ -603,8 +639,10 @@ mod tests {
 
     /// The oracle for many edges: integer bounding boxes first, then `classify`.
     fn brute_boxed(segs: &[Seg]) -> Vec<(usize, usize, Contact<Rational>)> {
-        let boxes: Vec<[i64; 4]> =
-            segs.iter().map(|&((a, b), (c, d))| [a.min(c), b.min(d), a.max(c), b.max(d)]).collect();
+        let boxes: Vec<[i64; 4]> = segs
+            .iter()
+            .map(|&((a, b), (c, d))| [a.min(c), b.min(d), a.max(c), b.max(d)])
+            .collect();
         let edges = edges_of::<Rational>(segs);
         let mut out = Vec::new();
         for i in 0..segs.len() {
