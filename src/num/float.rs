@@ -152,6 +152,10 @@ impl Num for Float {
         }
     }
 
+    fn grid(ctx: &Tolerance) -> Option<f64> {
+        (ctx.eps > 0.0).then(|| 2f64.powi(ctx.eps.log2().floor() as i32))
+    }
+
     fn combine_ctx(a: Tolerance, b: Tolerance) -> Tolerance {
         Tolerance {
             eps: a.eps.max(b.eps),

@@ -112,6 +112,13 @@ pub trait Num:
         ctx
     }
 
+    /// The spacing of the grid that float mode snaps results to (seed 000 §5.2): the largest
+    /// power of two not above ε. `None` for exact backends, which never snap.
+    fn grid(ctx: &Self::Ctx) -> Option<f64> {
+        let _ = ctx;
+        None
+    }
+
     /// The integer 0.
     fn zero() -> Self {
         Self::from_i64(0)

@@ -20,6 +20,7 @@ impl<N: Num> YinSet2<N> {
                 g.push(ids[(k + 1) % ids.len()], ids[k]);
             }
         }
-        g.paste(self.ctx)
+        // Reversal keeps the curves' vertices, so pasting needs no snapping even in float mode.
+        g.paste_exact(N::Ctx::default()).with_ctx(self.ctx)
     }
 }

@@ -85,15 +85,67 @@ pub fn locate_in_edges<N: Num>(
 ) -> Vec<Location> {
     let mut vertices: Vec<&Point<N>> = edges.iter().map(|e| e.0).collect();
     vertices.sort();
-    // Vertical edges as (x, y_lo, y_hi), sorted: point-on-vertical-edge checks.
-    let mut verticals: Vec<(&N, &N, &N)> = Vec::new();
+    let mut verticals: Vec<(&N, &N, &N)> = edges
+        .iter()
+        .filter(|(a, b)| a.x == b.x)
+        .map(|&(a, b)| {
+            if a.y <= b.y {
+                (&a.x, &a.y, &b.y)
+            } else {
+                (&a.x, &b.y, &a.y)
+            }
+        })
+        .collect();
+    verticals.sort();
+    let far = if unbounded {
+        Location::Inside
+    } else {
+        Location::Outside
+    };
+    let mut out = vec![far; queries.len()];
+    sweep(edges, queries, ctx, |i, status, probe| {
+        let p = &queries[i];
+        out[i] = if vertices.binary_search(&p).is_ok() || on_vertical(&verticals, p) {
+            Location::OnBoundary
+        } else {
+            classify_between(status, probe, p, far, ctx)
+        };
+    });
+    out
+}
+
+/// For each query point, the index of the first non-vertical edge strictly above it on the
+/// vertical line just right of the point (`None` if there is none). Edges must not cross.
+pub(crate) fn first_above<N: Num>(
+    edges: &[(&Point<N>, &Point<N>)],
+    queries: &[Point<N>],
+    ctx: &N::Ctx,
+) -> Vec<Option<usize>> {
+    let mut out = vec![None; queries.len()];
+    sweep(edges, queries, ctx, |i, status, probe| {
+        out[i] = status
+            .range::<Key<'_, N>, _>(probe..)
+            .find(|s| probe.cmp(s) == Ordering::Less)
+            .map(|s| s.id);
+    });
+    out
+}
+
+/// The plane sweep of seed 002 Alg. 1: the status holds the non-vertical edges cut by the
+/// vertical line just right of the sweep position, bottom to top; `query(i, status, probe)` is
+/// called for each query point `i` when the sweep reaches it.
+fn sweep<'a, N: Num>(
+    edges: &'a [(&'a Point<N>, &'a Point<N>)],
+    queries: &'a [Point<N>],
+    ctx: &'a N::Ctx,
+    mut query: impl FnMut(usize, &BTreeSet<&Key<'a, N>>, &Key<'a, N>),
+) {
     // Sweep events: (x, kind, index) with kind 0 = remove, 1 = insert, 2 = query.
     let mut events: Vec<(&N, u8, usize)> = Vec::with_capacity(2 * edges.len() + queries.len());
     let mut keys: Vec<Key<'_, N>> = Vec::with_capacity(edges.len());
     for (id, &(from, to)) in edges.iter().enumerate() {
         let (lo, hi) = if from <= to { (from, to) } else { (to, from) };
         if lo.x == hi.x {
-            verticals.push((&lo.x, &lo.y, &hi.y));
             continue;
         }
         events.push((&lo.x, 1, keys.len()));
@@ -107,18 +159,10 @@ pub fn locate_in_edges<N: Num>(
             ctx,
         });
     }
-    verticals.sort();
     for (i, q) in queries.iter().enumerate() {
         events.push((&q.x, 2, i));
     }
     events.sort_by(|a, b| a.0.cmp(b.0).then(a.1.cmp(&b.1)));
-
-    let outside_all = if unbounded {
-        Location::Inside
-    } else {
-        Location::Outside
-    };
-    let mut out = vec![outside_all; queries.len()];
     let mut status: BTreeSet<&Key<'_, N>> = BTreeSet::new();
     for (_, kind, i) in events {
         match kind {
@@ -130,23 +174,18 @@ pub fn locate_in_edges<N: Num>(
             }
             _ => {
                 let p = &queries[i];
-                out[i] = if vertices.binary_search(&p).is_ok() || on_vertical(&verticals, p) {
-                    Location::OnBoundary
-                } else {
-                    let probe = Key {
-                        lo: p,
-                        hi: p,
-                        from: p,
-                        to: p,
-                        id: usize::MAX,
-                        ctx,
-                    };
-                    classify_between(&status, &probe, p, outside_all, ctx)
+                let probe = Key {
+                    lo: p,
+                    hi: p,
+                    from: p,
+                    to: p,
+                    id: usize::MAX,
+                    ctx,
                 };
+                query(i, &status, &probe);
             }
         }
     }
-    out
 }
 
 /// True if `p` lies on one of the sorted vertical edges.
@@ -242,5 +281,29 @@ mod tests {
             &(),
         );
         assert_eq!(got, vec![Outside, Outside, Inside, Inside, OnBoundary]);
+    }
+
+    #[test]
+    fn first_edge_above_a_point() {
+        // Three stacked horizontal-ish edges and a vertical one.
+        let v = [
+            p(0, 0),
+            p(4, 0),
+            p(0, 2),
+            p(4, 3),
+            p(1, 5),
+            p(3, 5),
+            p(2, -9),
+            p(2, 9),
+        ];
+        let edges = vec![
+            (&v[0], &v[1]),
+            (&v[2], &v[3]),
+            (&v[4], &v[5]),
+            (&v[6], &v[7]),
+        ];
+        let q = [p(2, -1), p(1, 1), p(2, 4), p(3, 6), p(0, 1), p(4, 1)];
+        let got = first_above(&edges, &q, &());
+        assert_eq!(got, vec![Some(0), Some(1), Some(2), None, Some(1), None]);
     }
 }

@@ -5,6 +5,7 @@ use super::intersect::Edge;
 use super::locate::Location;
 use super::paste::Segmented;
 use super::set::{Repr, Spadjor, YinSet2};
+use super::snap::{inside_set, regularize};
 use crate::kernel::Point;
 use crate::num::Num;
 use std::collections::HashSet;
@@ -68,5 +69,26 @@ fn meet_spadjors<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, ctx: N::Ctx) -> YinSet2
             }
         }
     }
-    g.paste(ctx)
+    match N::grid(&ctx) {
+        Some(spacing) if !g.is_balanced() => overlay(a, b, spacing, ctx),
+        _ => g.paste(ctx),
+    }
+}
+
+/// Float mode's fallback when round-off left the selected pieces unbalanced: snap both
+/// operands' boundaries together and keep the faces inside both (winding numbers per operand).
+fn overlay<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, spacing: f64, ctx: N::Ctx) -> YinSet2<N> {
+    let pieces: Vec<(Edge<N>, usize)> = [a, b]
+        .iter()
+        .enumerate()
+        .flat_map(|(label, s)| {
+            s.edges()
+                .into_iter()
+                .map(move |(p, q)| ((p.clone(), q.clone()), label))
+        })
+        .collect();
+    let (ua, ub) = (!a.bounded, !b.bounded);
+    regularize(&pieces, spacing, ctx, |w| {
+        inside_set(w[0], ua) && inside_set(w[1], ub)
+    })
 }

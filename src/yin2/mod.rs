@@ -1,6 +1,7 @@
 //! The 2D Yin space (seed 000): Jordan curves, spadjors, and the Boolean algebra on them.
 
 mod complement;
+mod convert;
 mod curve;
 mod cut;
 mod error;
@@ -12,6 +13,7 @@ mod meet;
 mod ops;
 mod paste;
 mod set;
+mod snap;
 mod validate;
 
 pub use curve::Curve;

@@ -1,6 +1,8 @@
 //! The pasting map S_V⁻¹ (seed 000 Lemma 4.2, S2R-a..d; seed 002 Alg. 2).
 
+use super::intersect::Edge;
 use super::set::{Spadjor, YinSet2};
+use super::snap::{inside_set, regularize};
 use crate::kernel::{cmp_clockwise_from, Point};
 use crate::num::Num;
 use std::collections::{HashMap, HashSet};
@@ -37,8 +39,37 @@ impl<N: Num> Segmented<N> {
     }
 
     /// S_V⁻¹: paste the pieces into Jordan curves and build the Yin set (0̂ if no piece is left,
-    /// which the callers rule out for 1̂).
+    /// which the callers rule out for 1̂). In float mode the pieces are snapped to the ε-grid and
+    /// regularized by winding numbers, so the result is exactly valid; it is accurate when the
+    /// pieces form closed cycles (see [`Segmented::is_balanced`]).
     pub(crate) fn paste(self, ctx: N::Ctx) -> YinSet2<N> {
+        let Some(spacing) = N::grid(&ctx) else {
+            return self.paste_exact(ctx);
+        };
+        let pieces: Vec<(Edge<N>, usize)> = self
+            .edges
+            .iter()
+            .map(|&(a, b)| ((self.points[a].clone(), self.points[b].clone()), 0))
+            .collect();
+        let twice_area = pieces.iter().fold(N::zero(), |acc, ((p, q), _)| {
+            acc + (p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone())
+        });
+        let unbounded = twice_area.sign() == std::cmp::Ordering::Less;
+        regularize(&pieces, spacing, ctx, |w| inside_set(w[0], unbounded))
+    }
+
+    /// True if every point has as many pieces entering as leaving: the pieces form closed cycles.
+    pub(crate) fn is_balanced(&self) -> bool {
+        let mut balance = vec![0i64; self.points.len()];
+        for &(a, b) in &self.edges {
+            balance[a] += 1;
+            balance[b] -= 1;
+        }
+        balance.iter().all(|&d| d == 0)
+    }
+
+    /// S_V⁻¹ with the predicates of `ctx` taken as exact (the pieces must bound a Yin set).
+    pub(crate) fn paste_exact(self, ctx: N::Ctx) -> YinSet2<N> {
         if self.edges.is_empty() {
             return YinSet2::empty().with_ctx(ctx);
         }

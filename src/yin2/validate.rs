@@ -4,8 +4,9 @@
 use super::error::YinError;
 use super::intersect::{intersections, Edge};
 use super::set::{Spadjor, YinSet2};
+use super::snap::{inside_set, regularize};
 use crate::kernel::{cmp_clockwise_from, Contact, Point};
-use crate::num::Num;
+use crate::num::{Num, Rational};
 use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet};
 
@@ -37,15 +38,44 @@ impl<N: Num> YinSet2<N> {
             .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
             .fold(0.0, f64::max);
         let ctx = N::resolve_ctx(ctx, extent);
-        let spadjor = realize(curves, &ctx)?;
+        // The input must bound a Yin set exactly as given; float mode's ε applies to results.
+        let spadjor = realize(curves, &N::Ctx::default())?;
+        if let Some(spacing) = N::grid(&ctx) {
+            // Float mode: the set the curves bound within ε, made exactly valid on the ε-grid.
+            let unbounded = !spadjor.bounded;
+            let edges: Vec<(Edge<N>, usize)> = spadjor
+                .edges()
+                .into_iter()
+                .map(|(a, b)| ((a.clone(), b.clone()), 0))
+                .collect();
+            return Ok(regularize(&edges, spacing, ctx, |w| {
+                inside_set(w[0], unbounded)
+            }));
+        }
         Ok(YinSet2::from_spadjor(spadjor, ctx))
     }
 
     /// Check the representation invariant exactly (seed 000 Def. 3.17, Thm 3.21): rebuilding the
-    /// set from its own curves succeeds and gives the same canonical form.
+    /// set from its own curves with exact predicates succeeds and gives the same canonical form.
+    /// In float mode the coordinates are read as the exact rationals they are.
     pub fn validate(&self) -> Result<(), YinError> {
         if self.curves().is_empty() {
             return Ok(());
+        }
+        if !N::EXACT {
+            let raw = self.exact_curves()?;
+            let rebuilt = YinSet2::<Rational>::from_curves(raw.clone())?;
+            let same = rebuilt.curves().len() == raw.len()
+                && rebuilt
+                    .curves()
+                    .iter()
+                    .zip(&raw)
+                    .all(|(c, r)| c.vertices() == r.as_slice());
+            return if same {
+                Ok(())
+            } else {
+                Err(YinError::NotCanonical)
+            };
         }
         let raw: Vec<Vec<Point<N>>> = self
             .curves()
@@ -58,6 +88,22 @@ impl<N: Num> YinSet2<N> {
         } else {
             Err(YinError::NotCanonical)
         }
+    }
+}
+
+impl<N: Num> YinSet2<N> {
+    /// The curves with every coordinate read as the exact rational it is (float mode).
+    fn exact_curves(&self) -> Result<Vec<Vec<Point<Rational>>>, YinError> {
+        let exact = |v: &N| Rational::from_f64(v.to_f64()).map_err(|_| YinError::NotCanonical);
+        self.curves()
+            .iter()
+            .map(|c| {
+                c.vertices()
+                    .iter()
+                    .map(|p| Ok(Point::new(exact(&p.x)?, exact(&p.y)?)))
+                    .collect()
+            })
+            .collect()
     }
 }
 

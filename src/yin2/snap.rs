@@ -1,0 +1,306 @@
+//! Float mode's normalization (seed 000 §5.2 made consistent): iterated snap rounding of the
+//! boundary pieces to the ε-grid, then regularization by winding numbers. Every float result is
+//! thereby exactly a valid Yin set whose vertices are grid points, decided with exact predicates.
+
+use super::intersect::{intersections, Edge};
+use super::locate::first_above;
+use super::paste::Segmented;
+use super::set::YinSet2;
+use crate::kernel::{Contact, Point};
+use crate::num::{Float, Num};
+use std::collections::{BTreeSet, HashMap};
+
+/// A grid point: integer multiples of the grid spacing.
+type G = (i64, i64);
+
+/// Largest grid coordinate magnitude, so that every exact test below fits in `i128`.
+const MAX_GRID: f64 = (1u64 << 38) as f64;
+
+/// Winding numbers of a point with respect to the boundaries of the operands (two at most).
+pub(crate) type Winding = [i64; 2];
+
+/// The Yin set of the faces where `inside` holds, given the directed pieces of the operands'
+/// boundaries labelled by operand (`0` or `1`), after snapping them to the grid of spacing
+/// `spacing` (raised, if needed, so that coordinates stay below 2³⁸ spacings). Every piece set
+/// must be a union of closed cycles, so that winding numbers are defined.
+pub(crate) fn regularize<N: Num>(
+    pieces: &[(Edge<N>, usize)],
+    spacing: f64,
+    ctx: N::Ctx,
+    inside: impl Fn(Winding) -> bool,
+) -> YinSet2<N> {
+    let extent = pieces
+        .iter()
+        .flat_map(|((a, b), _)| [a, b])
+        .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
+        .fold(0.0, f64::max);
+    let mut g = spacing;
+    while extent / g >= MAX_GRID {
+        g *= 2.0;
+    }
+    let to_grid = |p: &Point<N>| {
+        (
+            (p.x.to_f64() / g).round() as i64,
+            (p.y.to_f64() / g).round() as i64,
+        )
+    };
+    let segments: Vec<((G, G), usize)> = pieces
+        .iter()
+        .map(|((a, b), l)| ((to_grid(a), to_grid(b)), *l))
+        .filter(|((a, b), _)| a != b)
+        .collect();
+    let fragments = snap_round(segments, g);
+    let windings = Windings::of(&fragments, g);
+    let mut out = Segmented::new();
+    for (k, &(lo, hi)) in windings.pieces.iter().enumerate() {
+        let (left, right) = windings.sides(k);
+        if inside(left) != inside(right) {
+            let (a, b) = (out.id(&point(lo, g)), out.id(&point(hi, g)));
+            if inside(left) {
+                out.push(a, b);
+            } else {
+                out.push(b, a);
+            }
+        }
+    }
+    out.paste_exact(N::Ctx::default()).with_ctx(ctx)
+}
+
+/// Whether a face of winding `w` lies in a Yin set bounded by closed cycles: positive winding,
+/// or non-negative if the set is unbounded (its far face, of winding 0, is inside).
+pub(crate) fn inside_set(w: i64, unbounded: bool) -> bool {
+    w + i64::from(unbounded) > 0
+}
+
+/// The point of grid coordinates `k` (exact: `k` has at most 38 bits and `g` is a power of 2).
+fn point<N: Num>(k: G, g: f64) -> Point<N> {
+    let c = |v: i64| N::from_f64(v as f64 * g).unwrap_or_else(|_| N::zero());
+    Point::new(c(k.0), c(k.1))
+}
+
+/// Iterated snap rounding: reroute every fragment through the centres of the hot pixels it
+/// meets (pixels of endpoints and of crossings) until no two fragments cross.
+fn snap_round(mut segments: Vec<((G, G), usize)>, g: f64) -> Vec<((G, G), usize)> {
+    let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
+    loop {
+        let rerouted: Vec<((G, G), usize)> = segments
+            .iter()
+            .flat_map(|&(s, l)| reroute(s, &hot).into_iter().map(move |f| (f, l)))
+            .collect();
+        if rerouted != segments {
+            segments = rerouted;
+            continue;
+        }
+        let crossings = crossing_pairs(&segments, g);
+        if crossings.is_empty() {
+            return segments;
+        }
+        let before = hot.len();
+        for &(i, j) in &crossings {
+            hot.insert(crossing_pixel(segments[i].0, segments[j].0));
+        }
+        if hot.len() == before {
+            // No new pixel: split each crossing fragment at the crossing's pixel centre.
+            let mut split: HashMap<usize, G> = HashMap::new();
+            for &(i, j) in &crossings {
+                let c = crossing_pixel(segments[i].0, segments[j].0);
+                split.insert(i, c);
+                split.insert(j, c);
+            }
+            segments = segments
+                .iter()
+                .enumerate()
+                .flat_map(|(k, &((a, b), l))| match split.get(&k) {
+                    Some(&c) if c != a && c != b => vec![((a, c), l), ((c, b), l)],
+                    _ => vec![((a, b), l)],
+                })
+                .collect();
+        }
+    }
+}
+
+/// The fragment `s` rerouted through the centres of the hot pixels its closed pixel squares
+/// meet, in order along `s` (only centres projecting strictly inside `s`).
+fn reroute(s: (G, G), hot: &BTreeSet<G>) -> Vec<(G, G)> {
+    let (a, b) = s;
+    let (x0, x1) = (a.0.min(b.0) - 1, a.0.max(b.0) + 1);
+    let (y0, y1) = (a.1.min(b.1) - 1, a.1.max(b.1) + 1);
+    let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
+    let len2 = d.0 * d.0 + d.1 * d.1;
+    let mut stops: Vec<(i128, G)> = hot
+        .range((x0, i64::MIN)..=(x1, i64::MAX))
+        .filter(|c| c.1 >= y0 && c.1 <= y1 && **c != a && **c != b)
+        .filter_map(|&c| {
+            let t = (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
+            (t > 0 && t < len2 && meets_pixel(a, b, c)).then_some((t, c))
+        })
+        .collect();
+    if stops.is_empty() {
+        return vec![s];
+    }
+    stops.sort();
+    let mut path = vec![a];
+    path.extend(stops.into_iter().map(|(_, c)| c));
+    path.push(b);
+    path.dedup();
+    path.windows(2).map(|w| (w[0], w[1])).collect()
+}
+
+/// True if the segment `ab` meets the closed pixel square of side 1 centred at `c`
+/// (in doubled coordinates the square is [2c − 1, 2c + 1]²).
+fn meets_pixel(a: G, b: G, c: G) -> bool {
+    let (ax, ay, bx, by) = (
+        2 * a.0 as i128,
+        2 * a.1 as i128,
+        2 * b.0 as i128,
+        2 * b.1 as i128,
+    );
+    let (cx, cy) = (2 * c.0 as i128, 2 * c.1 as i128);
+    if ax.max(bx) < cx - 1 || ax.min(bx) > cx + 1 || ay.max(by) < cy - 1 || ay.min(by) > cy + 1 {
+        return false;
+    }
+    let side = |px: i128, py: i128| ((bx - ax) * (py - ay) - (by - ay) * (px - ax)).signum();
+    let s = [
+        side(cx - 1, cy - 1),
+        side(cx + 1, cy - 1),
+        side(cx + 1, cy + 1),
+        side(cx - 1, cy + 1),
+    ];
+    !(s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0))
+}
+
+/// Pairs of fragments whose interiors cross properly.
+fn crossing_pairs(segments: &[((G, G), usize)], g: f64) -> Vec<(usize, usize)> {
+    let edges: Vec<Edge<Float>> = segments
+        .iter()
+        .map(|&((a, b), _)| (point(a, g), point(b, g)))
+        .collect();
+    intersections(&edges, &Default::default(), |_, _| true)
+        .into_iter()
+        .filter(|(_, _, c)| matches!(c, Contact::Crossing(_)))
+        .map(|(i, j, _)| (i, j))
+        .collect()
+}
+
+/// The pixel (nearest grid point, ties up) of the crossing of the lines `ab` and `cd`, exactly.
+fn crossing_pixel(s: (G, G), t: (G, G)) -> G {
+    let ((a, b), (c, d)) = (s, t);
+    let w = |p: G| (p.0 as i128, p.1 as i128);
+    let (a, b, c, d) = (w(a), w(b), w(c), w(d));
+    let cross = |u: (i128, i128), v: (i128, i128)| u.0 * v.1 - u.1 * v.0;
+    let (ab, cd) = ((b.0 - a.0, b.1 - a.1), (d.0 - c.0, d.1 - c.1));
+    let mut den = cross(ab, cd);
+    let mut num = cross((c.0 - a.0, c.1 - a.1), cd);
+    if den < 0 {
+        den = -den;
+        num = -num;
+    }
+    // coordinate = a + num/den · ab; pixel = floor(coordinate + 1/2) = floor((2(a·den + num·ab) + den) / 2den).
+    let round = |a0: i128, ab0: i128| (2 * (a0 * den + num * ab0) + den).div_euclid(2 * den) as i64;
+    (round(a.0, ab.0), round(a.1, ab.1))
+}
+
+/// The distinct pieces of the snapped arrangement with their net multiplicity per operand and
+/// the winding numbers on their left.
+struct Windings {
+    /// Pieces `lo → hi` with `lo < hi`, pairwise non-overlapping and non-crossing.
+    pieces: Vec<(G, G)>,
+    /// Per operand, fragments running `lo → hi` minus those running `hi → lo`.
+    mult: Vec<Winding>,
+    /// Winding numbers on the left of `lo → hi`.
+    left: Vec<Winding>,
+}
+
+impl Windings {
+    /// Cut the fragments at every contact, merge coincident pieces, and compute windings from
+    /// the first piece above each piece (a vertical sweep, seed 002 Alg. 1).
+    fn of(fragments: &[((G, G), usize)], g: f64) -> Windings {
+        let edges: Vec<Edge<Float>> = fragments
+            .iter()
+            .map(|&((a, b), _)| (point(a, g), point(b, g)))
+            .collect();
+        let on = |p: &Point<Float>| {
+            (
+                (p.x.get() / g).round() as i64,
+                (p.y.get() / g).round() as i64,
+            )
+        };
+        let mut cuts: Vec<Vec<G>> = vec![Vec::new(); fragments.len()];
+        for (i, j, contact) in intersections(&edges, &Default::default(), |_, _| true) {
+            let pts: Vec<G> = match &contact {
+                Contact::Touching(p) => vec![on(p)],
+                Contact::Overlap(p, q) => vec![on(p), on(q)],
+                _ => vec![],
+            };
+            cuts[i].extend(&pts);
+            cuts[j].extend(pts);
+        }
+        let mut net: HashMap<(G, G), Winding> = HashMap::new();
+        for (&((a, b), label), mut cut) in fragments.iter().zip(cuts) {
+            cut.retain(|&p| p != a && p != b);
+            cut.sort();
+            cut.dedup();
+            let mut stops = vec![a.min(b)];
+            stops.extend(cut);
+            stops.push(a.max(b));
+            for w in stops.windows(2) {
+                net.entry((w[0], w[1])).or_default()[label] += if a < b { 1 } else { -1 };
+            }
+        }
+        let mut pieces: Vec<((G, G), Winding)> =
+            net.into_iter().filter(|&(_, m)| m != [0, 0]).collect();
+        pieces.sort();
+        let (pieces, mult): (Vec<(G, G)>, Vec<Winding>) = pieces.into_iter().unzip();
+        let left = Windings::left_windings(&pieces, &mult, g);
+        Windings { pieces, mult, left }
+    }
+
+    /// Winding numbers on the left of each piece: the face above a non-vertical piece (east of
+    /// a vertical one) is the face below the first piece above it, or the far face (winding 0).
+    fn left_windings(pieces: &[(G, G)], mult: &[Winding], g: f64) -> Vec<Winding> {
+        let pts: Vec<Edge<Float>> = pieces
+            .iter()
+            .map(|&(a, b)| (point(a, g), point(b, g)))
+            .collect();
+        let refs: Vec<(&Point<Float>, &Point<Float>)> = pts.iter().map(|(a, b)| (a, b)).collect();
+        let mids: Vec<Point<Float>> = pts.iter().map(|(a, b)| a.midpoint(b)).collect();
+        let above = first_above(&refs, &mids, &Default::default());
+        let sub = |u: Winding, v: Winding| [u[0] - v[0], u[1] - v[1]];
+        let add = |u: Winding, v: Winding| [u[0] + v[0], u[1] + v[1]];
+        // below[q]: winding of the face just below non-vertical piece q, once known.
+        let mut below: Vec<Option<Winding>> = vec![None; pieces.len()];
+        let mut left = vec![[0, 0]; pieces.len()];
+        for k in 0..pieces.len() {
+            let mut chain = Vec::new();
+            let mut cur = above[k];
+            let mut face = [0, 0];
+            while let Some(q) = cur {
+                if let Some(w) = below[q] {
+                    face = w;
+                    break;
+                }
+                chain.push(q);
+                cur = above[q];
+            }
+            for &q in chain.iter().rev() {
+                face = sub(face, mult[q]);
+                below[q] = Some(face);
+            }
+            // Crossing a piece from its right to its left adds its multiplicity.
+            let vertical = pieces[k].0 .0 == pieces[k].1 .0;
+            left[k] = if vertical { add(face, mult[k]) } else { face };
+        }
+        left
+    }
+
+    /// Winding numbers on the left and on the right of piece `k`.
+    fn sides(&self, k: usize) -> (Winding, Winding) {
+        (
+            self.left[k],
+            [
+                self.left[k][0] - self.mult[k][0],
+                self.left[k][1] - self.mult[k][1],
+            ],
+        )
+    }
+}
