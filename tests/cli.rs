@@ -385,3 +385,49 @@ fn unbounded_sets_are_not_written_as_polygons() {
         &["unbounded", "GeoJSON"],
     );
 }
+
+#[test]
+fn fill_rules_take_polygon_soup() {
+    let overlap = "MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))";
+    fails(
+        &["info", "--from", "wkt", "-"],
+        overlap,
+        1,
+        &["not a Yin set", "--fill nonzero"],
+    );
+    let info = |args: &[&str], input: &str| -> Value {
+        serde_json::from_str(&ok(args, input)).expect("JSON")
+    };
+    let union = info(
+        &["info", "--from", "wkt", "--fill", "nonzero", "-"],
+        overlap,
+    );
+    assert_eq!(union["area"]["exact"], "7");
+    let xor = info(
+        &["info", "--from", "wkt", "--fill", "evenodd", "-"],
+        overlap,
+    );
+    assert_eq!(xor["area"]["exact"], "6");
+    assert_eq!(xor["betti"]["components"], 2);
+    // A self-intersecting ring, in WKT and as a yin2 curve: a bow-tie of two triangles.
+    let bow = "POLYGON ((0 0, 2 2, 2 0, 0 2, 0 0))";
+    let wkt = info(&["info", "--from", "wkt", "--fill", "nonzero", "-"], bow);
+    let yin2 = info(&["info", "--fill", "nonzero", "-"], "0 0\n2 2\n2 0\n0 2\n");
+    for y in [wkt, yin2] {
+        assert_eq!(
+            (y["area"]["exact"].clone(), y["betti"]["components"].clone()),
+            ("2".into(), 2.into())
+        );
+    }
+    // Filled sets go on through the other subcommands.
+    let out = ok(
+        &[
+            "convert", "--from", "wkt", "--fill", "nonzero", "-", "--to", "wkt",
+        ],
+        overlap,
+    );
+    assert!(
+        out.starts_with("MULTIPOLYGON (((0 0, 2 0, 2 1, 3 1, 3 3, 1 3, 1 2, 0 2, 0 0)))"),
+        "{out}"
+    );
+}

@@ -1,6 +1,7 @@
 //! The command line's grammar: subcommands and their options (clap derive).
 
 use super::format::Format;
+use crate::yin2::FillRule;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
@@ -151,6 +152,16 @@ pub struct AxiomsArgs {
     /// Seed of the random generator (the same seed gives the same sets).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+}
+
+impl FillArg {
+    /// The kernel's fill rule.
+    pub fn rule(self) -> FillRule {
+        match self {
+            FillArg::Nonzero => FillRule::NonZero,
+            FillArg::Evenodd => FillRule::EvenOdd,
+        }
+    }
 }
 
 /// Parse `--eps`: a finite number greater than zero.

@@ -35,9 +35,6 @@ pub enum CliError {
     /// An unbounded set asked for in a format of bounded polygons.
     #[error("the set is unbounded (it contains everything far enough out), so it cannot be written as {format} polygons: write yin2 instead (--to yin2)")]
     Unbounded { format: &'static str },
-    /// `--fill` before the kernel can build a set from polygon soup.
-    #[error("--fill is not available yet in this build (the kernel's fill rules have not landed): remove --fill and give curves that already bound a Yin set")]
-    FillUnavailable,
     /// Some random axiom checks failed.
     #[error("{failed} of {total} axiom checks failed")]
     AxiomsFailed { failed: u64, total: u64 },

@@ -73,13 +73,21 @@ fn build<N: Num>(
     fill: Option<FillArg>,
     ctx: N::Ctx,
 ) -> Result<YinSet2<N>, CliError> {
-    if fill.is_some() {
-        return Err(CliError::FillUnavailable);
-    }
     let Rings { rings, origins } = rings;
-    YinSet2::from_curves_with(rings, ctx).map_err(|source| CliError::Invalid {
-        name: name(path),
-        note: origins.locate_error(&source),
-        source: Box::new(source),
+    let built = match fill {
+        None => YinSet2::from_curves_with(rings, ctx),
+        Some(rule) => YinSet2::from_rings_filled_with(rings, rule.rule(), ctx),
+    };
+    built.map_err(|source| {
+        let hint = if fill.is_none() {
+            "; to take the region the rings cover instead, give --fill nonzero or --fill evenodd"
+        } else {
+            ""
+        };
+        CliError::Invalid {
+            name: name(path),
+            note: format!("{}{hint}", origins.locate_error(&source)),
+            source: Box::new(source),
+        }
     })
 }
