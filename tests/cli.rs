@@ -431,3 +431,20 @@ fn fill_rules_take_polygon_soup() {
         "{out}"
     );
 }
+
+#[test]
+fn large_inputs_keep_pipes_clean() {
+    // A zigzag-bottomed strip of 10 005 vertices: past the spinner's threshold, but standard
+    // error is not a terminal here, so nothing is drawn.
+    let n = 10_002;
+    let mut text: String = (0..=n).map(|i| format!("{i} {}\n", i % 2)).collect();
+    text.push_str(&format!("{n} 10\n0 10\n"));
+    let out = yinset()
+        .args(["info", "-"])
+        .write_stdin(text)
+        .assert()
+        .success()
+        .stderr("");
+    let info: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+    assert_eq!(info["vertices"], 10_005);
+}

@@ -61,7 +61,12 @@ pub fn operate<N: Num>(
         return Err(CliError::Usage("no input set given".to_string()));
     };
     let vertices = sets.iter().flat_map(|s| s.curves()).map(|c| c.len()).sum();
-    let message = || format!("{op:?} of {vertices} vertices");
+    let message = || {
+        format!(
+            "{} of {vertices} vertices",
+            format!("{op:?}").to_lowercase()
+        )
+    };
     let result = progress::while_working(message, vertices, || op.apply(first, rest));
     write_text(write.output.as_deref(), &encode(&result, format)?)
 }
