@@ -42,7 +42,12 @@ impl Universe {
         let expected: Vec<Y> = cx.all(true).into_iter().map(|s| cx.yin(s)).collect();
         // The oracle is injective: distinct masks give distinct Yin sets (Thm 3.21).
         let distinct: HashSet<&Y> = expected.iter().collect();
-        assert_eq!(distinct.len(), expected.len(), "oracle not injective on {}", cx.name);
+        assert_eq!(
+            distinct.len(),
+            expected.len(),
+            "oracle not injective on {}",
+            cx.name
+        );
         Universe { cx, expected }
     }
 
@@ -65,7 +70,10 @@ impl Universe {
 }
 
 /// Run `check` on every item, on all cores; stop at the first failure.
-fn par<T: Sync>(items: &[T], check: impl Fn(&mut Tally, &T) -> Res + Sync) -> (Tally, Result<(), String>) {
+fn par<T: Sync>(
+    items: &[T],
+    check: impl Fn(&mut Tally, &T) -> Res + Sync,
+) -> (Tally, Result<(), String>) {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let next = AtomicUsize::new(0);
     let failed = AtomicBool::new(false);
@@ -95,7 +103,13 @@ fn par<T: Sync>(items: &[T], check: impl Fn(&mut Tally, &T) -> Res + Sync) -> (T
 }
 
 /// Print the proof's table row and its per-law counts; panic on failure.
-fn conclude(theorem: &str, universe: &str, cases: usize, start: Instant, (tally, result): (Tally, Result<(), String>)) {
+fn conclude(
+    theorem: &str,
+    universe: &str,
+    cases: usize,
+    start: Instant,
+    (tally, result): (Tally, Result<(), String>),
+) {
     let secs = start.elapsed().as_secs_f64();
     let verdict = if result.is_ok() { "holds" } else { "FAILS" };
     eprintln!(
@@ -110,7 +124,9 @@ fn conclude(theorem: &str, universe: &str, cases: usize, start: Instant, (tally,
 
 /// Every ordered pair of `sets`.
 fn pairs(sets: &[Cells]) -> Vec<(Cells, Cells)> {
-    sets.iter().flat_map(|&a| sets.iter().map(move |&b| (a, b))).collect()
+    sets.iter()
+        .flat_map(|&a| sets.iter().map(move |&b| (a, b)))
+        .collect()
 }
 
 /// Every ordered triple of `sets`.
@@ -128,7 +144,9 @@ fn triples(sets: &[Cells]) -> Vec<(Cells, Cells, Cells)> {
 
 /// A fixed spread of `k` masks (for the quick subset): the extremes and a deterministic sample.
 fn sample(sets: &[Cells], k: usize) -> Vec<Cells> {
-    let mut v: Vec<Cells> = (0..k).map(|i| sets[(i * 2654435761) % sets.len()]).collect();
+    let mut v: Vec<Cells> = (0..k)
+        .map(|i| sets[(i * 2654435761) % sets.len()])
+        .collect();
     v.push(sets[0]);
     v.push(*sets.last().unwrap());
     v.sort();
@@ -194,7 +212,9 @@ fn theorem_binary(u: &Universe, items: Vec<(Cells, Cells)>, universe: &str) {
 /// a∨(b∧c) = (a∨b)∧(a∨c), every side computed by the kernel and validated.
 fn theorem_ternary(u: &Universe, items: Vec<(Cells, Cells, Cells)>, universe: &str) {
     let start = Instant::now();
-    let result = par(&items, |t, &(a, b, c)| laws::ternary(t, u.get(a), u.get(b), u.get(c)));
+    let result = par(&items, |t, &(a, b, c)| {
+        laws::ternary(t, u.get(a), u.get(b), u.get(c))
+    });
     conclude(
         "T: associativity, distributivity (Thm 4.11)",
         universe,
@@ -222,12 +242,24 @@ fn binary_on_3x3_grid() {
     let u = Universe::new(Complex::grid(3, 3));
     let bounded = u.sets(false);
     if full() {
-        let name = format!("{}, all {}² ordered pairs of bounded sets", u.cx.name, bounded.len());
+        let name = format!(
+            "{}, all {}² ordered pairs of bounded sets",
+            u.cx.name,
+            bounded.len()
+        );
         theorem_binary(&u, pairs(&bounded), &name);
     } else {
         let few = sample(&bounded, 6);
-        let items: Vec<_> = bounded.iter().flat_map(|&a| few.iter().map(move |&b| (a, b))).collect();
-        let name = format!("{}, all {} bounded sets × {} fixed ones", u.cx.name, bounded.len(), few.len());
+        let items: Vec<_> = bounded
+            .iter()
+            .flat_map(|&a| few.iter().map(move |&b| (a, b)))
+            .collect();
+        let name = format!(
+            "{}, all {} bounded sets × {} fixed ones",
+            u.cx.name,
+            bounded.len(),
+            few.len()
+        );
         theorem_binary(&u, items, &name);
     }
 }
@@ -237,12 +269,24 @@ fn binary_on_pinwheel() {
     let u = Universe::new(Complex::pinwheel());
     let bounded = u.sets(false);
     if full() {
-        let name = format!("{}, all {}² ordered pairs of bounded sets", u.cx.name, bounded.len());
+        let name = format!(
+            "{}, all {}² ordered pairs of bounded sets",
+            u.cx.name,
+            bounded.len()
+        );
         theorem_binary(&u, pairs(&bounded), &name);
     } else {
         let few = sample(&bounded, 6);
-        let items: Vec<_> = bounded.iter().flat_map(|&a| few.iter().map(move |&b| (a, b))).collect();
-        let name = format!("{}, all {} bounded sets × {} fixed ones", u.cx.name, bounded.len(), few.len());
+        let items: Vec<_> = bounded
+            .iter()
+            .flat_map(|&a| few.iter().map(move |&b| (a, b)))
+            .collect();
+        let name = format!(
+            "{}, all {} bounded sets × {} fixed ones",
+            u.cx.name,
+            bounded.len(),
+            few.len()
+        );
         theorem_binary(&u, items, &name);
     }
 }
@@ -252,7 +296,11 @@ fn binary_on_closed_small_universes() {
     for cx in [Complex::grid(2, 2), Complex::cross()] {
         let u = Universe::new(cx);
         let all = u.sets(true);
-        let name = format!("{}, all {}² ordered pairs (bounded and unbounded)", u.cx.name, all.len());
+        let name = format!(
+            "{}, all {}² ordered pairs (bounded and unbounded)",
+            u.cx.name,
+            all.len()
+        );
         theorem_binary(&u, pairs(&all), &name);
     }
 }
@@ -262,9 +310,49 @@ fn ternary_on_small_universes() {
     for cx in [Complex::grid(2, 2), Complex::cross()] {
         let u = Universe::new(cx);
         let sets = if full() { u.sets(true) } else { u.sets(false) };
-        let kind = if full() { "bounded and unbounded" } else { "bounded" };
-        let name = format!("{}, all {}³ ordered triples ({kind})", u.cx.name, sets.len());
+        let kind = if full() {
+            "bounded and unbounded"
+        } else {
+            "bounded"
+        };
+        let name = format!(
+            "{}, all {}³ ordered triples ({kind})",
+            u.cx.name,
+            sets.len()
+        );
         theorem_ternary(&u, triples(&sets), &name);
+    }
+}
+
+/// How often the universes' pairs are degenerate (measured on every 37th ordered pair of the
+/// full binary universes, exactly): shared vertices, collinear overlapping edges, touching
+/// points, coincident curves with equal and opposite orientation, slanted edges.
+#[test]
+fn degenerate_cases_in_universes() {
+    use common::gen::{FeatureStats, Features};
+    for (cx, min) in [
+        (
+            Complex::grid(3, 3),
+            [
+                0.9, 0.9, 0.15, 0.4, 0.05, 0.0, 0.01, 0.5, 0.0, 0.0, 0.0, 0.0,
+            ],
+        ),
+        (
+            Complex::pinwheel(),
+            [0.9, 0.9, 0.05, 0.8, 0.1, 0.0, 0.0, 0.8, 0.0, 0.0, 0.0, 0.9],
+        ),
+    ] {
+        let u = Universe::new(cx);
+        let all = pairs(&u.sets(false));
+        let mut stats = FeatureStats::default();
+        for &(a, b) in all.iter().step_by(37) {
+            stats.add(&Features::of(u.get(a), u.get(b)));
+        }
+        eprintln!(
+            "{}",
+            stats.report(&format!("the bounded pairs of {}", u.cx.name))
+        );
+        stats.assert_minimums(&min);
     }
 }
 

@@ -42,12 +42,18 @@ fn run<S: Strategy>(
     if let Err(e) = result {
         panic!("{name}: {e}");
     }
-    eprintln!("{}", tally.lock().unwrap().report(&format!("proptest {name}, {n} cases")));
+    eprintln!(
+        "{}",
+        tally
+            .lock()
+            .unwrap()
+            .report(&format!("proptest {name}, {n} cases"))
+    );
 }
 
 #[test]
 fn unary_laws() {
-    run("unary laws", cases(96), strategies::shape(), |t, s| {
+    run("unary laws", cases(256), strategies::shape(), |t, s| {
         laws::unary(t, &s.build())
     });
 }
@@ -55,18 +61,26 @@ fn unary_laws() {
 #[test]
 fn binary_laws_and_membership() {
     let pts = laws::probe_points();
-    run("binary laws", cases(96), strategies::pair(), |t, (a, b)| {
-        let (a, b) = (a.build(), b.build());
-        let out = laws::binary(t, &a, &b)?;
-        laws::membership(t, &a, &b, &out, &pts)
-    });
+    run(
+        "binary laws",
+        cases(192),
+        strategies::pair(),
+        |t, (a, b)| {
+            let (a, b) = (a.build(), b.build());
+            let out = laws::binary(t, &a, &b)?;
+            laws::membership(t, &a, &b, &out, &pts)
+        },
+    );
 }
 
 #[test]
 fn ternary_laws() {
-    run("ternary laws", cases(48), strategies::triple(), |t, (a, b, c)| {
-        laws::ternary(t, &a.build(), &b.build(), &c.build())
-    });
+    run(
+        "ternary laws",
+        cases(96),
+        strategies::triple(),
+        |t, (a, b, c)| laws::ternary(t, &a.build(), &b.build(), &c.build()),
+    );
 }
 
 /// The share of generated pairs showing each degenerate feature, measured on a fixed seed and

@@ -17,11 +17,17 @@ fn cases(default: u64) -> u64 {
 }
 
 fn qc(n: u64) -> QuickCheck {
-    QuickCheck::new().tests(n).max_tests(4 * n).r#gen(Gen::new(16))
+    QuickCheck::new()
+        .tests(n)
+        .max_tests(4 * n)
+        .rng(Gen::new(16))
 }
 
 /// Turn a law check into a quickcheck result, counting into `tally`.
-fn verdict(tally: &Mutex<Tally>, check: impl FnOnce(&mut Tally) -> Result<(), String>) -> TestResult {
+fn verdict(
+    tally: &Mutex<Tally>,
+    check: impl FnOnce(&mut Tally) -> Result<(), String>,
+) -> TestResult {
     let mut t = Tally::default();
     let r = check(&mut t);
     tally.lock().unwrap().merge(&t);
@@ -56,23 +62,41 @@ fn ternary_prop(p: QTriple) -> TestResult {
 
 #[test]
 fn unary_laws() {
-    let n = cases(96);
+    let n = cases(256);
     qc(n).quickcheck(unary_prop as fn(Shape) -> TestResult);
-    eprintln!("{}", UNARY.lock().unwrap().report(&format!("quickcheck unary laws, {n} cases")));
+    eprintln!(
+        "{}",
+        UNARY
+            .lock()
+            .unwrap()
+            .report(&format!("quickcheck unary laws, {n} cases"))
+    );
 }
 
 #[test]
 fn binary_laws_and_membership() {
-    let n = cases(96);
+    let n = cases(192);
     qc(n).quickcheck(binary_prop as fn(QPair) -> TestResult);
-    eprintln!("{}", BINARY.lock().unwrap().report(&format!("quickcheck binary laws, {n} cases")));
+    eprintln!(
+        "{}",
+        BINARY
+            .lock()
+            .unwrap()
+            .report(&format!("quickcheck binary laws, {n} cases"))
+    );
 }
 
 #[test]
 fn ternary_laws() {
-    let n = cases(48);
+    let n = cases(96);
     qc(n).quickcheck(ternary_prop as fn(QTriple) -> TestResult);
-    eprintln!("{}", TERNARY.lock().unwrap().report(&format!("quickcheck ternary laws, {n} cases")));
+    eprintln!(
+        "{}",
+        TERNARY
+            .lock()
+            .unwrap()
+            .report(&format!("quickcheck ternary laws, {n} cases"))
+    );
 }
 
 /// The share of generated pairs showing each degenerate feature, on a fixed seed, bounded
@@ -109,10 +133,13 @@ fn false_law(p: QPair) -> TestResult {
 fn shrinking_yields_small_counterexamples() {
     let r = QuickCheck::new()
         .tests(256)
-        .r#gen(Gen::from_size_and_seed(16, 7))
+        .rng(Gen::from_size_and_seed(16, 7))
         .quicktest(false_law as fn(QPair) -> TestResult);
     assert!(r.is_err(), "the false law was not refuted");
     let QPair(a, b) = LAST_FAILURE.lock().unwrap().clone().unwrap();
     eprintln!("shrunk counterexample: a = {a:?}\n                       b = {b:?}");
-    assert!(a.steps.len() <= 1 && b.steps.len() <= 1, "not shrunk: {a:?} {b:?}");
+    assert!(
+        a.steps.len() <= 1 && b.steps.len() <= 1,
+        "not shrunk: {a:?} {b:?}"
+    );
 }

@@ -43,6 +43,9 @@ use yinset::yin2::{Location, YinSet2};
 
 use super::Y;
 
+/// A vertex in doubled integer coordinates.
+type V = (i64, i64);
+
 /// How a unit cell of the window is cut into pieces.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Split {
@@ -148,7 +151,7 @@ impl Complex {
             }
         }
         assert!(pieces.len() <= 64, "masks are u64");
-        let mut owner: HashMap<((i64, i64), (i64, i64)), usize> = HashMap::new();
+        let mut owner: HashMap<(V, V), usize> = HashMap::new();
         for (p, v) in pieces.iter().enumerate() {
             for k in 0..v.len() {
                 let e = (v[k], v[(k + 1) % v.len()]);
@@ -197,13 +200,18 @@ impl Complex {
     /// 2×2 cells, each cut by the diagonal through the window's centre: eight triangles around
     /// one vertex, where up to four sectors of a set meet (slanted edges, corner contacts).
     pub fn pinwheel() -> Complex {
-        Complex::new("pinwheel (2x2 cells, diagonals through the centre)", 2, 2, |i, j| {
-            if i == j {
-                Split::Slash
-            } else {
-                Split::Backslash
-            }
-        })
+        Complex::new(
+            "pinwheel (2x2 cells, diagonals through the centre)",
+            2,
+            2,
+            |i, j| {
+                if i == j {
+                    Split::Slash
+                } else {
+                    Split::Backslash
+                }
+            },
+        )
     }
 
     /// One cell cut by both diagonals: four triangles meeting at the centre.
@@ -354,7 +362,11 @@ impl Complex {
                     cycle.push(v);
                     v = map[&v];
                 }
-                assert_eq!(cycle.len(), map.len(), "oracle: K–D boundary is not one cycle");
+                assert_eq!(
+                    cycle.len(),
+                    map.len(),
+                    "oracle: K–D boundary is not one cycle"
+                );
                 let positive = dl[n] == d;
                 out.push((cycle, positive));
             }

@@ -34,11 +34,21 @@ pub enum Prim {
     Rect { x: i64, y: i64, w: i64, h: i64 },
     /// The rectangle [x, x+w] × [y, y+h] cut by a diagonal: the three corners other than
     /// corner `drop` (0..4 counterclockwise from lower left).
-    Half { x: i64, y: i64, w: i64, h: i64, drop: u8 },
+    Half {
+        x: i64,
+        y: i64,
+        w: i64,
+        h: i64,
+        drop: u8,
+    },
     /// The square rotated by 45° with centre (x, y) and radius r.
     Diamond { x: i64, y: i64, r: i64 },
     /// A lattice triangle (made non-degenerate and counterclockwise when built).
-    Tri { a: (i64, i64), b: (i64, i64), c: (i64, i64) },
+    Tri {
+        a: (i64, i64),
+        b: (i64, i64),
+        c: (i64, i64),
+    },
     /// The union of the unit cells (x+i, y+j), i, j < 3, whose bit 3j+i is set in `mask`.
     Cells { x: i64, y: i64, mask: u16 },
     /// A square frame at (x, y), given directly by its curves: `kind` 0, the 3×3 square with
@@ -94,7 +104,9 @@ impl Prim {
     /// The primitive's Yin set (one curve, or the cell oracle's curves for `Cells`).
     pub fn yin(&self) -> Y {
         match *self {
-            Prim::Rect { x, y, w, h } => from_ring(vec![(x, y), (x + w, y), (x + w, y + h), (x, y + h)]),
+            Prim::Rect { x, y, w, h } => {
+                from_ring(vec![(x, y), (x + w, y), (x + w, y + h), (x, y + h)])
+            }
             Prim::Half { x, y, w, h, drop } => {
                 let mut c = vec![(x, y), (x + w, y), (x + w, y + h), (x, y + h)];
                 c.remove(drop as usize % 4);
@@ -134,7 +146,10 @@ impl Prim {
             }
             Prim::Cells { x, y, mask } => {
                 let cx = Complex::grid(3, 3);
-                let (dx, dy) = (Rational::from_integer(x.into()), Rational::from_integer(y.into()));
+                let (dx, dy) = (
+                    Rational::from_integer(x.into()),
+                    Rational::from_integer(y.into()),
+                );
                 cx.yin_mapped(Cells::new(mask as u64 & 511, false), &|p| {
                     Point::new(p.x + dx.clone(), p.y + dy.clone())
                 })
@@ -145,15 +160,42 @@ impl Prim {
     /// The same primitive translated by (dx, dy).
     pub fn shifted(&self, dx: i64, dy: i64) -> Prim {
         match self.clone() {
-            Prim::Rect { x, y, w, h } => Prim::Rect { x: x + dx, y: y + dy, w, h },
-            Prim::Half { x, y, w, h, drop } => Prim::Half { x: x + dx, y: y + dy, w, h, drop },
-            Prim::Diamond { x, y, r } => Prim::Diamond { x: x + dx, y: y + dy, r },
+            Prim::Rect { x, y, w, h } => Prim::Rect {
+                x: x + dx,
+                y: y + dy,
+                w,
+                h,
+            },
+            Prim::Half { x, y, w, h, drop } => Prim::Half {
+                x: x + dx,
+                y: y + dy,
+                w,
+                h,
+                drop,
+            },
+            Prim::Diamond { x, y, r } => Prim::Diamond {
+                x: x + dx,
+                y: y + dy,
+                r,
+            },
             Prim::Tri { a, b, c } => {
                 let s = |p: (i64, i64)| (p.0 + dx, p.1 + dy);
-                Prim::Tri { a: s(a), b: s(b), c: s(c) }
+                Prim::Tri {
+                    a: s(a),
+                    b: s(b),
+                    c: s(c),
+                }
             }
-            Prim::Cells { x, y, mask } => Prim::Cells { x: x + dx, y: y + dy, mask },
-            Prim::Frame { x, y, kind } => Prim::Frame { x: x + dx, y: y + dy, kind },
+            Prim::Cells { x, y, mask } => Prim::Cells {
+                x: x + dx,
+                y: y + dy,
+                mask,
+            },
+            Prim::Frame { x, y, kind } => Prim::Frame {
+                x: x + dx,
+                y: y + dy,
+                kind,
+            },
         }
     }
 
@@ -162,47 +204,117 @@ impl Prim {
         let mut v = Vec::new();
         match *self {
             Prim::Rect { x, y, w, h } => {
-                if x > 0 { v.push(Prim::Rect { x: x - 1, y, w, h }); }
-                if y > 0 { v.push(Prim::Rect { x, y: y - 1, w, h }); }
-                if w > 1 { v.push(Prim::Rect { x, y, w: w - 1, h }); }
-                if h > 1 { v.push(Prim::Rect { x, y, w, h: h - 1 }); }
+                if x > 0 {
+                    v.push(Prim::Rect { x: x - 1, y, w, h });
+                }
+                if y > 0 {
+                    v.push(Prim::Rect { x, y: y - 1, w, h });
+                }
+                if w > 1 {
+                    v.push(Prim::Rect { x, y, w: w - 1, h });
+                }
+                if h > 1 {
+                    v.push(Prim::Rect { x, y, w, h: h - 1 });
+                }
             }
             Prim::Half { x, y, w, h, drop } => {
                 v.push(Prim::Rect { x, y, w, h });
-                if x > 0 { v.push(Prim::Half { x: x - 1, y, w, h, drop }); }
-                if y > 0 { v.push(Prim::Half { x, y: y - 1, w, h, drop }); }
-                if w > 1 { v.push(Prim::Half { x, y, w: w - 1, h, drop }); }
-                if h > 1 { v.push(Prim::Half { x, y, w, h: h - 1, drop }); }
+                if x > 0 {
+                    v.push(Prim::Half {
+                        x: x - 1,
+                        y,
+                        w,
+                        h,
+                        drop,
+                    });
+                }
+                if y > 0 {
+                    v.push(Prim::Half {
+                        x,
+                        y: y - 1,
+                        w,
+                        h,
+                        drop,
+                    });
+                }
+                if w > 1 {
+                    v.push(Prim::Half {
+                        x,
+                        y,
+                        w: w - 1,
+                        h,
+                        drop,
+                    });
+                }
+                if h > 1 {
+                    v.push(Prim::Half {
+                        x,
+                        y,
+                        w,
+                        h: h - 1,
+                        drop,
+                    });
+                }
             }
             Prim::Diamond { x, y, r } => {
-                if r > 1 { v.push(Prim::Diamond { x, y, r: r - 1 }); }
-                if x > r { v.push(Prim::Diamond { x: x - 1, y, r }); }
-                if y > r { v.push(Prim::Diamond { x, y: y - 1, r }); }
+                if r > 1 {
+                    v.push(Prim::Diamond { x, y, r: r - 1 });
+                }
+                if x > r {
+                    v.push(Prim::Diamond { x: x - 1, y, r });
+                }
+                if y > r {
+                    v.push(Prim::Diamond { x, y: y - 1, r });
+                }
             }
             Prim::Tri { a, b, c } => {
-                v.push(Prim::Half { x: 0, y: 0, w: 1, h: 1, drop: 2 });
+                v.push(Prim::Half {
+                    x: 0,
+                    y: 0,
+                    w: 1,
+                    h: 1,
+                    drop: 2,
+                });
                 for (k, p) in [a, b, c].into_iter().enumerate() {
                     for q in [(p.0 - 1, p.1), (p.0, p.1 - 1)] {
                         if q.0 >= 0 && q.1 >= 0 {
                             let mut t = [a, b, c];
                             t[k] = q;
-                            v.push(Prim::Tri { a: t[0], b: t[1], c: t[2] });
+                            v.push(Prim::Tri {
+                                a: t[0],
+                                b: t[1],
+                                c: t[2],
+                            });
                         }
                     }
                 }
             }
             Prim::Frame { x, y, kind } => {
                 v.push(Prim::Rect { x, y, w: 1, h: 1 });
-                if kind % 4 != 0 { v.push(Prim::Frame { x, y, kind: 0 }); }
-                if x > 0 { v.push(Prim::Frame { x: x - 1, y, kind }); }
-                if y > 0 { v.push(Prim::Frame { x, y: y - 1, kind }); }
+                if kind % 4 != 0 {
+                    v.push(Prim::Frame { x, y, kind: 0 });
+                }
+                if x > 0 {
+                    v.push(Prim::Frame { x: x - 1, y, kind });
+                }
+                if y > 0 {
+                    v.push(Prim::Frame { x, y: y - 1, kind });
+                }
             }
             Prim::Cells { x, y, mask } => {
-                if x > 0 { v.push(Prim::Cells { x: x - 1, y, mask }); }
-                if y > 0 { v.push(Prim::Cells { x, y: y - 1, mask }); }
+                if x > 0 {
+                    v.push(Prim::Cells { x: x - 1, y, mask });
+                }
+                if y > 0 {
+                    v.push(Prim::Cells { x, y: y - 1, mask });
+                }
                 for b in 0..9 {
                     if mask >> b & 1 == 1 && mask & !(1 << b) != 0 {
-                        v.push(Prim::Cells { x, y, mask: mask & !(1 << b) });
+                        v.push(Prim::Cells {
+                            x,
+                            y,
+                            mask: mask & !(1 << b),
+                        });
                     }
                 }
             }
@@ -220,7 +332,8 @@ fn fix_triangle(
     if a == b {
         b.0 += 1;
     }
-    let cross = |b: (i64, i64), c: (i64, i64)| (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+    let cross =
+        |b: (i64, i64), c: (i64, i64)| (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
     if cross(b, c) == 0 {
         if a.0 == b.0 {
             c.0 += 1;
@@ -241,7 +354,11 @@ impl Shape {
         let mut acc: Y = YinSet2::empty();
         for s in &self.steps {
             let p = s.prim.yin();
-            acc = if s.add { acc.join(&p) } else { acc.difference(&p) };
+            acc = if s.add {
+                acc.join(&p)
+            } else {
+                acc.difference(&p)
+            };
         }
         if self.complement {
             acc.complement()
@@ -273,7 +390,10 @@ impl Shape {
     pub fn shrink_shape(&self) -> Vec<Shape> {
         let mut v = Vec::new();
         if self.complement {
-            v.push(Shape { steps: self.steps.clone(), complement: false });
+            v.push(Shape {
+                steps: self.steps.clone(),
+                complement: false,
+            });
         }
         for k in 0..self.steps.len() {
             let mut s = self.clone();
@@ -385,7 +505,12 @@ impl Arbitrary for Prim {
     fn arbitrary(g: &mut Gen) -> Prim {
         let r = |g: &mut Gen, lo, hi| qc_range(g, lo, hi);
         match r(g, 0, 9) {
-            0..=2 => Prim::Rect { x: r(g, 0, GRID - 1), y: r(g, 0, GRID - 1), w: r(g, 1, 3), h: r(g, 1, 3) },
+            0..=2 => Prim::Rect {
+                x: r(g, 0, GRID - 1),
+                y: r(g, 0, GRID - 1),
+                w: r(g, 1, 3),
+                h: r(g, 1, 3),
+            },
             3..=4 => Prim::Half {
                 x: r(g, 0, GRID - 1),
                 y: r(g, 0, GRID - 1),
@@ -393,14 +518,26 @@ impl Arbitrary for Prim {
                 h: r(g, 1, 3),
                 drop: r(g, 0, 3) as u8,
             },
-            5 => Prim::Diamond { x: r(g, 1, GRID - 1), y: r(g, 1, GRID - 1), r: r(g, 1, 2) },
+            5 => Prim::Diamond {
+                x: r(g, 1, GRID - 1),
+                y: r(g, 1, GRID - 1),
+                r: r(g, 1, 2),
+            },
             6 => Prim::Tri {
                 a: (r(g, 0, GRID), r(g, 0, GRID)),
                 b: (r(g, 0, GRID), r(g, 0, GRID)),
                 c: (r(g, 0, GRID), r(g, 0, GRID)),
             },
-            7..=8 => Prim::Cells { x: r(g, 0, 3), y: r(g, 0, 3), mask: r(g, 1, 511) as u16 },
-            _ => Prim::Frame { x: r(g, 0, 2), y: r(g, 0, 2), kind: r(g, 0, 3) as u8 },
+            7..=8 => Prim::Cells {
+                x: r(g, 0, 3),
+                y: r(g, 0, 3),
+                mask: r(g, 1, 511) as u16,
+            },
+            _ => Prim::Frame {
+                x: r(g, 0, 2),
+                y: r(g, 0, 2),
+                kind: r(g, 0, 3) as u8,
+            },
         }
     }
 
@@ -411,7 +548,10 @@ impl Arbitrary for Prim {
 
 impl Arbitrary for Step {
     fn arbitrary(g: &mut Gen) -> Step {
-        Step { add: qc_bool(g, 0.7), prim: Prim::arbitrary(g) }
+        Step {
+            add: qc_bool(g, 0.7),
+            prim: Prim::arbitrary(g),
+        }
     }
 }
 
@@ -443,11 +583,21 @@ fn qc_related(g: &mut Gen, a: &Shape) -> Shape {
         _ => {}
     }
     let k = qc_range(g, 1, 3) as usize;
-    let shift = if qc_bool(g, 0.6) { (0, 0) } else { (qc_range(g, -1, 1), qc_range(g, -1, 1)) };
+    let shift = if qc_bool(g, 0.6) {
+        (0, 0)
+    } else {
+        (qc_range(g, -1, 1), qc_range(g, -1, 1))
+    };
     let d = Derive {
-        keep: (0..k).map(|_| (qc_range(g, 0, 3) as usize, qc_bool(g, 0.3))).collect(),
+        keep: (0..k)
+            .map(|_| (qc_range(g, 0, 3) as usize, qc_bool(g, 0.3)))
+            .collect(),
         shift,
-        extra: if qc_bool(g, 0.5) { vec![Step::arbitrary(g)] } else { vec![] },
+        extra: if qc_bool(g, 0.5) {
+            vec![Step::arbitrary(g)]
+        } else {
+            vec![]
+        },
         complement: qc_bool(g, 0.25),
     };
     a.derive(&d)
@@ -470,8 +620,16 @@ impl Arbitrary for QPair {
 
     fn shrink(&self) -> Box<dyn Iterator<Item = QPair>> {
         let (a, b) = (self.0.clone(), self.1.clone());
-        let first: Vec<QPair> = a.shrink_shape().into_iter().map(|x| QPair(x, b.clone())).collect();
-        let second: Vec<QPair> = b.shrink_shape().into_iter().map(|y| QPair(a.clone(), y)).collect();
+        let first: Vec<QPair> = a
+            .shrink_shape()
+            .into_iter()
+            .map(|x| QPair(x, b.clone()))
+            .collect();
+        let second: Vec<QPair> = b
+            .shrink_shape()
+            .into_iter()
+            .map(|y| QPair(a.clone(), y))
+            .collect();
         Box::new(first.into_iter().chain(second))
     }
 }
@@ -487,9 +645,21 @@ impl Arbitrary for QTriple {
     fn shrink(&self) -> Box<dyn Iterator<Item = QTriple>> {
         let (a, b, c) = (self.0.clone(), self.1.clone(), self.2.clone());
         let mut v: Vec<QTriple> = Vec::new();
-        v.extend(a.shrink_shape().into_iter().map(|x| QTriple(x, b.clone(), c.clone())));
-        v.extend(b.shrink_shape().into_iter().map(|y| QTriple(a.clone(), y, c.clone())));
-        v.extend(c.shrink_shape().into_iter().map(|z| QTriple(a.clone(), b.clone(), z)));
+        v.extend(
+            a.shrink_shape()
+                .into_iter()
+                .map(|x| QTriple(x, b.clone(), c.clone())),
+        );
+        v.extend(
+            b.shrink_shape()
+                .into_iter()
+                .map(|y| QTriple(a.clone(), y, c.clone())),
+        );
+        v.extend(
+            c.shrink_shape()
+                .into_iter()
+                .map(|z| QTriple(a.clone(), b.clone(), z)),
+        );
         Box::new(v.into_iter())
     }
 }
@@ -564,7 +734,10 @@ impl Features {
     pub fn of(a: &Y, b: &Y) -> Features {
         let mut f = Features::default();
         let verts = |y: &Y| -> HashSet<Point<Rational>> {
-            y.curves().iter().flat_map(|c| c.vertices().iter().cloned()).collect()
+            y.curves()
+                .iter()
+                .flat_map(|c| c.vertices().iter().cloned())
+                .collect()
         };
         f.shared_vertex = !verts(a).is_disjoint(&verts(b));
         let edges = |y: &Y| -> Vec<(Point<Rational>, Point<Rational>)> {
@@ -625,9 +798,10 @@ impl Features {
                 .any(|(i, p)| pos[i] && p.is_some_and(|p| !pos[p]));
             f.unbounded |= !y.is_bounded();
             f.trivial |= y.is_empty() || y.is_full();
-            f.slanted |= y.curves().iter().any(|c| {
-                c.edges().any(|(p, q)| p.x != q.x && p.y != q.y)
-            });
+            f.slanted |= y
+                .curves()
+                .iter()
+                .any(|c| c.edges().any(|(p, q)| p.x != q.x && p.y != q.y));
         }
         f
     }
@@ -653,9 +827,17 @@ impl FeatureStats {
     }
 
     pub fn report(&self, who: &str) -> String {
-        let mut s = format!("degenerate-case statistics of {who} over {} pairs:\n", self.pairs);
+        let mut s = format!(
+            "degenerate-case statistics of {who} over {} pairs:\n",
+            self.pairs
+        );
         for (k, name) in FEATURE_NAMES.iter().enumerate() {
-            s += &format!("  {:<42} {:>5.1}%  ({})\n", name, 100.0 * self.share(k), self.counts[k]);
+            s += &format!(
+                "  {:<42} {:>5.1}%  ({})\n",
+                name,
+                100.0 * self.share(k),
+                self.counts[k]
+            );
         }
         s
     }

@@ -115,7 +115,9 @@ pub fn unary(t: &mut Tally, a: &Y) -> Res {
         (8, ok(na.complement(), "a''")?, a),
     ];
     for (k, l, r) in &cases {
-        law(t, UNARY_LAWS[*k], l == *r, || format!("a = {}{}", show(a), neq(l, r)))?;
+        law(t, UNARY_LAWS[*k], l == *r, || {
+            format!("a = {}{}", show(a), neq(l, r))
+        })?;
     }
     Ok(())
 }
@@ -157,12 +159,17 @@ pub fn binary(t: &mut Tally, a: &Y, b: &Y) -> Result<BinaryOut, String> {
         (5, ok(j.complement(), "(a∨b)'")?, ok(na.meet(&nb), "a'∧b'")?),
     ];
     for (k, l, r) in &cases {
-        law(t, BINARY_LAWS[*k], l == r, || format!("{}{}", ab(), neq(l, r)))?;
+        law(t, BINARY_LAWS[*k], l == r, || {
+            format!("{}{}", ab(), neq(l, r))
+        })?;
     }
     let le_meet = m == *a;
-    law(t, BINARY_LAWS[6], le_meet == (j == *b) && le_meet == a.is_subset(b), || {
-        format!("{}: a∧b = a is {le_meet}, a∨b = b is {}", ab(), j == *b)
-    })?;
+    law(
+        t,
+        BINARY_LAWS[6],
+        le_meet == (j == *b) && le_meet == a.is_subset(b),
+        || format!("{}: a∧b = a is {le_meet}, a∨b = b is {}", ab(), j == *b),
+    )?;
     let d = ok(a.difference(b), "a∖b")?;
     if let (Some(x), Some(y)) = (a.area(), b.area()) {
         let (am, aj, ad) = (m.area(), j.area(), d.area());
@@ -203,13 +210,31 @@ pub fn ternary(t: &mut Tally, a: &Y, b: &Y, c: &Y) -> Res {
     let (bc_m, bc_j) = (ok(b.meet(c), "b∧c")?, ok(b.join(c), "b∨c")?);
     let (ac_m, ac_j) = (ok(a.meet(c), "a∧c")?, ok(a.join(c), "a∨c")?);
     let cases: [(usize, Y, Y); 4] = [
-        (0, ok(ab_m.meet(c), "(a∧b)∧c")?, ok(a.meet(&bc_m), "a∧(b∧c)")?),
-        (1, ok(ab_j.join(c), "(a∨b)∨c")?, ok(a.join(&bc_j), "a∨(b∨c)")?),
-        (2, ok(a.meet(&bc_j), "a∧(b∨c)")?, ok(ab_m.join(&ac_m), "(a∧b)∨(a∧c)")?),
-        (3, ok(a.join(&bc_m), "a∨(b∧c)")?, ok(ab_j.meet(&ac_j), "(a∨b)∧(a∨c)")?),
+        (
+            0,
+            ok(ab_m.meet(c), "(a∧b)∧c")?,
+            ok(a.meet(&bc_m), "a∧(b∧c)")?,
+        ),
+        (
+            1,
+            ok(ab_j.join(c), "(a∨b)∨c")?,
+            ok(a.join(&bc_j), "a∨(b∨c)")?,
+        ),
+        (
+            2,
+            ok(a.meet(&bc_j), "a∧(b∨c)")?,
+            ok(ab_m.join(&ac_m), "(a∧b)∨(a∧c)")?,
+        ),
+        (
+            3,
+            ok(a.join(&bc_m), "a∨(b∧c)")?,
+            ok(ab_j.meet(&ac_j), "(a∨b)∧(a∨c)")?,
+        ),
     ];
     for (k, l, r) in &cases {
-        law(t, TERNARY_LAWS[*k], l == r, || format!("{}{}", abc(), neq(l, r)))?;
+        law(t, TERNARY_LAWS[*k], l == r, || {
+            format!("{}{}", abc(), neq(l, r))
+        })?;
     }
     Ok(())
 }
@@ -291,17 +316,30 @@ pub fn cells_check(t: &mut Tally, cx: &Complex, s: Cells, y: &Y, expected: &Y, w
     law(
         t,
         CELL_ORACLE[1],
-        got.components == want.components && holes == want.holes_sorted && got.total_holes == want.total_holes,
-        || format!("{what} on {} ({s:?}): kernel {got:?}, expected {want:?}", cx.name),
+        got.components == want.components
+            && holes == want.holes_sorted
+            && got.total_holes == want.total_holes,
+        || {
+            format!(
+                "{what} on {} ({s:?}): kernel {got:?}, expected {want:?}",
+                cx.name
+            )
+        },
     )?;
     let (ga, wa) = (y.area(), cx.area(s));
     law(t, CELL_ORACLE[2], ga == wa, || {
-        format!("{what} on {} ({s:?}): area {ga:?}, expected {wa:?}", cx.name)
+        format!(
+            "{what} on {} ({s:?}): area {ga:?}, expected {wa:?}",
+            cx.name
+        )
     })?;
     let pts: Vec<_> = cx.probes().into_iter().map(|(_, p)| p).collect();
     let (gl, wl) = (y.locate(&pts), cx.expected_locations(s));
     law(t, CELL_ORACLE[3], gl == wl, || {
-        format!("{what} on {} ({s:?}): located {gl:?}, expected {wl:?}", cx.name)
+        format!(
+            "{what} on {} ({s:?}): located {gl:?}, expected {wl:?}",
+            cx.name
+        )
     })
 }
 
@@ -326,7 +364,10 @@ pub fn cells_binary(
         cells_check(t, cx, s, y, &expected(s), what)?;
     }
     let order = out.meet == expected(a);
-    law(t, "cells: a∧b = a ⇔ mask(a) ⊆ mask(b)", order == a.le(b), || {
-        format!("on {}: a = {a:?}, b = {b:?}", cx.name)
-    })
+    law(
+        t,
+        "cells: a∧b = a ⇔ mask(a) ⊆ mask(b)",
+        order == a.le(b),
+        || format!("on {}: a = {a:?}, b = {b:?}", cx.name),
+    )
 }

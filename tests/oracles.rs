@@ -1,0 +1,282 @@
+//! Independent oracles for the kernel's Boolean operations, exactly:
+//!
+//! * unions of grid cells (and of triangles cutting the cells), whose Boolean algebra is bitwise
+//!   on masks: the expected Yin set is traced from the mask without the kernel's operations, the
+//!   expected Betti numbers are flood-fill counts (tests/common/cells.rs documents why edge
+//!   adjacency is the right connectivity for the set and for its complement);
+//! * point membership: for random points off the boundaries,
+//!   locate(p, A op B) = locate(p, A) op locate(p, B);
+//! * exact area identities, also for unbounded sets (measured inside a window W).
+//!
+//! Case counts: `AXIOM_CASES` (default below).
+
+mod common;
+use common::cells::{full_mask, Cells, Complex, Split};
+use common::gen::strategies;
+use common::laws::{self, law, ok, Tally};
+use common::Y;
+use proptest::prelude::*;
+use proptest::test_runner::{Config, TestCaseError, TestRunner};
+use std::sync::Mutex;
+use yinset::kernel::Point;
+use yinset::num::Rational;
+use yinset::yin2::YinSet2;
+
+fn cases(default: u32) -> u32 {
+    std::env::var("AXIOM_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default)
+}
+
+fn run<S: Strategy>(
+    name: &str,
+    n: u32,
+    strategy: S,
+    check: impl Fn(&mut Tally, S::Value) -> Result<(), String>,
+) where
+    S::Value: Clone + std::fmt::Debug,
+{
+    let tally = Mutex::new(Tally::default());
+    let mut runner = TestRunner::new(Config {
+        cases: n,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let result = runner.run(&strategy, |v| {
+        let mut t = Tally::default();
+        let r = check(&mut t, v);
+        tally.lock().unwrap().merge(&t);
+        r.map_err(TestCaseError::fail)
+    });
+    if let Err(e) = result {
+        panic!("{name}: {e}");
+    }
+    eprintln!(
+        "{}",
+        tally.lock().unwrap().report(&format!("{name}, {n} cases"))
+    );
+}
+
+/// The subdivisions of the random cell oracle: larger than the exhaustive universes of
+/// proofs/, so that islands inside holes, nested holes and long pinched chains occur.
+fn complexes() -> Vec<Complex> {
+    vec![
+        Complex::grid(5, 5),
+        Complex::mixed(),
+        Complex::new("3x3 cells, all cut by both diagonals", 3, 3, |_, _| {
+            Split::Cross
+        }),
+        Complex::new("4x4 cells, alternating diagonals", 4, 4, |i, j| {
+            if (i + j) % 2 == 0 {
+                Split::Slash
+            } else {
+                Split::Backslash
+            }
+        }),
+    ]
+}
+
+/// A random union of pieces, with a density drawn first so that sparse, dense and half-full
+/// masks all occur.
+fn cells_strategy(n: usize) -> impl Strategy<Value = Cells> {
+    (
+        proptest::collection::vec(0..100u8, n),
+        0..100u8,
+        proptest::bool::weighted(0.2),
+    )
+        .prop_map(|(coins, density, outside)| {
+            let mask = coins
+                .iter()
+                .enumerate()
+                .filter(|(_, &c)| c < density)
+                .fold(0u64, |m, (k, _)| m | 1 << k);
+            Cells::new(mask, outside)
+        })
+}
+
+#[test]
+fn grid_cell_oracle() {
+    for cx in complexes() {
+        let n = cx.len();
+        let name = format!("cell oracle on {} ({n} pieces)", cx.name);
+        run(
+            &name,
+            cases(64),
+            (cells_strategy(n), cells_strategy(n)),
+            |t, (a, b)| {
+                let (ya, yb) = (cx.yin(a), cx.yin(b));
+                laws::cells_check(t, &cx, a, &ya, &ya, "a")?;
+                let out = laws::binary(t, &ya, &yb)?;
+                laws::cells_binary(t, &cx, (a, b), &out, &|s| cx.yin(s))
+            },
+        );
+    }
+}
+
+/// The cell oracle after an affine map with non-integer rational coefficients: coordinates are
+/// no longer small integers, and the kernel must still agree exactly.
+#[test]
+fn grid_cell_oracle_in_rational_coordinates() {
+    let cx = Complex::mixed();
+    let n = cx.len();
+    let s = Rational::new(3.into(), 7.into());
+    let (dx, dy) = (
+        Rational::new((-5).into(), 3.into()),
+        Rational::new(2.into(), 11.into()),
+    );
+    let map = move |p: Point<Rational>| {
+        Point::new(p.x * s.clone() + dx.clone(), p.y * s.clone() + dy.clone())
+    };
+    let area_scale = Rational::new(9.into(), 49.into());
+    run(
+        "cell oracle in rational coordinates",
+        cases(48),
+        (cells_strategy(n), cells_strategy(n)),
+        |t, (a, b)| {
+            let (ya, yb) = (cx.yin_mapped(a, &map), cx.yin_mapped(b, &map));
+            let cases: [(&str, Cells, Y); 5] = [
+                ("a∧b", a.and(b), ok(ya.meet(&yb), "a∧b")?),
+                ("a∨b", a.or(b), ok(ya.join(&yb), "a∨b")?),
+                ("a∖b", a.minus(b, n), ok(ya.difference(&yb), "a∖b")?),
+                ("a⊕b", a.xor(b), ok(ya.symmetric_difference(&yb), "a⊕b")?),
+                ("a'", a.not(n), ok(ya.complement(), "a'")?),
+            ];
+            for (what, s, y) in cases {
+                let want = cx.yin_mapped(s, &map);
+                law(t, laws::CELL_ORACLE[0], y == want, || {
+                    format!("{what}: {s:?}")
+                })?;
+                let (got, exp) = (y.betti(), cx.betti(s));
+                let mut holes = got.holes.clone();
+                holes.sort_unstable();
+                law(
+                    t,
+                    laws::CELL_ORACLE[1],
+                    got.components == exp.components && holes == exp.holes_sorted,
+                    || format!("{what}: {got:?} vs {exp:?}"),
+                )?;
+                let want_area = cx.area(s).map(|x| x * area_scale.clone());
+                law(t, laws::CELL_ORACLE[2], y.area() == want_area, || {
+                    format!("{what}: area {:?} vs {want_area:?}", y.area())
+                })?;
+            }
+            Ok(())
+        },
+    );
+}
+
+/// Random points with rational coordinates (denominator 97, so rarely on a boundary).
+fn points() -> impl Strategy<Value = Vec<Point<Rational>>> {
+    proptest::collection::vec((-200..1000i64, -200..1000i64), 64).prop_map(|v| {
+        v.into_iter()
+            .map(|(x, y)| {
+                Point::new(
+                    Rational::new(x.into(), 97.into()),
+                    Rational::new(y.into(), 97.into()),
+                )
+            })
+            .collect()
+    })
+}
+
+#[test]
+fn membership_oracle() {
+    run(
+        "membership oracle at random points",
+        cases(96),
+        (strategies::pair(), points()),
+        |t, ((a, b), pts)| {
+            let (a, b) = (a.build(), b.build());
+            let out = laws::binary(t, &a, &b)?;
+            laws::membership(t, &a, &b, &out, &pts)
+        },
+    );
+}
+
+const AREA: [&str; 4] = [
+    "area in W: |(a∧b)∧W| + |(a∨b)∧W| = |a∧W| + |b∧W|",
+    "area in W: |(a∖b)∧W| = |a∧W| − |(a∧b)∧W|",
+    "area in W: |a'∧W| = |W| − |a∧W|",
+    "area in W: |(a⊕b)∧W| = |a∧W| + |b∧W| − 2|(a∧b)∧W|",
+];
+
+/// The exact area identities for every pair, bounded or not: areas are measured inside a window
+/// W that contains every generated boundary (for bounded a and b the plain identities are
+/// checked by the binary laws).
+#[test]
+fn exact_area_identities() {
+    let w: Y = YinSet2::from_curves(vec![vec![
+        Point::int(-3, -3),
+        Point::int(11, -3),
+        Point::int(11, 11),
+        Point::int(-3, 11),
+    ]])
+    .unwrap();
+    let aw = w.area().unwrap();
+    run(
+        "exact area identities",
+        cases(96),
+        strategies::pair(),
+        |t, (a, b)| {
+            let (a, b) = (a.build(), b.build());
+            let area = |y: Y, what: &str| -> Result<Rational, String> {
+                Ok(ok(y.meet(&w), what)?.area().expect("bounded by W"))
+            };
+            let m = ok(a.meet(&b), "a∧b")?;
+            let (am, aa, ab) = (
+                area(m, "(a∧b)∧W")?,
+                area(a.clone(), "a∧W")?,
+                area(b.clone(), "b∧W")?,
+            );
+            let aj = area(ok(a.join(&b), "a∨b")?, "(a∨b)∧W")?;
+            let ad = area(ok(a.difference(&b), "a∖b")?, "(a∖b)∧W")?;
+            let ac = area(ok(a.complement(), "a'")?, "a'∧W")?;
+            let ax = area(ok(a.symmetric_difference(&b), "a⊕b")?, "(a⊕b)∧W")?;
+            let two = Rational::from_integer(2.into());
+            law(
+                t,
+                AREA[0],
+                am.clone() + aj.clone() == aa.clone() + ab.clone(),
+                || format!("{am} + {aj} ≠ {aa} + {ab}"),
+            )?;
+            law(t, AREA[1], ad == aa.clone() - am.clone(), || {
+                format!("{ad} ≠ {aa} − {am}")
+            })?;
+            law(t, AREA[2], ac == aw.clone() - aa.clone(), || {
+                format!("{ac} ≠ |W| − {aa}")
+            })?;
+            law(
+                t,
+                AREA[3],
+                ax == aa.clone() + ab.clone() - two * am.clone(),
+                || format!("{ax} ≠ {aa} + {ab} − 2·{am}"),
+            )
+        },
+    );
+}
+
+/// The oracle is not vacuous: it distinguishes the cases the kernel must get right (a corner
+/// contact splits components; a hole pinched against the outer curve counts as a hole).
+#[test]
+fn cell_oracle_counts_by_edge_adjacency() {
+    let g = Complex::grid(3, 3);
+    let bit = |i: u64, j: u64| 1u64 << (3 * j + i);
+    // Two cells touching at a corner: two components.
+    let diag = Cells::new(bit(0, 0) | bit(1, 1), false);
+    assert_eq!(g.betti(diag).components, 2);
+    assert_eq!(g.curves(diag).len(), 2);
+    // The ring of 8 cells around the centre: one component with one hole.
+    let ring = Cells::new(full_mask(9) & !bit(1, 1), false);
+    assert_eq!(g.betti(ring).holes_sorted, vec![1]);
+    // Remove a corner as well: the hole (the centre) touches the outside at a point, and is
+    // still a hole (its own negatively oriented curve, seed 000 Cor. 3.14).
+    let pinched = Cells::new(ring.mask & !bit(2, 2), false);
+    assert_eq!(g.betti(pinched).holes_sorted, vec![1]);
+    let y = g.yin(pinched);
+    assert_eq!(y.betti().total_holes, 1);
+    // Its complement: two components (the outside and the centre cell), touching at (2, 2).
+    let c = g.betti(pinched.not(9));
+    assert_eq!(c.components, 2);
+    assert_eq!(y.complement(), g.yin(pinched.not(9)));
+}
