@@ -144,11 +144,14 @@ impl Num for Float {
             y: q[1].0,
         };
         let det = robust::orient2d(p(a), p(b), p(c));
-        let len = (b[0].0 - a[0].0).hypot(b[1].0 - a[1].0);
-        if det.abs() <= ctx.eps * len {
+        // |det| / |b − a| is the distance of c from the line: Equal when within ε.
+        let (dx, dy) = (b[0].0 - a[0].0, b[1].0 - a[1].0);
+        if det == 0.0 || (ctx.eps > 0.0 && det * det <= ctx.eps * ctx.eps * (dx * dx + dy * dy)) {
             Ordering::Equal
+        } else if det > 0.0 {
+            Ordering::Greater
         } else {
-            det.total_cmp(&0.0)
+            Ordering::Less
         }
     }
 
@@ -181,6 +184,23 @@ mod tests {
     fn negative_zero_is_zero() {
         assert_eq!(Float::new(-0.0), Float::new(0.0));
         assert_eq!(Float::new(0.0) * Float::new(-1.0), Float::new(0.0));
+    }
+
+    #[test]
+    fn negative_zero_determinant_is_collinear() {
+        let f = Float::new;
+        let (a, b) = (
+            [&f(1.2843602), &f(3.8413011)],
+            [&f(1.2854123), &f(3.774248)],
+        );
+        assert_eq!(
+            Float::orient2d(a, b, b, &Tolerance::default()),
+            Ordering::Equal
+        );
+        assert_eq!(
+            Float::orient2d(b, a, a, &Tolerance::default()),
+            Ordering::Equal
+        );
     }
 
     #[test]
