@@ -60,19 +60,9 @@ impl Num for GmpRational {
     }
 
     fn from_literal(lit: &Literal) -> Self {
+        let (num, den) = lit.fraction();
         let parse = |s: &str| Integer::from_str_radix(s, 10).unwrap_or_default();
-        let mut num = parse(&lit.digits);
-        let mut den = parse(&lit.den);
-        let pow = Integer::from(Integer::u_pow_u(10, lit.exp10.unsigned_abs() as u32));
-        if lit.exp10 >= 0 {
-            num *= pow;
-        } else {
-            den *= pow;
-        }
-        if lit.negative {
-            num = -num;
-        }
-        GmpRational(Rational::from((num, den)))
+        GmpRational(Rational::from((parse(&num), parse(&den))))
     }
 
     fn to_f64(&self) -> f64 {

@@ -19,6 +19,21 @@ pub struct Literal {
 }
 
 impl Literal {
+    /// The value as a fraction of two decimal integer strings: the signed numerator and the
+    /// positive denominator, with the power of ten written out (at most `MAX_EXPONENT` zeros).
+    pub fn fraction(&self) -> (String, String) {
+        let zeros = "0".repeat(self.exp10.unsigned_abs() as usize);
+        let sign = if self.negative { "-" } else { "" };
+        if self.exp10 >= 0 {
+            (format!("{sign}{}{zeros}", self.digits), self.den.clone())
+        } else {
+            (
+                format!("{sign}{}", self.digits),
+                format!("{}{zeros}", self.den),
+            )
+        }
+    }
+
     /// Parse "12", "-4.5040114e+00", ".5", "1/3", "-7/2" exactly.
     pub fn parse(text: &str) -> Result<Literal, NumError> {
         let s = text.trim();

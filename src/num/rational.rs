@@ -8,7 +8,7 @@ use std::cmp::Ordering;
 /// Exact rational coordinates (the default backend).
 pub type Rational = num_rational::BigRational;
 
-/// The big integer of a string of decimal digits (checked by [`Literal::parse`]).
+/// The big integer of a signed string of decimal digits (checked by [`Literal::parse`]).
 fn digits(s: &str) -> BigInt {
     BigInt::parse_bytes(s.as_bytes(), 10).unwrap_or_default()
 }
@@ -26,18 +26,8 @@ impl Num for Rational {
     }
 
     fn from_literal(lit: &Literal) -> Self {
-        let mut num = digits(&lit.digits);
-        let mut den = digits(&lit.den);
-        let pow = num_traits::pow(BigInt::from(10), lit.exp10.unsigned_abs() as usize);
-        if lit.exp10 >= 0 {
-            num *= pow;
-        } else {
-            den *= pow;
-        }
-        if lit.negative {
-            num = -num;
-        }
-        Rational::new(num, den)
+        let (num, den) = lit.fraction();
+        Rational::new(digits(&num), digits(&den))
     }
 
     fn to_f64(&self) -> f64 {
