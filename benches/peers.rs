@@ -1,0 +1,3 @@
+//! Criterion benches of yinset against its peers (issue 8): being written.
+
+fn main() {}
