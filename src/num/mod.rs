@@ -130,19 +130,18 @@ pub trait Num:
     }
 }
 
-/// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within relative
-/// error 2⁻⁵³ of the exact ones, if the error bound proves it; `None` if it cannot decide.
+/// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within 3 ulps of
+/// the exact ones, if the error bound proves it; `None` if it cannot decide.
 ///
-/// With M the largest magnitude and conversions within 2 ulps, each coordinate is off by at most
-/// 2M·u (u = 2⁻⁵³), each difference by 6M·u, each product by 26M²·u, the determinant by
-/// 53M²·u; 128M²·u is safe.
+/// With M the largest magnitude and u = 2⁻⁵³, each coordinate is off by at most 3M·u, each
+/// difference by 8M·u, each product by 35M²·u, the determinant by 71M²·u; 256M²·u is safe.
 pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
     let m = [a[0], a[1], b[0], b[1], c[0], c[1]]
         .iter()
         .fold(0.0f64, |m, v| m.max(v.abs()));
     let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    let bound = 128.0 * m * m * f64::EPSILON * 0.5;
-    if !det.is_finite() || !bound.is_finite() || m < 1e-140 {
+    let bound = 256.0 * m * m * f64::EPSILON * 0.5;
+    if !det.is_finite() || !bound.is_finite() || m.is_nan() || m < 1e-140 {
         return None;
     }
     if det > bound {

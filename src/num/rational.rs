@@ -13,6 +13,14 @@ fn digits(s: &str) -> BigInt {
     BigInt::parse_bytes(s.as_bytes(), 10).unwrap_or_default()
 }
 
+/// `v` within 3 ulps (numerator and denominator rounded, then divided: cheaper than the
+/// correctly rounded `to_f64`); NaN or infinite when out of range, which the filter rejects.
+fn approx(v: &Rational) -> f64 {
+    let n = ToPrimitive::to_f64(v.numer()).unwrap_or(f64::NAN);
+    let d = ToPrimitive::to_f64(v.denom()).unwrap_or(f64::NAN);
+    n / d
+}
+
 impl Num for Rational {
     type Ctx = ();
     const EXACT: bool = true;
@@ -45,7 +53,7 @@ impl Num for Rational {
     }
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
-        let f = |p: [&Self; 2]| [Num::to_f64(p[0]), Num::to_f64(p[1])];
+        let f = |p: [&Self; 2]| [approx(p[0]), approx(p[1])];
         filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| exact_orient(a, b, c))
     }
 }

@@ -14,6 +14,9 @@
 //! every exterior counterclockwise and every hole clockwise (as GeoJSON RFC 7946 asks) and use
 //! [`FillRule::NonZero`].
 //!
+//! Float mode (a context with an ε-grid) hands the ring edges to the snap rounding of the
+//! `snap` module, which applies the same rule to the snapped arrangement.
+//!
 //! Cost: O((n + I) log n) for n ring edges with I contacts (two sweeps: contacts, then the
 //! winding numbers of the P ≤ n + 2I pieces' sides).
 
@@ -23,6 +26,7 @@ use super::intersect::Edge;
 use super::locate::first_above;
 use super::paste::Segmented;
 use super::set::YinSet2;
+use super::snap::regularize;
 use crate::kernel::Point;
 use crate::num::Num;
 use std::collections::BTreeMap;
@@ -100,6 +104,11 @@ impl<N: Num> YinSet2<N> {
             .fold(0.0, f64::max);
         let ctx = N::resolve_ctx(ctx, extent);
         let edges = ring_edges(&rings);
+        if let Some(spacing) = N::grid(&ctx) {
+            // Float mode: the same rule after snap rounding to the ε-grid (seed 000 §5.2).
+            let labelled: Vec<(Edge<N>, usize)> = edges.into_iter().map(|e| (e, 0)).collect();
+            return Ok(regularize(&labelled, spacing, ctx, |w| rule.inside(w[0])));
+        }
         let mut g = Segmented::new();
         let pieces = merged_pieces(&edges, &mut g, &ctx);
         for (piece, left) in pieces.iter().zip(left_windings(&pieces, &ctx)) {
@@ -519,8 +528,55 @@ mod tests {
         proptest::collection::vec(proptest::collection::vec(point, 1..7), 0..=max_rings)
     }
 
+    /// The rings with coordinates scaled by 1/10 as floats, and the same floats read exactly.
+    type Scaled = (Vec<Vec<Point<Float>>>, Vec<Vec<Point<Rational>>>);
+    fn scaled(rings: &[Vec<Point<Rational>>]) -> Scaled {
+        let f = |v: &Rational| v.to_f64() * 0.1;
+        let float = rings
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|p| Point::new(Float::new(f(&p.x)), Float::new(f(&p.y))))
+                    .collect()
+            })
+            .collect();
+        let exact = rings
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|p| {
+                        let q = |v: &Rational| Rational::from_f64(f(v)).expect("finite");
+                        Point::new(q(&p.x), q(&p.y))
+                    })
+                    .collect()
+            })
+            .collect();
+        (float, exact)
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 300, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// Float mode: the fill is valid and its area within 4 ε (ring length) of the exact
+        /// fill of the same numbers.
+        #[test]
+        fn float_fill_is_valid_and_close_to_exact(rings in rings_on_grid(3)) {
+            let (float, exact) = scaled(&rings);
+            let eps = 1e-9 * 0.4;
+            let length: f64 = float
+                .iter()
+                .flat_map(|r| (0..r.len()).map(move |k| (r[k].to_f64(), r[(k + 1) % r.len()].to_f64())))
+                .map(|([x0, y0], [x1, y1])| (x1 - x0).hypot(y1 - y0))
+                .sum();
+            for rule in [NonZero, EvenOdd] {
+                let y = YinSet2::from_rings_filled_with(float.clone(), rule, Tolerance::new(eps))
+                    .expect("finite input");
+                prop_assert!(y.validate().is_ok(), "{:?}: {:?}", rule, y.validate());
+                let got = y.area().expect("bounded").to_f64();
+                let want = area(&fill(exact.clone(), rule)).to_f64();
+                prop_assert!((got - want).abs() <= 4.0 * eps * length, "{:?}: {} vs {}", rule, got, want);
+            }
+        }
 
         /// Membership on a fine grid of points off the rings agrees with the winding rule.
         #[test]

@@ -480,7 +480,7 @@ fn check_float(
 }
 
 /// Run every case's Boolean operations in float mode (ε = EPS_RELATIVE × extent), against
-/// the exact areas of the same operations.
+/// the exact areas of the same operations; the filled inputs must be valid too.
 pub fn run_float(exact: &[Case<Rational>], float: &[Case<Float>]) -> Report {
     let mut report = Report {
         cases: float.len(),
@@ -492,7 +492,15 @@ pub fn run_float(exact: &[Case<Rational>], float: &[Case<Float>]) -> Report {
         let ctx = Tolerance::new(eps);
         let bound = AREA_BOUND_C * eps * (boundary_length(&cf.a) + boundary_length(&cf.b));
         let exact_inputs = guarded(|| Ok((fill(&ce.a, ())?, fill(&ce.b, ())?)));
-        let float_inputs = guarded(|| Ok((fill(&cf.a, ctx)?, fill(&cf.b, ctx)?)));
+        let float_inputs = guarded(|| {
+            let (a, b) = (fill(&cf.a, ctx)?, fill(&cf.b, ctx)?);
+            for filled in [&a, &b] {
+                filled
+                    .validate()
+                    .map_err(|err| format!("invalid filled input: {err}"))?;
+            }
+            Ok((a, b))
+        });
         for (ee, ef) in ce.expected.iter().zip(&cf.expected) {
             report.operations += 1;
             let outcome = exact_inputs.clone().and_then(|(a, b)| {
