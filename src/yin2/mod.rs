@@ -15,6 +15,7 @@ mod paste;
 mod set;
 mod snap;
 mod validate;
+mod winding;
 
 pub use curve::Curve;
 pub use error::YinError;

@@ -3,12 +3,13 @@
 //! thereby exactly a valid Yin set whose vertices are grid points, decided with exact predicates.
 
 use super::intersect::{intersections, Edge};
-use super::locate::first_above;
 use super::paste::Segmented;
 use super::set::YinSet2;
+use super::winding::left_windings;
 use crate::kernel::{Contact, Point};
 use crate::num::{Float, Num};
 use std::collections::{BTreeSet, HashMap};
+use std::ops::{Add, Sub};
 
 /// A grid point: integer multiples of the grid spacing.
 type G = (i64, i64);
@@ -18,6 +19,24 @@ const MAX_GRID: f64 = (1u64 << 38) as f64;
 
 /// Winding numbers of a point with respect to the boundaries of the operands (two at most).
 pub(crate) type Winding = [i64; 2];
+
+/// A [`Winding`] with the arithmetic that [`left_windings`] needs.
+#[derive(Clone, Copy, Default)]
+struct Pair(Winding);
+
+impl Add for Pair {
+    type Output = Pair;
+    fn add(self, o: Pair) -> Pair {
+        Pair([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    }
+}
+
+impl Sub for Pair {
+    type Output = Pair;
+    fn sub(self, o: Pair) -> Pair {
+        Pair([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+    }
+}
 
 /// The Yin set of the faces where `inside` holds, given the directed pieces of the operands'
 /// boundaries labelled by operand (`0` or `1`), after snapping them to the grid of spacing
@@ -255,42 +274,18 @@ impl Windings {
         Windings { pieces, mult, left }
     }
 
-    /// Winding numbers on the left of each piece: the face above a non-vertical piece (east of
-    /// a vertical one) is the face below the first piece above it, or the far face (winding 0).
+    /// Winding numbers on the left of each piece.
     fn left_windings(pieces: &[(G, G)], mult: &[Winding], g: f64) -> Vec<Winding> {
         let pts: Vec<Edge<Float>> = pieces
             .iter()
             .map(|&(a, b)| (point(a, g), point(b, g)))
             .collect();
         let refs: Vec<(&Point<Float>, &Point<Float>)> = pts.iter().map(|(a, b)| (a, b)).collect();
-        let mids: Vec<Point<Float>> = pts.iter().map(|(a, b)| a.midpoint(b)).collect();
-        let above = first_above(&refs, &mids, &Default::default());
-        let sub = |u: Winding, v: Winding| [u[0] - v[0], u[1] - v[1]];
-        let add = |u: Winding, v: Winding| [u[0] + v[0], u[1] + v[1]];
-        // below[q]: winding of the face just below non-vertical piece q, once known.
-        let mut below: Vec<Option<Winding>> = vec![None; pieces.len()];
-        let mut left = vec![[0, 0]; pieces.len()];
-        for k in 0..pieces.len() {
-            let mut chain = Vec::new();
-            let mut cur = above[k];
-            let mut face = [0, 0];
-            while let Some(q) = cur {
-                if let Some(w) = below[q] {
-                    face = w;
-                    break;
-                }
-                chain.push(q);
-                cur = above[q];
-            }
-            for &q in chain.iter().rev() {
-                face = sub(face, mult[q]);
-                below[q] = Some(face);
-            }
-            // Crossing a piece from its right to its left adds its multiplicity.
-            let vertical = pieces[k].0 .0 == pieces[k].1 .0;
-            left[k] = if vertical { add(face, mult[k]) } else { face };
-        }
-        left
+        let mult: Vec<Pair> = mult.iter().map(|&m| Pair(m)).collect();
+        left_windings(&refs, &mult, &Default::default())
+            .into_iter()
+            .map(|p| p.0)
+            .collect()
     }
 
     /// Winding numbers on the left and on the right of piece `k`.
