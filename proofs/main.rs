@@ -88,6 +88,9 @@ fn par<T: Sync>(
                     if k >= items.len() || failed.load(Ordering::Relaxed) {
                         break;
                     }
+                    if full() && k > 0 && k % (items.len() / 10).max(1) == 0 {
+                        eprintln!("  … {k} of {} cases", items.len());
+                    }
                     if let Err(e) = check(&mut t, &items[k]) {
                         failed.store(true, Ordering::Relaxed);
                         error.lock().unwrap().get_or_insert(e);
@@ -102,18 +105,51 @@ fn par<T: Sync>(
     (tally.into_inner().unwrap(), e.map_or(Ok(()), Err))
 }
 
+/// CPU time of this process so far, in seconds (Linux: /proc/self/stat, USER_HZ = 100;
+/// elsewhere 0).
+fn cpu_seconds() -> f64 {
+    let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    let fields: Vec<&str> = stat
+        .rsplit_once(')')
+        .map_or(vec![], |(_, rest)| rest.split_whitespace().collect());
+    // After the command name: state is field 3, utime field 14, stime field 15.
+    let tick = |k: usize| {
+        fields
+            .get(k - 3)
+            .and_then(|v| v.parse::<f64>().ok())
+            .unwrap_or(0.0)
+    };
+    (tick(14) + tick(15)) / 100.0
+}
+
+/// Wall-clock and CPU time since a start.
+struct Clock {
+    wall: Instant,
+    cpu: f64,
+}
+
+impl Clock {
+    fn start() -> Clock {
+        Clock {
+            wall: Instant::now(),
+            cpu: cpu_seconds(),
+        }
+    }
+}
+
 /// Print the proof's table row and its per-law counts; panic on failure.
 fn conclude(
     theorem: &str,
     universe: &str,
     cases: usize,
-    start: Instant,
+    start: Clock,
     (tally, result): (Tally, Result<(), String>),
 ) {
-    let secs = start.elapsed().as_secs_f64();
+    let secs = start.wall.elapsed().as_secs_f64();
+    let cpu = cpu_seconds() - start.cpu;
     let verdict = if result.is_ok() { "holds" } else { "FAILS" };
     eprintln!(
-        "| {theorem} | {universe} | {cases} | {} | {verdict} | {secs:.1} s |\n{}",
+        "\n| {theorem} | {universe} | {cases} | {} | {verdict} | {secs:.1} s | {cpu:.1} s |\n{}",
         tally.total(),
         tally.report("  checks per law")
     );
@@ -163,7 +199,7 @@ fn sample(sets: &[Cells], k: usize) -> Vec<Cells> {
 /// centroids (ρ(a') = ρ(a)^⊥, Lemma 4.5); and idempotence a∧a = a∨a = a, identity a∧1̂ = a∨0̂ =
 /// a, annihilator a∧0̂ = 0̂, a∨1̂ = 1̂, complement a∧a' = 0̂, a∨a' = 1̂ and involution a'' = a hold.
 fn theorem_unary(u: &Universe) {
-    let start = Instant::now();
+    let start = Clock::start();
     let sets = u.sets(true);
     let n = u.cx.len();
     let result = par(&sets, |t, &a| {
@@ -190,7 +226,7 @@ fn theorem_unary(u: &Universe) {
 /// the exact area identities |a∧b| + |a∨b| = |a| + |b| and |a∖b| = |a| − |a∧b| (bounded a, b);
 /// and membership locate(p, a op b) = locate(p, a) op locate(p, b) at every piece centroid.
 fn theorem_binary(u: &Universe, items: Vec<(Cells, Cells)>, universe: &str) {
-    let start = Instant::now();
+    let start = Clock::start();
     let pts = u.probes();
     let result = par(&items, |t, &(a, b)| {
         let (ya, yb) = (u.get(a), u.get(b));
@@ -211,7 +247,7 @@ fn theorem_binary(u: &Universe, items: Vec<(Cells, Cells)>, universe: &str) {
 /// universe: (a∧b)∧c = a∧(b∧c), (a∨b)∨c = a∨(b∨c), a∧(b∨c) = (a∧b)∨(a∧c) and
 /// a∨(b∧c) = (a∨b)∧(a∨c), every side computed by the kernel and validated.
 fn theorem_ternary(u: &Universe, items: Vec<(Cells, Cells, Cells)>, universe: &str) {
-    let start = Instant::now();
+    let start = Clock::start();
     let result = par(&items, |t, &(a, b, c)| {
         laws::ternary(t, u.get(a), u.get(b), u.get(c))
     });

@@ -53,7 +53,7 @@ fn run<S: Strategy>(
 
 #[test]
 fn unary_laws() {
-    run("unary laws", cases(256), strategies::shape(), |t, s| {
+    run("unary laws", cases(512), strategies::shape(), |t, s| {
         laws::unary(t, &s.build())
     });
 }
@@ -63,7 +63,7 @@ fn binary_laws_and_membership() {
     let pts = laws::probe_points();
     run(
         "binary laws",
-        cases(192),
+        cases(512),
         strategies::pair(),
         |t, (a, b)| {
             let (a, b) = (a.build(), b.build());
@@ -77,7 +77,7 @@ fn binary_laws_and_membership() {
 fn ternary_laws() {
     run(
         "ternary laws",
-        cases(96),
+        cases(256),
         strategies::triple(),
         |t, (a, b, c)| laws::ternary(t, &a.build(), &b.build(), &c.build()),
     );

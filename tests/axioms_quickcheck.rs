@@ -62,7 +62,7 @@ fn ternary_prop(p: QTriple) -> TestResult {
 
 #[test]
 fn unary_laws() {
-    let n = cases(256);
+    let n = cases(512);
     qc(n).quickcheck(unary_prop as fn(Shape) -> TestResult);
     eprintln!(
         "{}",
@@ -75,7 +75,7 @@ fn unary_laws() {
 
 #[test]
 fn binary_laws_and_membership() {
-    let n = cases(192);
+    let n = cases(512);
     qc(n).quickcheck(binary_prop as fn(QPair) -> TestResult);
     eprintln!(
         "{}",
@@ -88,7 +88,7 @@ fn binary_laws_and_membership() {
 
 #[test]
 fn ternary_laws() {
-    let n = cases(96);
+    let n = cases(256);
     qc(n).quickcheck(ternary_prop as fn(QTriple) -> TestResult);
     eprintln!(
         "{}",

@@ -102,7 +102,7 @@ fn grid_cell_oracle() {
         let name = format!("cell oracle on {} ({n} pieces)", cx.name);
         run(
             &name,
-            cases(64),
+            cases(128),
             (cells_strategy(n), cells_strategy(n)),
             |t, (a, b)| {
                 let (ya, yb) = (cx.yin(a), cx.yin(b));
@@ -131,7 +131,7 @@ fn grid_cell_oracle_in_rational_coordinates() {
     let area_scale = Rational::new(9.into(), 49.into());
     run(
         "cell oracle in rational coordinates",
-        cases(48),
+        cases(128),
         (cells_strategy(n), cells_strategy(n)),
         |t, (a, b)| {
             let (ya, yb) = (cx.yin_mapped(a, &map), cx.yin_mapped(b, &map));
@@ -184,7 +184,7 @@ fn points() -> impl Strategy<Value = Vec<Point<Rational>>> {
 fn membership_oracle() {
     run(
         "membership oracle at random points",
-        cases(96),
+        cases(256),
         (strategies::pair(), points()),
         |t, ((a, b), pts)| {
             let (a, b) = (a.build(), b.build());
@@ -216,7 +216,7 @@ fn exact_area_identities() {
     let aw = w.area().unwrap();
     run(
         "exact area identities",
-        cases(96),
+        cases(256),
         strategies::pair(),
         |t, (a, b)| {
             let (a, b) = (a.build(), b.build());

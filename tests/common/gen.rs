@@ -349,7 +349,8 @@ fn fix_triangle(
 }
 
 impl Shape {
-    /// The Yin set of the program, computed with the kernel's join and difference.
+    /// The Yin set of the program, computed with the kernel's join and difference; every
+    /// intermediate result must pass the exact validator.
     pub fn build(&self) -> Y {
         let mut acc: Y = YinSet2::empty();
         for s in &self.steps {
@@ -359,6 +360,9 @@ impl Shape {
             } else {
                 acc.difference(&p)
             };
+            if let Err(e) = acc.validate() {
+                panic!("building {self:?}: the validator rejects an intermediate result: {e}");
+            }
         }
         if self.complement {
             acc.complement()
@@ -700,7 +704,7 @@ pub struct Features {
 pub const FEATURE_NAMES: [&str; 12] = [
     "shared vertex",
     "collinear overlapping edges",
-    "touching point between ∂A and ∂B",
+    "∂A, ∂B meet at an isolated vertex contact",
     "curves of one set touching at a point",
     "coincident curves, equal orientation",
     "coincident curves, opposite orientation",

@@ -54,6 +54,12 @@ pub fn ok(y: Y, what: &str) -> Result<Y, String> {
     Ok(y)
 }
 
+/// Validate an input (e.g. a generated set, itself a kernel output).
+pub fn valid_input(y: &Y, what: &str) -> Res {
+    y.validate()
+        .map_err(|e| format!("the validator rejects the input {what}: {e}\n{y:?}"))
+}
+
 /// Count one case of `name`; fail with `detail` if it does not hold.
 pub fn law(t: &mut Tally, name: &'static str, holds: bool, detail: impl FnOnce() -> String) -> Res {
     *t.counts.entry(name).or_default() += 1;
@@ -100,7 +106,7 @@ pub const UNARY_LAWS: [&str; 9] = [
 
 /// Idempotence, identity, annihilator, complement and involution laws for one set.
 pub fn unary(t: &mut Tally, a: &Y) -> Res {
-    ok(a.clone(), "the input a")?;
+    valid_input(a, "a")?;
     let (zero, one): (Y, Y) = (YinSet2::empty(), YinSet2::full());
     let na = ok(a.complement(), "a'")?;
     let cases: [(usize, Y, &Y); 9] = [
@@ -147,6 +153,8 @@ pub struct BinaryOut {
 /// a and b) for one ordered pair.
 pub fn binary(t: &mut Tally, a: &Y, b: &Y) -> Result<BinaryOut, String> {
     let ab = || format!("a = {}, b = {}", show(a), show(b));
+    valid_input(a, "a")?;
+    valid_input(b, "b")?;
     let m = ok(a.meet(b), "a∧b")?;
     let j = ok(a.join(b), "a∨b")?;
     let (na, nb) = (ok(a.complement(), "a'")?, ok(b.complement(), "b'")?);
@@ -206,6 +214,9 @@ pub const TERNARY_LAWS: [&str; 4] = [
 /// Associativity and both distributive laws for one ordered triple.
 pub fn ternary(t: &mut Tally, a: &Y, b: &Y, c: &Y) -> Res {
     let abc = || format!("a = {}, b = {}, c = {}", show(a), show(b), show(c));
+    for (y, what) in [(a, "a"), (b, "b"), (c, "c")] {
+        valid_input(y, what)?;
+    }
     let (ab_m, ab_j) = (ok(a.meet(b), "a∧b")?, ok(a.join(b), "a∨b")?);
     let (bc_m, bc_j) = (ok(b.meet(c), "b∧c")?, ok(b.join(c), "b∨c")?);
     let (ac_m, ac_j) = (ok(a.meet(c), "a∧c")?, ok(a.join(c), "a∨c")?);
