@@ -436,7 +436,6 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "kernel bug: float-mode snap rounding (snap.rs) leaves a dangling piece, the pasting map's debug assertion fires; cargo test -- --ignored"]
     fn float_union_of_two_triangles() {
         // Two counterclockwise triangles; A's edge crosses B's vertical edge x = 0.2 at y = 0.25.
         let ctx = Tolerance::new(4e-10);
@@ -544,7 +543,6 @@ mod tests {
         /// Float mode: the fill is valid and its area within 4 ε (ring length) of the exact
         /// fill of the same numbers.
         #[test]
-        #[ignore = "kernel bug: float snap rounding leaves a dangling piece (see float_union_of_two_triangles); cargo test -- --ignored"]
         fn float_fill_is_valid_and_close_to_exact(rings in rings_on_grid(3)) {
             let (float, exact) = scaled(&rings);
             let eps = 1e-9 * 0.4;

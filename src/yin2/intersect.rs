@@ -15,13 +15,21 @@ use std::collections::BTreeMap;
 /// A closed straight edge `a → b` of positive length.
 pub type Edge<N> = (Point<N>, Point<N>);
 
-/// MRS-a in O((n + I) log n) (seed 002 §1.3): meeting pairs `i < j` with `wanted`, by `(i, j)`.
+/// MRS-a (seed 002 §1.3): meeting pairs `i < j` with `wanted`, by `(i, j)`, with their contact.
+///
+/// Exact mode: Bentley–Ottmann, O((n + I) log n). It keeps its status ordered through the
+/// crossing points it constructs, so it needs them exact; with rounded ones (float mode) it can
+/// miss a pair, so float mode sweeps the edges' extents instead ([`by_extents`]).
 pub fn intersections<N: Num>(
     edges: &[Edge<N>],
     ctx: &N::Ctx,
     wanted: impl Fn(usize, usize) -> bool,
 ) -> Vec<(usize, usize, Contact<N>)> {
-    let mut pairs = Sweep::new(edges, ctx).run();
+    let mut pairs = if N::EXACT {
+        Sweep::new(edges, ctx).run()
+    } else {
+        by_extents(edges)
+    };
     pairs.sort_unstable();
     pairs.dedup();
     pairs
@@ -32,6 +40,49 @@ pub fn intersections<N: Num>(
             (c != Contact::Disjoint).then_some((i, j, c))
         })
         .collect()
+}
+
+/// The pairs of edges whose bounding boxes meet, by a sweep in x over the edges' extents with
+/// an active list: complete whatever the arithmetic, O(n log n + K) for K box pairs.
+fn by_extents<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
+    fn lo<N: Num>(e: &Edge<N>) -> &Point<N> {
+        if e.0 <= e.1 {
+            &e.0
+        } else {
+            &e.1
+        }
+    }
+    fn hi_x<N: Num>(e: &Edge<N>) -> &N {
+        if e.0 <= e.1 {
+            &e.1.x
+        } else {
+            &e.0.x
+        }
+    }
+    fn y_range<N: Num>(e: &Edge<N>) -> (&N, &N) {
+        if e.0.y <= e.1.y {
+            (&e.0.y, &e.1.y)
+        } else {
+            (&e.1.y, &e.0.y)
+        }
+    }
+    let mut order: Vec<usize> = (0..edges.len()).collect();
+    order.sort_by(|&i, &j| lo(&edges[i]).cmp(lo(&edges[j])));
+    let mut active: Vec<usize> = Vec::new();
+    let mut out = Vec::new();
+    for &i in &order {
+        let x = &lo(&edges[i]).x;
+        active.retain(|&j| hi_x(&edges[j]) >= x);
+        let (y0, y1) = y_range(&edges[i]);
+        for &j in &active {
+            let (z0, z1) = y_range(&edges[j]);
+            if z1 >= y0 && z0 <= y1 {
+                out.push((i.min(j), i.max(j)));
+            }
+        }
+        active.push(i);
+    }
+    out
 }
 
 /// No node (the empty treap).

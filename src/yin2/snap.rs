@@ -97,67 +97,72 @@ fn point<N: Num>(k: G, g: f64) -> Point<N> {
     Point::new(c(k.0), c(k.1))
 }
 
-/// Iterated snap rounding: reroute every fragment through the centres of the hot pixels it
-/// meets (pixels of endpoints and of crossings) until no two fragments cross.
-fn snap_round(mut segments: Vec<((G, G), usize)>, g: f64) -> Vec<((G, G), usize)> {
+/// Snap rounding, iterated until no two fragments cross: each original segment is rerouted,
+/// in order along it, through the centres of the hot pixels it meets (pixels of endpoints and
+/// of crossings); where two fragments still cross at a pixel their segments do not meet, that
+/// centre is forced into both paths. Paths stay monotone along their segments and every round
+/// adds a new (segment, centre) stop, so the iteration ends.
+fn snap_round(segments: Vec<((G, G), usize)>, g: f64) -> Vec<((G, G), usize)> {
     let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
+    let mut forced: Vec<BTreeSet<G>> = vec![BTreeSet::new(); segments.len()];
     loop {
-        let rerouted: Vec<((G, G), usize)> = segments
-            .iter()
-            .flat_map(|&(s, l)| reroute(s, &hot).into_iter().map(move |f| (f, l)))
-            .collect();
-        if rerouted != segments {
-            segments = rerouted;
-            continue;
-        }
-        let crossings = crossing_pairs(&segments, g);
-        if crossings.is_empty() {
-            return segments;
-        }
-        let before = hot.len();
-        for &(i, j) in &crossings {
-            hot.insert(crossing_pixel(segments[i].0, segments[j].0));
-        }
-        if hot.len() == before {
-            // No new pixel: split each crossing fragment at the crossing's pixel centre.
-            let mut split: HashMap<usize, G> = HashMap::new();
-            for &(i, j) in &crossings {
-                let c = crossing_pixel(segments[i].0, segments[j].0);
-                split.insert(i, c);
-                split.insert(j, c);
+        let mut owner = Vec::new();
+        let mut fragments = Vec::new();
+        for (k, &(s, label)) in segments.iter().enumerate() {
+            for f in reroute(s, &hot, &forced[k]) {
+                owner.push(k);
+                fragments.push((f, label));
             }
-            segments = segments
-                .iter()
-                .enumerate()
-                .flat_map(|(k, &((a, b), l))| match split.get(&k) {
-                    Some(&c) if c != a && c != b => vec![((a, c), l), ((c, b), l)],
-                    _ => vec![((a, b), l)],
-                })
-                .collect();
+        }
+        let crossings = crossing_pairs(&fragments, g);
+        if crossings.is_empty() {
+            return fragments;
+        }
+        let mut progress = false;
+        for &(i, j) in &crossings {
+            let c = crossing_pixel(fragments[i].0, fragments[j].0);
+            progress |= hot.insert(c);
+            for k in [owner[i], owner[j]] {
+                progress |= inside_projection(segments[k].0, c) && forced[k].insert(c);
+            }
+        }
+        if !progress {
+            // Cannot happen for a crossing strictly inside two fragments; never loop forever.
+            debug_assert!(false, "snap rounding made no progress");
+            return fragments;
         }
     }
 }
 
-/// The fragment `s` rerouted through the centres of the hot pixels its closed pixel squares
-/// meet, in order along `s` (only centres projecting strictly inside `s`).
-fn reroute(s: (G, G), hot: &BTreeSet<G>) -> Vec<(G, G)> {
+/// True if `c` projects strictly inside the segment `s`.
+fn inside_projection(s: (G, G), c: G) -> bool {
+    let (a, b) = s;
+    let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
+    let t = (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
+    t > 0 && t < d.0 * d.0 + d.1 * d.1
+}
+
+/// The segment `s` rerouted through the centres of the hot pixels its closed pixel squares
+/// meet and through the `forced` centres, in order along `s` (centres projecting strictly
+/// inside `s` only).
+fn reroute(s: (G, G), hot: &BTreeSet<G>, forced: &BTreeSet<G>) -> Vec<(G, G)> {
     let (a, b) = s;
     let (x0, x1) = (a.0.min(b.0) - 1, a.0.max(b.0) + 1);
     let (y0, y1) = (a.1.min(b.1) - 1, a.1.max(b.1) + 1);
     let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
-    let len2 = d.0 * d.0 + d.1 * d.1;
+    let along = |c: &G| (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
     let mut stops: Vec<(i128, G)> = hot
         .range((x0, i64::MIN)..=(x1, i64::MAX))
         .filter(|c| c.1 >= y0 && c.1 <= y1 && **c != a && **c != b)
-        .filter_map(|&c| {
-            let t = (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
-            (t > 0 && t < len2 && meets_pixel(a, b, c)).then_some((t, c))
-        })
+        .filter(|&&c| inside_projection(s, c) && meets_pixel(a, b, c))
+        .chain(forced.iter().filter(|&&c| c != a && c != b))
+        .map(|&c| (along(&c), c))
         .collect();
     if stops.is_empty() {
         return vec![s];
     }
     stops.sort();
+    stops.dedup();
     let mut path = vec![a];
     path.extend(stops.into_iter().map(|(_, c)| c));
     path.push(b);
