@@ -14,7 +14,9 @@
 # the committed seeds fuzz/seeds/<corpus>; crashes, timeouts and out-of-memory inputs go to
 # fuzz/artifacts/TARGET/ (corpus/ and artifacts/ are git-ignored). Reproduce one with
 #   RUSTC_BOOTSTRAP=1 cargo fuzz run -O -s none TARGET fuzz/artifacts/TARGET/crash-…
-# Exit status: 0 if no target failed, non-zero otherwise (a crash is a failure).
+# Exit status: 0 if no target failed, non-zero otherwise (a crash or a hang is a failure),
+# except that failures of the targets listed in FUZZ_ADVISORY (space-separated) are reported
+# but do not count: for targets that still find known, pinned kernel bugs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -73,6 +75,7 @@ echo "== building fuzz targets ($(cargo fuzz --version))"
 cargo fuzz build "${flags[@]}"
 
 failed=()
+advisory=()
 for t in "${selected[@]}"; do
     echo "== fuzzing $t for ${seconds}s"
     mkdir -p "fuzz/corpus/$t" "fuzz/artifacts/$t"
@@ -80,12 +83,24 @@ for t in "${selected[@]}"; do
         -max_total_time="$seconds" -max_len="$(max_len_of "$t")" \
         -timeout="${FUZZ_TIMEOUT:-30}" -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="fuzz/artifacts/$t/" "$@"; then
-        failed+=("$t")
-        echo "!! $t failed: see fuzz/artifacts/$t/"
+        case " ${FUZZ_ADVISORY:-} " in
+        *" $t "*)
+            advisory+=("$t")
+            echo "!! $t failed (advisory: known open bugs, not counted): see fuzz/artifacts/$t/"
+            ;;
+        *)
+            failed+=("$t")
+            echo "!! $t failed: see fuzz/artifacts/$t/"
+            ;;
+        esac
     fi
 done
+if [ ${#advisory[@]} -gt 0 ]; then
+    echo "fuzz: advisory targets that failed (known open bugs): ${advisory[*]}"
+fi
+# One summary line in the plain "N passed, N failed" form, counting targets.
+echo "fuzz: $((${#selected[@]} - ${#failed[@]} - ${#advisory[@]})) passed, ${#failed[@]} failed"
 if [ ${#failed[@]} -gt 0 ]; then
-    echo "fuzz: ${#failed[@]} target(s) failed: ${failed[*]}"
+    echo "failed targets: ${failed[*]} (inputs in fuzz/artifacts/)"
     exit 1
 fi
-echo "fuzz: ${#selected[@]} target(s) ran ${seconds}s each without a failure"

@@ -266,13 +266,60 @@ fn distance_to_boundary(p: [f64; 2], set: &YinSet2<Float>) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-/// Largest ε for which the float oracle is applied, and its margin.
+/// Largest ε for which the float oracles are applied, and their margin.
 const FLOAT_ORACLE_EPS: f64 = 1e-3;
 const FLOAT_ORACLE_MARGIN: f64 = 0.1;
 
+/// The exact set of a float set's curves (the validator has passed, so this succeeds).
+fn exact_of<D: Debug>(what: &str, set: &YinSet2<Float>, input: &D) -> YinSet2<Rational> {
+    set.to_exact().unwrap_or_else(|e| {
+        fail!(
+            input,
+            "{what} has no exact counterpart: {e}\n{what} = {set:?}"
+        )
+    })
+}
+
+/// Float `locate` must agree with exact `locate` on the same curves at points at least the
+/// margin away from the set's boundary (ε-tolerant predicates may decide only near it).
+fn float_locate_agrees<D: Debug>(
+    what: &str,
+    set: &YinSet2<Float>,
+    exact: &YinSet2<Rational>,
+    points: &[Point<Float>],
+    input: &D,
+) {
+    let far: Vec<Point<Float>> = points
+        .iter()
+        .filter(|p| distance_to_boundary(p.to_f64(), set) >= FLOAT_ORACLE_MARGIN)
+        .cloned()
+        .collect();
+    let got = set.locate(&far);
+    let want = exact.locate(&far.iter().map(to_exact_point).collect::<Vec<_>>());
+    for ((p, g), w) in far.iter().zip(got).zip(want) {
+        if g != w {
+            fail!(
+                input,
+                "float locate: ({}, {}) is {g:?} in {what} (float), {w:?} in the same curves read exactly, \
+                 at least {FLOAT_ORACLE_MARGIN} from the boundary\n{what} = {set:?}",
+                p.x,
+                p.y
+            );
+        }
+    }
+}
+
+/// The exact point of a float point.
+fn to_exact_point(p: &Point<Float>) -> Point<Rational> {
+    let q = |v: &Float| Rational::from_f64(v.get()).expect("finite");
+    Point::new(q(&p.x), q(&p.y))
+}
+
 /// The binary operations in float mode: no panic, every output valid (read exactly) and
-/// convertible to exact mode; and, for ε ≤ 10⁻³, the membership oracle at probes at least 0.1
-/// away from both operands' boundaries.
+/// convertible to exact mode; and, for ε ≤ 10⁻³, two oracles at probes at least 0.1 away from
+/// both operands' boundaries, both on the sets read exactly (so that they test the operations,
+/// not the ε-tolerant point location): the membership oracle, and float `locate` agreeing
+/// with exact `locate` on every operand and result.
 pub fn ops_float(input: &OpsInput) {
     let (tol, delta) = float_tolerance(input.tol);
     let (a, _) = build_float(&input.a, tol, delta, input);
@@ -283,28 +330,56 @@ pub fn ops_float(input: &OpsInput) {
     for ((name, _), set) in OPS.iter().zip(&out) {
         valid(name, set, input);
     }
-    if let Err(e) = out[0].to_exact() {
-        fail!(
-            input,
-            "A∧B has no exact counterpart: {e}\nA∧B = {:?}",
-            out[0]
-        );
-    }
+    let exact: Vec<YinSet2<Rational>> = out
+        .iter()
+        .zip(OPS)
+        .map(|(set, (name, _))| exact_of(name, set, input))
+        .collect();
     let eps = a.ctx().eps().max(b.ctx().eps());
-    if eps <= FLOAT_ORACLE_EPS {
-        let points: Vec<Point<Float>> = input
-            .probes
-            .iter()
-            .map(|p| {
-                let (x, y) = p.doubled();
-                Point::new(Float::new(x as f64 / 2.0), Float::new(y as f64 / 2.0))
-            })
-            .filter(|p| {
-                let q = p.to_f64();
-                distance_to_boundary(q, &a).min(distance_to_boundary(q, &b)) >= FLOAT_ORACLE_MARGIN
-            })
-            .collect();
-        oracle(&a, &b, &out, &points, input);
+    if eps > FLOAT_ORACLE_EPS {
+        return;
+    }
+    let points: Vec<Point<Float>> = input
+        .probes
+        .iter()
+        .map(|p| {
+            let (x, y) = p.doubled();
+            Point::new(Float::new(x as f64 / 2.0), Float::new(y as f64 / 2.0))
+        })
+        .filter(|p| {
+            let q = p.to_f64();
+            distance_to_boundary(q, &a).min(distance_to_boundary(q, &b)) >= FLOAT_ORACLE_MARGIN
+        })
+        .collect();
+    if points.is_empty() {
+        return;
+    }
+    let (ax, bx) = (exact_of("A", &a, input), exact_of("B", &b, input));
+    let exact_points: Vec<Point<Rational>> = points.iter().map(to_exact_point).collect();
+    let (la, lb) = (ax.locate(&exact_points), bx.locate(&exact_points));
+    for (((name, f), set), x) in OPS.iter().zip(&out).zip(&exact) {
+        let got = x.locate(&exact_points);
+        for (k, p) in points.iter().enumerate() {
+            if let Some(want) = expect(la[k], lb[k], f) {
+                if got[k] != want {
+                    fail!(
+                        input,
+                        "membership oracle (float results read exactly): {name} at ({}, {}) is {:?}, \
+                         expected {want:?} (A: {:?}, B: {:?})\nA = {a:?}\nB = {b:?}\n{name} = {set:?}",
+                        p.x,
+                        p.y,
+                        got[k],
+                        la[k],
+                        lb[k]
+                    );
+                }
+            }
+        }
+    }
+    float_locate_agrees("A", &a, &ax, &points, input);
+    float_locate_agrees("B", &b, &bx, &points, input);
+    for (((name, _), set), x) in OPS.iter().zip(&out).zip(&exact) {
+        float_locate_agrees(name, set, x, &points, input);
     }
 }
 
