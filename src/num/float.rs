@@ -26,6 +26,26 @@ impl Float {
 /// Float mode's tolerance: points closer than ε are one point, and a point within ε of a line
 /// lies on it (seed 000 §5.2). `Tolerance::default()` asks for ε derived from the input's
 /// extent, [`Tolerance::RELATIVE_DEFAULT`] times the largest coordinate magnitude.
+///
+/// # Accuracy
+///
+/// Every float result F is exactly valid (its `f64` vertices read as rationals pass the exact
+/// validator). Against the exact result E of the same operation on the same input values,
+///
+/// > area(F △ E) ≤ C · ε · L, with **C = 1**,
+///
+/// where L is the total boundary length of the operands plus that of E. Betti numbers agree
+/// with exact mode when no feature of the input is smaller than ε; on inputs with features
+/// below ε (slivers, near-coincident curves) they may differ, the area bound still holds.
+///
+/// C is measured, not proved: `tests/float_mode.rs` compares meet, join, difference,
+/// symmetric difference and complement with exact mode on random well-separated and
+/// near-degenerate inputs (vertices within ε/10 of edges and vertices, copies offset by less
+/// than ε, nearly collinear overlaps, jitter; every vertex half a grid spacing off the grid),
+/// coarse ε, the panda and Mickey, and the GIS outlines: the largest area(F △ E) / (ε · L)
+/// seen over 60 000 comparisons is 0.47 (a join on a near-degenerate input); C = 1 leaves a
+/// factor 2. The bound needs ε ≥ 2⁻³⁷ × extent: below, the snapping grid is coarser than ε
+/// (a known kernel limitation, pinned in `tests/float_mode.rs`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Tolerance {
     eps: f64,
