@@ -43,12 +43,14 @@ impl Rng {
 }
 
 /// A star-shaped polygon with `n` vertices around `centre`: radius 1 + 0.2 sin(5θ + φ) with
-/// 2 % noise, at slightly jittered angles (general position with probability one).
+/// 10⁻⁵ noise (below the vertex spacing, so the boundary stays smooth and the two polygons
+/// cross a few dozen times), at slightly jittered angles (general position with probability
+/// one).
 fn star(rng: &mut Rng, n: usize, centre: [f64; 2], phase: f64) -> Vec<[f64; 2]> {
     (0..n)
         .map(|k| {
             let t = (k as f64 + 0.8 * rng.unit()) * std::f64::consts::TAU / n as f64;
-            let r = 1.0 + 0.2 * (5.0 * t + phase).sin() + 0.02 * rng.unit();
+            let r = 1.0 + 0.2 * (5.0 * t + phase).sin() + 1e-5 * rng.unit();
             [centre[0] + r * t.cos(), centre[1] + r * t.sin()]
         })
         .collect()

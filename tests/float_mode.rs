@@ -181,8 +181,6 @@ fn try_case(
 struct Campaign {
     stats: Stats,
     failures: Vec<String>,
-    /// Cases that fail with the symptom of a pinned kernel bug.
-    known_bugs: usize,
 }
 
 impl Campaign {
@@ -201,10 +199,7 @@ impl Campaign {
     }
 
     fn finish(self, name: &str) {
-        eprintln!(
-            "{name}: {}; {} cases hit a pinned kernel bug",
-            self.stats, self.known_bugs
-        );
+        eprintln!("{name}: {}", self.stats);
         for s in &self.stats.betti_differ_at {
             eprintln!("  Betti differ: {s}");
         }
@@ -390,10 +385,8 @@ fn panda_and_mickey() {
 
 /// GIS cases of one file: polygons of its first feature (those near the second feature
 /// first, at most `budget` vertices) against the second feature, two boxes and a shifted
-/// copy, at ε = the default and 10⁻⁶ × the subject's size. A case whose label contains the
-/// first member of one of `known_bugs` and that fails with its second member (the symptom of
-/// a kernel bug pinned below) is counted apart, not as a failure; if it passes, it says so.
-fn gis_file(file: &str, budget: usize, known_bugs: &[(&str, &str)]) {
+/// copy, at ε = the default and 10⁻⁶ × the subject's size.
+fn gis_file(file: &str, budget: usize) {
     let mut c = Campaign::default();
     let features = data::gis(file);
     assert!(
@@ -441,42 +434,21 @@ fn gis_file(file: &str, budget: usize, known_bugs: &[(&str, &str)]) {
                 "{file} ({} of {all} vertices, {how:?}) vs {name}, ε = {eps:e}",
                 n
             );
-            match (
-                known_bugs.iter().find(|(at, _)| label.contains(at)),
-                timed(&label, || try_case(&label, &subject, other, eps, false)),
-            ) {
-                (Some((_, symptom)), Err(why)) if why.contains(symptom) => {
-                    eprintln!("  {label}: known kernel bug (pinned): {symptom}");
-                    c.known_bugs += 1;
-                }
-                (bug, r) => {
-                    if let Some((_, symptom)) = bug {
-                        eprintln!("  {label}: the pinned kernel bug '{symptom}' does not show");
-                    }
-                    c.record(r);
-                }
-            }
+            timed(&label, || c.run(&label, &subject, other, eps, false));
         }
     }
     c.finish(file);
 }
 
-/// Pinned: [`kernel_bug_dangling_piece_after_overlay_fallback`] was minimized from this case.
-const DANGLING: &str = "pasting map: dangling piece";
-
 #[test]
 fn gis_hole_hole() {
-    gis_file("hole_hole.geojson", usize::MAX, &[("vs box 1", DANGLING)]);
+    gis_file("hole_hole.geojson", usize::MAX);
 }
 
 #[test]
 fn gis_states() {
     let full = std::env::var("YINSET_FLOAT_FULL").is_ok();
-    gis_file(
-        "states_source.geojson",
-        if full { usize::MAX } else { 200 },
-        &[],
-    );
+    gis_file("states_source.geojson", if full { usize::MAX } else { 200 });
 }
 
 #[test]
@@ -484,28 +456,28 @@ fn gis_asia() {
     let full = std::env::var("YINSET_FLOAT_FULL").is_ok();
     // The whole outline (28 236 vertices) is out of reach of the exact reference's checks in
     // reasonable time; the full run takes the 3000 vertices nearest the clip polygon.
-    gis_file("asia.geojson", if full { 3000 } else { 200 }, &[]);
+    gis_file("asia.geojson", if full { 3000 } else { 200 });
 }
 
-// Kernel bugs found by these tests, pinned with minimal reproducers (run with
-// `cargo test --test float_mode -- --ignored`).
+// Kernel bugs found by these tests: minimal reproducers, ignored while open (run them with
+// `cargo test --test float_mode -- --ignored`), plain regression tests once fixed.
 
+/// Regression: float meet, difference and symmetric difference of these two triangles
+/// panicked in the pasting map ('dangling piece') after the overlay fallback, for every ε tried
+/// (10⁻¹⁰..10⁻⁶); found by `gis_hole_hole` (hole_hole.geojson against box 1), passes since the
+/// float-mode fixes of 1361697.
 #[test]
-#[ignore = "kernel bug: float meet of two triangles panics in the pasting map ('dangling piece') \
-            after the overlay fallback, for every ε tried (1e-10..1e-6); \
-            cargo test -- --ignored"]
-fn kernel_bug_dangling_piece_after_overlay_fallback() {
+fn regression_dangling_piece_after_overlay_fallback() {
     // Minimized from the GIS file hole_hole.geojson against a box.
     let a: Curves = vec![vec![[6.0, 43.0], [248.0, -200.0], [252.5, 43.0]]];
     let b: Curves = vec![vec![[125.5, -78.0], [125.5, 67.0], [-27.0, 67.0]]];
     let eps = 1e-8;
     let (fa, fb) = (float_set(&a, eps), float_set(&b, eps));
-    let meet = fa.meet(&fb); // panics: "pasting map: dangling piece at (125.5, 67)"
-    meet.validate().expect("valid");
-    let exact = exact_set(&a).meet(&exact_set(&b));
-    let d = sym_diff_area(&meet.to_exact().unwrap(), &exact).unwrap();
-    let l = scale_length(&exact_set(&a), Some(&exact_set(&b)), &exact);
-    assert!(yinset::num::Num::to_f64(&d) <= AREA_C * eps * l);
+    let (ea, eb) = (exact_set(&a), exact_set(&b));
+    for op in OPS {
+        let o = compare(op, (&ea, &eb), (&fa, &fb), eps).unwrap();
+        assert!(o.ratio <= AREA_C && o.betti_equal, "{op:?}: {o:?}");
+    }
 }
 
 #[test]

@@ -55,7 +55,6 @@ fn float_fill_snap_rounding_terminates() {
 /// (3,1)−δ]] } }`: ε from the extent (7·10⁻¹⁰), δ = 5·10⁻¹⁰ off both coordinates. The ring
 /// crosses itself at (3, 3); its even-odd fill in float mode has a curve that meets itself.
 #[test]
-#[ignore = "kernel bug: float even-odd fill of a self-crossing ring returns a curve that is not simple; cargo test --test fuzz_regressions -- --ignored"]
 fn float_fill_of_self_crossing_ring_is_valid() {
     let d = 5e-10;
     let rings = vec![vec![
@@ -73,7 +72,6 @@ fn float_fill_of_self_crossing_ring_is_valid() {
 /// (2,2), (6,0), (1,2), (1,6), (6,2), (0,1), (0,0)]] }`: ε = 10⁻⁹, δ = 5·10⁻¹⁰. The float
 /// even-odd fill has outermost curves of both orientations.
 #[test]
-#[ignore = "kernel bug: float even-odd fill returns outermost curves of both orientations (not a Yin set); cargo test --test fuzz_regressions -- --ignored"]
 fn float_fill_outermost_curves_agree() {
     let d = 5e-10;
     let rings = vec![
@@ -101,7 +99,6 @@ fn float_fill_outermost_curves_agree() {
 /// every boundary point, as Outside in float mode, while the same curves read exactly say
 /// Inside. The fuzzer finds the same on many unbounded float results (A', A∨B).
 #[test]
-#[ignore = "kernel bug: float locate says Outside far (2.5) from the boundary of an unbounded set with a sub-ε sliver hole; cargo test --test fuzz_regressions -- --ignored"]
 fn float_locate_far_from_a_sliver_hole() {
     let d = 5e-10;
     let tol = Tolerance::new(1e-9);

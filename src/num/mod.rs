@@ -99,6 +99,13 @@ pub trait Num:
     /// (in float mode: within ε of it).
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], ctx: &Self::Ctx) -> Ordering;
 
+    /// The context whose predicates decide without tolerance (float mode: ε = 0, the exact sign
+    /// of Shewchuk's adaptive determinant). The edges of a valid set never cross exactly, so
+    /// orders between them are decided with it.
+    fn exact_ctx() -> Self::Ctx {
+        Self::Ctx::default()
+    }
+
     /// The context for an operation on two sets with contexts `a` and `b`.
     fn combine_ctx(a: Self::Ctx, b: Self::Ctx) -> Self::Ctx {
         let _ = b;

@@ -34,19 +34,21 @@ impl<N: Num> Key<'_, N> {
 
 /// Order of two non-crossing, non-vertical edges that are both cut by a vertical line just right
 /// of the sweep position: decided from endpoints alone, so it holds for the edges' whole stay
-/// in the status.
+/// in the status. Decided exactly even in float mode: two edges closer than ε (a sliver) must
+/// still be stacked in their true order, or a point far above the sliver sees the wrong edge.
 fn cmp_edges<N: Num>(s: &Key<'_, N>, t: &Key<'_, N>) -> Ordering {
     if s.lo > t.lo {
         return cmp_edges(t, s).reverse();
     }
     // t starts at or right of s's start: compare t's start (or end) with s's line.
+    let exact = N::exact_ctx();
     let mut o = if s.lo == t.lo {
         Ordering::Equal
     } else {
-        orient(s.lo, s.hi, t.lo, s.ctx)
+        orient(s.lo, s.hi, t.lo, &exact)
     };
     if o == Ordering::Equal {
-        o = orient(s.lo, s.hi, t.hi, s.ctx);
+        o = orient(s.lo, s.hi, t.hi, &exact);
     }
     o.reverse().then(s.id.cmp(&t.id))
 }

@@ -1,19 +1,22 @@
 //! Generators of Yin sets biased to degeneracy, for proptest and quickcheck, and the measured
 //! statistics that show the degenerate cases really occur.
 //!
-//! A [`Shape`] is a short program on a small integer grid (coordinates 0..=6): starting from 0̂,
-//! each [`Step`] joins or subtracts a primitive, and the result may be complemented. The
-//! primitives are rectangles, half-rectangles cut by a diagonal, diamonds (all edges slanted),
-//! general lattice triangles, and 3×3 blocks of unit cells traced by the independent cell
-//! oracle (which gives holes, several components, corner contacts and islands in holes without
-//! relying on the kernel). Because the grid is tiny, independently drawn primitives share
-//! vertices, overlap along collinear edges and touch at points all the time.
+//! A [`Shape`] is a short program on a small integer grid (coordinates 0..=6, shifted by at most
+//! one): starting from 0̂, each [`Step`] joins or subtracts a primitive (the first step joins),
+//! and the result may be complemented (unbounded sets, 1̂). The primitives are rectangles,
+//! half-rectangles cut by a diagonal, diamonds (all edges slanted), general lattice triangles
+//! (crossings at non-integer rational points), 3×3 blocks of unit cells traced by the
+//! independent cell oracle (several components, corner contacts, a hole), and frames given
+//! directly by their curves (a hole; an island inside a hole; an island touching its hole at
+//! four points; a hole touching the outer curve, seed 000 Fig. 1). Because the grid is tiny,
+//! independently drawn primitives share vertices, overlap along collinear edges and touch at
+//! points all the time. Every intermediate result of a program must pass the validator.
 //!
 //! Pairs and triples are biased further: the second (third) shape is often *derived* from the
-//! first by keeping some of its steps (coincident curves, equal orientation), flipping join and
-//! subtract (coincident curves, opposite orientation), shifting by one unit (collinear partial
-//! overlaps, touching corners) and adding steps. Shrinking works on the programs: fewer steps,
-//! smaller primitives, no complement.
+//! first by keeping some of its steps (coincident curves, equal orientation), swapping join and
+//! subtract or complementing the whole program (coincident curves, opposite orientation),
+//! shifting by one unit (collinear partial overlaps, touching corners) and adding steps.
+//! Shrinking works on the programs: fewer steps, smaller primitives, no complement.
 
 use super::cells::{Cells, Complex};
 use super::Y;
