@@ -39,9 +39,16 @@ impl<N: Num> Curve<N> {
         twice_signed_area(&self.vertices)
     }
 
-    /// True if counterclockwise, i.e. positively oriented (seed 000 Def. 3.6).
+    /// True if counterclockwise, i.e. positively oriented (seed 000 Def. 3.6): decided by the
+    /// turn at the lexicographically smallest vertex (the first one), which is convex on a
+    /// simple curve; O(1), where the signed area would sum numbers of ever-growing size.
     pub fn is_positive(&self) -> bool {
-        self.twice_signed_area().sign() == Ordering::Greater
+        let v = &self.vertices;
+        let n = v.len();
+        match orient(&v[n - 1], &v[0], &v[1 % n], &N::exact_ctx()) {
+            Ordering::Equal => self.twice_signed_area().sign() == Ordering::Greater,
+            turn => turn == Ordering::Greater,
+        }
     }
 
     /// The bounding box.

@@ -41,16 +41,25 @@ impl Betti {
 
 /// Parent of each curve in the Hasse diagram of inclusion (seed 002 Alg. 3): the smallest curve
 /// whose bounded region contains it. Curves must be pairwise almost disjoint with every touching
-/// point a vertex of each curve through it.
+/// point a vertex of each curve through it. The curves containing a curve form a chain, so the
+/// smallest of them is the one that lies inside the most curves (no areas are compared: exact
+/// areas of curves through many crossing points are numbers of ever-growing size).
 pub(crate) fn parents<N: Num>(curves: &[Curve<N>], ctx: &N::Ctx) -> Vec<Option<usize>> {
     let m = curves.len();
     let boxes: Vec<BBox<N>> = curves.iter().map(|c| c.bbox()).collect();
-    let areas: Vec<N> = curves.iter().map(|c| abs(c.twice_signed_area())).collect();
     let samples: Vec<Point<N>> = curves.iter().map(|c| c.sample()).collect();
-    let mut parent: Vec<Option<usize>> = vec![None; m];
+    // Curves by the left side of their boxes: a curve inside curve i has its left side in
+    // [left(i), right(i)].
+    let mut by_left: Vec<usize> = (0..m).collect();
+    by_left.sort_by(|&a, &b| boxes[a].min.x.cmp(&boxes[b].min.x));
+    let mut containing: Vec<Vec<usize>> = vec![Vec::new(); m];
     for i in 0..m {
-        let candidates: Vec<usize> = (0..m)
-            .filter(|&j| j != i && areas[j] < areas[i] && boxes[i].contains_box(&boxes[j]))
+        let from = by_left.partition_point(|&j| boxes[j].min.x < boxes[i].min.x);
+        let to = by_left.partition_point(|&j| boxes[j].min.x <= boxes[i].max.x);
+        let candidates: Vec<usize> = by_left[from..to]
+            .iter()
+            .copied()
+            .filter(|&j| j != i && boxes[i].contains_box(&boxes[j]))
             .collect();
         if candidates.is_empty() {
             continue;
@@ -63,12 +72,15 @@ pub(crate) fn parents<N: Num>(curves: &[Curve<N>], ctx: &N::Ctx) -> Vec<Option<u
             .collect();
         let located = locate_in_edges(&edges, false, &queries, ctx);
         for (&j, loc) in candidates.iter().zip(located) {
-            if loc == Location::Inside && parent[j].is_none_or(|p| areas[i] < areas[p]) {
-                parent[j] = Some(i);
+            if loc == Location::Inside {
+                containing[j].push(i);
             }
         }
     }
-    parent
+    containing
+        .iter()
+        .map(|c| c.iter().copied().max_by_key(|&i| containing[i].len()))
+        .collect()
 }
 
 /// The atoms of a realizable spadjor (seed 000 Lemma 3.18): R2A-a, each positive curve with the
@@ -102,12 +114,4 @@ pub(crate) fn atoms(positive: &[bool], parent: &[Option<usize>]) -> Vec<Atom> {
         atoms.push(unbounded);
     }
     atoms
-}
-
-fn abs<N: Num>(v: N) -> N {
-    if v.sign() == std::cmp::Ordering::Less {
-        -v
-    } else {
-        v
-    }
 }

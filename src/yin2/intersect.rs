@@ -42,45 +42,36 @@ pub fn intersections<N: Num>(
         .collect()
 }
 
-/// The pairs of edges whose bounding boxes meet, by a sweep in x over the edges' extents with
-/// an active list: complete whatever the arithmetic, O(n log n + K) for K box pairs.
+/// The pairs of edges whose bounding boxes meet, from an R*-tree of the boxes (`rstar`):
+/// complete whatever the arithmetic (each box is widened by an ulp around its `f64` image,
+/// exact for floats), O(n log n + K) for K box pairs in practice.
 fn by_extents<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
-    fn lo<N: Num>(e: &Edge<N>) -> &Point<N> {
-        if e.0 <= e.1 {
-            &e.0
-        } else {
-            &e.1
-        }
-    }
-    fn hi_x<N: Num>(e: &Edge<N>) -> &N {
-        if e.0 <= e.1 {
-            &e.1.x
-        } else {
-            &e.0.x
-        }
-    }
-    fn y_range<N: Num>(e: &Edge<N>) -> (&N, &N) {
-        if e.0.y <= e.1.y {
-            (&e.0.y, &e.1.y)
-        } else {
-            (&e.1.y, &e.0.y)
-        }
-    }
-    let mut order: Vec<usize> = (0..edges.len()).collect();
-    order.sort_by(|&i, &j| lo(&edges[i]).cmp(lo(&edges[j])));
-    let mut active: Vec<usize> = Vec::new();
+    use rstar::{primitives::GeomWithData, RTree, AABB};
+    let boxes: Vec<AABB<[f64; 2]>> = edges
+        .iter()
+        .map(|(a, b)| {
+            let (x, y) = ([a.x.to_f64(), b.x.to_f64()], [a.y.to_f64(), b.y.to_f64()]);
+            AABB::from_corners(
+                [x[0].min(x[1]).next_down(), y[0].min(y[1]).next_down()],
+                [x[0].max(x[1]).next_up(), y[0].max(y[1]).next_up()],
+            )
+        })
+        .collect();
+    let tree = RTree::bulk_load(
+        boxes
+            .iter()
+            .enumerate()
+            .map(|(i, b)| GeomWithData::new(rstar::primitives::Rectangle::from_aabb(*b), i))
+            .collect(),
+    );
     let mut out = Vec::new();
-    for &i in &order {
-        let x = &lo(&edges[i]).x;
-        active.retain(|&j| hi_x(&edges[j]) >= x);
-        let (y0, y1) = y_range(&edges[i]);
-        for &j in &active {
-            let (z0, z1) = y_range(&edges[j]);
-            if z1 >= y0 && z0 <= y1 {
-                out.push((i.min(j), i.max(j)));
-            }
-        }
-        active.push(i);
+    for (i, b) in boxes.iter().enumerate() {
+        out.extend(
+            tree.locate_in_envelope_intersecting(b)
+                .map(|g| g.data)
+                .filter(|&j| j > i)
+                .map(|j| (i, j)),
+        );
     }
     out
 }

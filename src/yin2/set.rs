@@ -5,7 +5,6 @@ use super::hasse::{atoms, parents, Atom, Betti};
 use super::locate::{locate_in_edges, Location};
 use crate::kernel::{BBox, Point};
 use crate::num::Num;
-use std::cmp::Ordering;
 use std::collections::HashSet;
 use std::hash::{Hash, Hasher};
 
@@ -55,10 +54,9 @@ impl<N: Num> Spadjor<N> {
         let parent = parents(&curves, ctx);
         let atoms = atoms(&positive, &parent);
         let betti = Betti::of_atoms(&atoms);
-        let total: N = curves
-            .iter()
-            .fold(N::zero(), |acc, c| acc + c.twice_signed_area());
-        let bounded = total.sign() == Ordering::Greater;
+        // Bounded iff the outermost curves are positive (seed 000 Lemma 3.18: else the
+        // unbounded atom 𝒥⁻ is there).
+        let bounded = (0..curves.len()).any(|i| parent[i].is_none() && positive[i]);
         (
             Spadjor {
                 curves,
