@@ -1,12 +1,118 @@
-//! The default exact backend: `num-rational`'s big rationals.
+//! The default exact backend: `num-rational`'s big rationals, compared through a
+//! floating-point filter.
 
 use super::{exact_orient, filtered_orient, Literal, Num, NumError};
 use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// Exact rational coordinates (the default backend).
-pub type Rational = num_rational::BigRational;
+/// Exact rational coordinates (the default backend): a `num-rational` big rational, always in
+/// lowest terms with a positive denominator. Its order is decided from `f64` approximations
+/// when they are far enough apart, exactly (by cross-multiplying) otherwise; `num-rational`'s
+/// own order expands continued fractions, and dominated exact-mode profiles.
+#[derive(Clone, PartialEq, Eq, Hash, Default)]
+pub struct Rational(BigRational);
+
+impl Rational {
+    /// `numer / denom` in lowest terms (panics if `denom` is zero, like `num-rational`).
+    pub fn new(numer: BigInt, denom: BigInt) -> Rational {
+        Rational(BigRational::new(numer, denom))
+    }
+
+    /// The integer `n`.
+    pub fn from_integer(n: BigInt) -> Rational {
+        Rational(BigRational::from_integer(n))
+    }
+
+    /// The exact value of a finite `f64` (`None` for NaN and infinities).
+    pub fn from_float(v: f64) -> Option<Rational> {
+        BigRational::from_float(v).map(Rational)
+    }
+
+    /// The numerator (lowest terms; carries the sign).
+    pub fn numer(&self) -> &BigInt {
+        self.0.numer()
+    }
+
+    /// The denominator (lowest terms; positive).
+    pub fn denom(&self) -> &BigInt {
+        self.0.denom()
+    }
+}
+
+impl From<BigRational> for Rational {
+    fn from(v: BigRational) -> Rational {
+        Rational(v)
+    }
+}
+
+impl fmt::Display for Rational {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl fmt::Debug for Rational {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl Ord for Rational {
+    fn cmp(&self, other: &Self) -> Ordering {
+        if self.denom() == other.denom() {
+            return self.numer().cmp(other.numer());
+        }
+        // Each approximation is within 3 ulps of its value (when neither over- nor underflows):
+        // 8 ulps of the larger magnitude apart decides.
+        let (a, b) = (approx(self), approx(other));
+        let m = a.abs().max(b.abs());
+        if a.is_finite() && b.is_finite() && m > 1e-290 && (a - b).abs() > 8.0 * f64::EPSILON * m {
+            return if a < b {
+                Ordering::Less
+            } else {
+                Ordering::Greater
+            };
+        }
+        (self.numer() * other.denom()).cmp(&(other.numer() * self.denom()))
+    }
+}
+
+impl PartialOrd for Rational {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+/// The arithmetic operators, by value, from `num-rational`'s.
+macro_rules! binary_op {
+    ($($tr:ident $m:ident),*) => {$(
+        impl $tr for Rational {
+            type Output = Rational;
+            fn $m(self, o: Rational) -> Rational {
+                Rational(self.0.$m(o.0))
+            }
+        }
+    )*};
+}
+binary_op!(Add add, Sub sub, Mul mul, Div div);
+
+impl std::iter::Sum for Rational {
+    fn sum<I: Iterator<Item = Rational>>(iter: I) -> Rational {
+        Rational(iter.map(|r| r.0).sum())
+    }
+}
+
+impl Neg for Rational {
+    type Output = Rational;
+    fn neg(self) -> Rational {
+        Rational(-self.0)
+    }
+}
 
 /// The big integer of a signed string of decimal digits (checked by [`Literal::parse`]).
 fn digits(s: &str) -> BigInt {
@@ -14,7 +120,7 @@ fn digits(s: &str) -> BigInt {
 }
 
 /// `v` within 3 ulps (numerator and denominator rounded, then divided: cheaper than the
-/// correctly rounded `to_f64`); NaN or infinite when out of range, which the filter rejects.
+/// correctly rounded `to_f64`); NaN or infinite when out of range, which the filters reject.
 fn approx(v: &Rational) -> f64 {
     let n = ToPrimitive::to_f64(v.numer()).unwrap_or(f64::NAN);
     let d = ToPrimitive::to_f64(v.denom()).unwrap_or(f64::NAN);
@@ -29,6 +135,16 @@ impl Num for Rational {
         Rational::from_integer(BigInt::from(v))
     }
 
+    fn half(&self) -> Self {
+        // Lowest terms without a gcd: halve an even numerator, else double the denominator.
+        let (n, d) = (self.numer(), self.denom());
+        Rational(if n.is_even() {
+            BigRational::new_raw(n / 2, d.clone())
+        } else {
+            BigRational::new_raw(n.clone(), d * 2)
+        })
+    }
+
     fn from_f64(v: f64) -> Result<Self, NumError> {
         Rational::from_float(v).ok_or(NumError::NotFinite(v))
     }
@@ -39,13 +155,13 @@ impl Num for Rational {
     }
 
     fn to_f64(&self) -> f64 {
-        ToPrimitive::to_f64(self).unwrap_or(f64::NAN)
+        ToPrimitive::to_f64(&self.0).unwrap_or(f64::NAN)
     }
 
     fn sign(&self) -> Ordering {
-        if self.is_zero() {
+        if self.0.is_zero() {
             Ordering::Equal
-        } else if self.is_positive() {
+        } else if self.0.is_positive() {
             Ordering::Greater
         } else {
             Ordering::Less
@@ -84,5 +200,44 @@ mod tests {
         assert_ne!(x, Rational::parse("0.1").unwrap());
         assert_eq!(Num::to_f64(&x), 0.1);
         assert!(Rational::from_f64(f64::NAN).is_err());
+    }
+
+    proptest::proptest! {
+        /// The filtered order is `num-rational`'s order: on random fractions, on fractions
+        /// a few ulps apart, and on equal values written with different denominators.
+        #[test]
+        fn filtered_order_is_the_exact_order(
+            n in -1_000_000_000_000i64..1_000_000_000_000,
+            d in 1i64..1_000_000_000_000,
+            m in -1_000_000_000_000i64..1_000_000_000_000,
+            e in 1i64..1_000_000_000_000,
+            k in -3i64..=3,
+            big in 0u32..200,
+        ) {
+            let scale = BigInt::from(2).pow(big);
+            let q = |n: BigInt, d: BigInt| BigRational::new(n * &scale, d);
+            let (n, d, m, e, k) = (BigInt::from(n), BigInt::from(d), BigInt::from(m), BigInt::from(e), BigInt::from(k));
+            let cases = [
+                (q(n.clone(), d.clone()), q(m, e.clone())),
+                // n/d against (n·e + k)/(d·e): equal or within ~1e-24 of each other.
+                (q(n.clone(), d.clone()), q(&n * &e + k, &d * &e)),
+                (q(n.clone(), d.clone()), BigRational::new(&n * &scale * 3, d * 3)),
+            ];
+            for (x, y) in cases {
+                let (a, b) = (Rational(x.clone()), Rational(y.clone()));
+                proptest::prop_assert_eq!(a.cmp(&b), x.cmp(&y));
+                proptest::prop_assert_eq!(b.cmp(&a), y.cmp(&x));
+            }
+        }
+    }
+
+    #[test]
+    fn half_stays_in_lowest_terms() {
+        for (n, d) in [(3, 4), (6, 5), (-7, 2), (0, 1), (10, 3)] {
+            let x = Rational::new(n.into(), d.into());
+            let h = x.half();
+            assert_eq!(h, Rational::new(n.into(), (2 * d).into()));
+            assert_eq!(h.clone() + h, x);
+        }
     }
 }

@@ -74,15 +74,34 @@ impl<N: Num> Curve<N> {
     }
 }
 
-/// Twice the signed area of a vertex cycle.
+/// Twice the signed area of a vertex cycle (shoelace formula).
 pub(crate) fn twice_signed_area<N: Num>(v: &[Point<N>]) -> N {
     let n = v.len();
-    let mut acc = N::zero();
-    for k in 0..n {
-        let (p, q) = (&v[k], &v[(k + 1) % n]);
-        acc = acc + (p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone());
+    balanced_sum(
+        (0..n)
+            .map(|k| {
+                let (p, q) = (&v[k], &v[(k + 1) % n]);
+                p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone()
+            })
+            .collect(),
+    )
+}
+
+/// The sum of `terms`, added pairwise in a balanced tree: exact sums of many fractions with
+/// unrelated denominators then cost O(M(s) log n) for a result of size s, not O(n · s).
+pub(crate) fn balanced_sum<N: Num>(mut terms: Vec<N>) -> N {
+    while terms.len() > 1 {
+        let mut next = Vec::with_capacity(terms.len().div_ceil(2));
+        let mut it = terms.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => a + b,
+                None => a,
+            });
+        }
+        terms = next;
     }
-    acc
+    terms.pop().unwrap_or_else(N::zero)
 }
 
 /// Canonical form of one curve (seed 000 Thm 3.21 up to start vertex and straight runs):

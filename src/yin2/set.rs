@@ -1,6 +1,6 @@
 //! The Jordan space {0̂, 1̂, realizable spadjors} (seed 000 Def. 3.19) as the type `YinSet2`.
 
-use super::curve::{canonical_curve, Curve};
+use super::curve::{balanced_sum, canonical_curve, Curve};
 use super::hasse::{atoms, parents, Atom, Betti};
 use super::locate::{locate_in_edges, Location};
 use crate::kernel::{BBox, Point};
@@ -177,12 +177,9 @@ impl<N: Num> YinSet2<N> {
         match &self.repr {
             Repr::Empty => Some(N::zero()),
             Repr::Full => None,
-            Repr::Spadjor(s) if s.bounded => Some(
-                s.curves
-                    .iter()
-                    .fold(N::zero(), |acc, c| acc + c.twice_signed_area())
-                    .half(),
-            ),
+            Repr::Spadjor(s) if s.bounded => {
+                Some(balanced_sum(s.curves.iter().map(|c| c.twice_signed_area()).collect()).half())
+            }
             Repr::Spadjor(_) => None,
         }
     }
