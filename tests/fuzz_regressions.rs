@@ -121,3 +121,49 @@ fn float_locate_far_from_a_sliver_hole() {
         "float locate disagrees with exact locate\n{complement:?}"
     );
 }
+
+/// The float fill of `rings` at ε passes the validator.
+fn float_fill_is_valid(rings: &[&[(f64, f64)]], rule: FillRule, eps: f64) {
+    let rings = rings
+        .iter()
+        .map(|r| r.iter().map(|&(x, y)| f(x, y)).collect())
+        .collect();
+    let set = YinSet2::from_rings_filled_with(rings, rule, Tolerance::new(eps))
+        .expect("finite rings are always filled");
+    valid_float(&set);
+}
+
+/// ops_float (campaign of 2026-11-21, `crash-184202cb…`), B = `Shape { flags: 7 (complement,
+/// fill only, non-zero), … }` at ε = 0.25, δ = 2⁻³⁰, minimized to three triangles (one vertex
+/// δ off the grid): the non-zero fill's snap rounding leaves two curves crossing at (31/8, 7/8).
+#[test]
+#[ignore = "kernel bug: float non-zero fill at a coarse ε returns crossing curves; cargo test --test fuzz_regressions -- --ignored"]
+fn float_nonzero_fill_of_three_triangles_is_valid() {
+    let d = 2f64.powi(-30);
+    float_fill_is_valid(
+        &[
+            &[(3.0, 0.0), (7.0, 4.0), (4.0, 2.0)],
+            &[(3.0, 4.0), (4.0 + d, 0.0), (3.0, 7.0)],
+            &[(7.0, 0.0), (6.0, 0.0), (1.0, 2.0)],
+        ],
+        FillRule::NonZero,
+        0.25,
+    );
+}
+
+/// ops_float (campaign of 2026-11-21, `crash-3570f85e…`), A = `Shape { flags: 0, … }` at
+/// ε = 0.25, δ = ε/2, minimized to three rings on the grid: the even-odd fill's snap rounding
+/// leaves two curves crossing at (11/8, 17/8).
+#[test]
+#[ignore = "kernel bug: float even-odd fill at a coarse ε returns crossing curves; cargo test --test fuzz_regressions -- --ignored"]
+fn float_even_odd_fill_with_a_doubled_edge_is_valid() {
+    float_fill_is_valid(
+        &[
+            &[(1.0, 3.0), (7.0, 4.0)],
+            &[(2.0, 0.0), (0.0, 7.0), (1.0, 4.0)],
+            &[(7.0, 4.0), (1.0, 2.0), (2.0, 2.0), (1.0, 2.0), (3.0, 4.0)],
+        ],
+        FillRule::EvenOdd,
+        0.25,
+    );
+}
