@@ -135,9 +135,10 @@ fn float_fill_is_valid(rings: &[&[(f64, f64)]], rule: FillRule, eps: f64) {
 
 /// ops_float (campaign of 2026-11-21, `crash-184202cb…`), B = `Shape { flags: 7 (complement,
 /// fill only, non-zero), … }` at ε = 0.25, δ = 2⁻³⁰, minimized to three triangles (one vertex
-/// δ off the grid): the non-zero fill's snap rounding leaves two curves crossing at (31/8, 7/8).
+/// δ off the grid): the non-zero fill's snap rounding left two curves crossing at (31/8, 7/8)
+/// (two segments through the same pixel corner zigzagged across each other through closed
+/// pixels; fixed by half-open pixels in `snap::meets_pixel`).
 #[test]
-#[ignore = "kernel bug: float non-zero fill at a coarse ε returns crossing curves; cargo test --test fuzz_regressions -- --ignored"]
 fn float_nonzero_fill_of_three_triangles_is_valid() {
     let d = 2f64.powi(-30);
     float_fill_is_valid(
@@ -153,9 +154,8 @@ fn float_nonzero_fill_of_three_triangles_is_valid() {
 
 /// ops_float (campaign of 2026-11-21, `crash-3570f85e…`), A = `Shape { flags: 0, … }` at
 /// ε = 0.25, δ = ε/2, minimized to three rings on the grid: the even-odd fill's snap rounding
-/// leaves two curves crossing at (11/8, 17/8).
+/// left two curves crossing at (11/8, 17/8) (the same bug).
 #[test]
-#[ignore = "kernel bug: float even-odd fill at a coarse ε returns crossing curves; cargo test --test fuzz_regressions -- --ignored"]
 fn float_even_odd_fill_with_a_doubled_edge_is_valid() {
     float_fill_is_valid(
         &[

@@ -170,8 +170,12 @@ fn reroute(s: (G, G), hot: &BTreeSet<G>, forced: &BTreeSet<G>) -> Vec<(G, G)> {
     path.windows(2).map(|w| (w[0], w[1])).collect()
 }
 
-/// True if the segment `ab` meets the closed pixel square of side 1 centred at `c`
-/// (in doubled coordinates the square is [2c − 1, 2c + 1]²).
+/// True if the segment `ab` meets the half-open pixel square of side 1 centred at `c`
+/// (in doubled coordinates [2c − 1, 2c + 1)², the pixel that [`crossing_pixel`] rounds to).
+/// Half-open pixels partition the plane, so a segment through a pixel corner meets one pixel
+/// there, not four: closed squares let two segments through the same corner zigzag across
+/// each other. The square is the closed one shifted by (−δ, −δ²) for an infinitesimal δ > 0;
+/// endpoints (even) never tie with sides (odd), so only the corner side tests need it.
 fn meets_pixel(a: G, b: G, c: G) -> bool {
     let (ax, ay, bx, by) = (
         2 * a.0 as i128,
@@ -183,7 +187,13 @@ fn meets_pixel(a: G, b: G, c: G) -> bool {
     if ax.max(bx) < cx - 1 || ax.min(bx) > cx + 1 || ay.max(by) < cy - 1 || ay.min(by) > cy + 1 {
         return false;
     }
-    let side = |px: i128, py: i128| ((bx - ax) * (py - ay) - (by - ay) * (px - ax)).signum();
+    let (dx, dy) = (bx - ax, by - ay);
+    // Sign of d × (p − (δ, δ²) − a) = d × (p − a) + δ·dy − δ²·dx.
+    let side = |px: i128, py: i128| match (dx * (py - ay) - dy * (px - ax)).signum() {
+        0 if dy != 0 => dy.signum(),
+        0 => -dx.signum(),
+        s => s,
+    };
     let s = [
         side(cx - 1, cy - 1),
         side(cx + 1, cy - 1),
