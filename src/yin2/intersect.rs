@@ -8,7 +8,7 @@
 // ahead. Every decision is `orient`, `classify` or the order of points.
 
 use crate::kernel::{classify, orient, Contact, Point};
-use crate::num::Num;
+use crate::num::{Num, Rational};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 
@@ -19,7 +19,11 @@ pub type Edge<N> = (Point<N>, Point<N>);
 ///
 /// Exact mode: Bentley–Ottmann, O((n + I) log n). It keeps its status ordered through the
 /// crossing points it constructs, so it needs them exact; with rounded ones (float mode) it can
-/// miss a pair, so float mode sweeps the edges' extents instead ([`by_extents`]).
+/// miss a pair, so float mode takes the pairs of edges whose boxes meet ([`by_extents`]), and,
+/// when those exceed [`BOX_PAIRS_PER_EDGE`] per edge (long slanted edges side by side: their
+/// number grows like n²), the meeting pairs of the edges' exact images by Bentley–Ottmann
+/// ([`exact_image_pairs`]). That fallback finds every pair that meets exactly but not the pairs
+/// that only come within ε, which float mode's snap rounding then resolves on the ε-grid.
 pub fn intersections<N: Num>(
     edges: &[Edge<N>],
     ctx: &N::Ctx,
@@ -28,7 +32,8 @@ pub fn intersections<N: Num>(
     let mut pairs = if N::EXACT {
         Sweep::new(edges, ctx).run()
     } else {
-        by_extents(edges)
+        by_extents(edges, BOX_PAIRS_PER_EDGE * edges.len() + 4096)
+            .unwrap_or_else(|| exact_image_pairs(edges))
     };
     pairs.sort_unstable();
     pairs.dedup();
@@ -42,10 +47,14 @@ pub fn intersections<N: Num>(
         .collect()
 }
 
+/// Float mode's budget of box pairs per edge before it falls back to [`exact_image_pairs`].
+pub const BOX_PAIRS_PER_EDGE: usize = 256;
+
 /// The pairs of edges whose bounding boxes meet, from an R*-tree of the boxes (`rstar`):
 /// complete whatever the arithmetic (each box is widened by an ulp around its `f64` image,
-/// exact for floats), O(n log n + K) for K box pairs in practice.
-fn by_extents<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
+/// exact for floats), O(n log n + K) for K box pairs in practice; `None` once K passes
+/// `budget`.
+fn by_extents<N: Num>(edges: &[Edge<N>], budget: usize) -> Option<Vec<(usize, usize)>> {
     use rstar::{primitives::GeomWithData, RTree, AABB};
     let boxes: Vec<AABB<[f64; 2]>> = edges
         .iter()
@@ -72,8 +81,22 @@ fn by_extents<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
                 .filter(|&j| j > i)
                 .map(|j| (i, j)),
         );
+        if out.len() > budget {
+            return None;
+        }
     }
-    out
+    Some(out)
+}
+
+/// The meeting pairs of the edges' exact images (their `f64` coordinates read as the rationals
+/// they are), by Bentley–Ottmann in O((n + I) log n).
+fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
+    let q = |v: &N| Rational::from_f64(v.to_f64()).unwrap_or_else(|_| Rational::zero());
+    let image: Vec<Edge<Rational>> = edges
+        .iter()
+        .map(|(a, b)| (Point::new(q(&a.x), q(&a.y)), Point::new(q(&b.x), q(&b.y))))
+        .collect();
+    Sweep::new(&image, &()).run()
 }
 
 /// No node (the empty treap).
@@ -553,6 +576,38 @@ mod tests {
         #[test]
         fn float_mode_equals_brute_force(s in segs(false)) {
             check_float(&s);
+        }
+
+        /// Float mode's fallback for too many box pairs finds every pair that meets exactly,
+        /// jittered by half a unit in the last place or not.
+        #[test]
+        fn float_fallback_finds_every_exact_contact(s in segs(false), jitter in 0u8..3) {
+            let d = [0.0, 2f64.powi(-50), 0.25][usize::from(jitter)];
+            let edges: Vec<Edge<Float>> = s
+                .iter()
+                .enumerate()
+                .map(|(k, &((a, b), (c, e)))| {
+                    let f = |v: i64, i: usize| Float::new(v as f64 + if (k + i) % 3 == 0 { d } else { 0.0 });
+                    (Point::new(f(a, 0), f(b, 1)), Point::new(f(c, 2), f(e, 3)))
+                })
+                .filter(|(a, b)| a != b)
+                .collect();
+            let exact = Tolerance::default();
+            let classified = |pairs: Vec<(usize, usize)>| -> Vec<_> {
+                let mut v: Vec<_> = pairs
+                    .into_iter()
+                    .map(|(i, j)| (i, j, classify(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, &exact)))
+                    .filter(|(_, _, c)| *c != Contact::Disjoint)
+                    .collect();
+                v.sort_by_key(|&(i, j, _)| (i, j));
+                v.dedup_by_key(|&mut (i, j, _)| (i, j));
+                v
+            };
+            prop_assert_eq!(by_extents(&edges, 0).is_none(), edges.len() > 1 && !by_extents(&edges, usize::MAX).unwrap().is_empty());
+            prop_assert_eq!(
+                classified(exact_image_pairs(&edges)),
+                classified(by_extents(&edges, usize::MAX).unwrap())
+            );
         }
     }
 
