@@ -255,33 +255,75 @@ fn binary(
         r.case(group, "exact", size, || exact(ea, eb), show_set);
     }
     r.case(group, "float", size, || ours(fa, fb), show_set);
-    let (ia, ib) = (
-        contenders::i_overlay_input(a),
-        contenders::i_overlay_input(b),
-    );
-    r.case(
+    peer(
+        r,
         group,
         "i_overlay",
         size,
-        || contenders::i_overlay_op(&ia, &ib, op),
-        |s| show_area(contenders::i_overlay_area(s)),
+        contenders::i_overlay_input,
+        a,
+        b,
+        |x, y| contenders::i_overlay_op(x, y, op),
+        |s| contenders::i_overlay_area(s),
     );
-    let (ga, gb) = (contenders::geo_input(a), contenders::geo_input(b));
-    r.case(
+    peer(
+        r,
         group,
         "geo",
         size,
-        || contenders::geo_op(&ga, &gb, op),
-        |m| show_area(contenders::geo_area(m)),
+        contenders::geo_input,
+        a,
+        b,
+        |x, y| contenders::geo_op(x, y, op),
+        contenders::geo_area,
     );
-    let (ca, cb) = (contenders::clipper_input(a), contenders::clipper_input(b));
-    r.case(
+    peer(
+        r,
         group,
         "clipper2",
         size,
-        || contenders::clipper_op(&ca, &cb, op),
-        |p| show_area(contenders::clipper_area(p)),
+        contenders::clipper_input,
+        a,
+        b,
+        |x, y| contenders::clipper_op(x, y, op),
+        contenders::clipper_area,
     );
+}
+
+/// One peer's case: its input built from the curves (untimed), then `op` on it.
+#[allow(clippy::too_many_arguments)]
+fn peer<I, O>(
+    r: &mut Runner,
+    group: &str,
+    name: &str,
+    size: impl Display,
+    input: impl Fn(&Curves) -> I,
+    a: &Curves,
+    b: &Curves,
+    op: impl Fn(&I, &I) -> O,
+    area: impl Fn(&O) -> f64,
+) {
+    let (ia, ib) = (input(a), input(b));
+    r.case(group, name, size, || op(&ia, &ib), |o| show_area(area(o)));
+}
+
+/// The meet and the join of one workload, by every contender (see [`binary`]).
+#[allow(clippy::too_many_arguments)]
+fn meet_and_join(
+    r: &mut Runner,
+    workload: &str,
+    size: impl Display + Copy,
+    a: &Curves,
+    b: &Curves,
+    ea: Option<&YinSet2<Rational>>,
+    eb: Option<&YinSet2<Rational>>,
+    fa: &YinSet2<Float>,
+    fb: &YinSet2<Float>,
+) {
+    for (op, name) in [(Op::Meet, "meet"), (Op::Join, "join")] {
+        let group = format!("{workload}/{name}");
+        binary(r, &group, size, op, a, b, ea, eb, fa, fb);
+    }
 }
 
 /// W1: two random star-shaped polygons of n vertices each.
@@ -307,30 +349,7 @@ fn w1(r: &mut Runner) {
             tf.as_secs_f64(),
             te.as_secs_f64()
         );
-        binary(
-            r,
-            "W1/meet",
-            n,
-            Op::Meet,
-            &a,
-            &b,
-            Some(&ea),
-            Some(&eb),
-            &fa,
-            &fb,
-        );
-        binary(
-            r,
-            "W1/join",
-            n,
-            Op::Join,
-            &a,
-            &b,
-            Some(&ea),
-            Some(&eb),
-            &fa,
-            &fb,
-        );
+        meet_and_join(r, "W1", n, &a, &b, Some(&ea), Some(&eb), &fa, &fb);
         r.case("W1/complement", "exact", n, || ea.complement(), show_set);
         r.case("W1/complement", "float", n, || fa.complement(), show_set);
         // Betti numbers of the meet: the exact meet only where it was measured.
@@ -441,30 +460,7 @@ fn w3(r: &mut Runner) {
             common::vertices(&b),
             contacts(&fa, &fb)
         );
-        binary(
-            r,
-            "W3/meet",
-            name,
-            Op::Meet,
-            &a,
-            &b,
-            Some(&ea),
-            Some(&eb),
-            &fa,
-            &fb,
-        );
-        binary(
-            r,
-            "W3/join",
-            name,
-            Op::Join,
-            &a,
-            &b,
-            Some(&ea),
-            Some(&eb),
-            &fa,
-            &fb,
-        );
+        meet_and_join(r, "W3", name, &a, &b, Some(&ea), Some(&eb), &fa, &fb);
     }
 }
 
@@ -483,30 +479,7 @@ fn w4(r: &mut Runner) {
         contacts(&fa, &fb)
     );
     let s = "panda_mickey";
-    binary(
-        r,
-        "W4/meet",
-        s,
-        Op::Meet,
-        &a,
-        &b,
-        Some(&ea),
-        Some(&eb),
-        &fa,
-        &fb,
-    );
-    binary(
-        r,
-        "W4/join",
-        s,
-        Op::Join,
-        &a,
-        &b,
-        Some(&ea),
-        Some(&eb),
-        &fa,
-        &fb,
-    );
+    meet_and_join(r, "W4", s, &a, &b, Some(&ea), Some(&eb), &fa, &fb);
     r.case(
         "W4/complement",
         "exact",
