@@ -167,3 +167,27 @@ fn float_even_odd_fill_with_a_doubled_edge_is_valid() {
         0.25,
     );
 }
+
+/// parse_wkt (campaign of 2026-11-21, `timeout-d2ca8fe4…`): one self-crossing ring whose
+/// coordinates run from 60 to 2·10⁶⁶. Its exact even-odd fill cuts it into pieces of length
+/// 10⁻⁵⁸ beside (140, 160), and the winding sweep's "first piece above" of two such pieces
+/// meeting at a point points at each other: the walk up the faces cycled, allocating without
+/// bound (a 45 s timeout in the fuzzer). It now stops with a panic naming the bug.
+#[test]
+#[ignore = "kernel bug: first piece above forms a cycle on pieces 1e-58 long; cargo test --test fuzz_regressions -- --ignored"]
+fn exact_fill_of_a_ring_spanning_sixty_orders_of_magnitude() {
+    let text = "POLYGON((94 160, 140 160, 090149 6950670, \
+        222222222222222222222222222222222222222222222222222222222224 160, 140 160, \
+        140 6099950670, \
+        2222222222222222222222222222222222222222222222222222222222222222222.2222222222222222222222222222222222220 4502660, \
+        60 160))";
+    let polygons =
+        yinset::io::wkt::read_polygons::<yinset::num::Rational>(text).expect("valid WKT");
+    let rings: Vec<_> = polygons
+        .into_iter()
+        .flat_map(|p| std::iter::once(p.exterior).chain(p.interiors))
+        .collect();
+    let set = YinSet2::from_rings_filled(rings, FillRule::EvenOdd)
+        .expect("finite rings are always filled");
+    set.validate().expect("valid");
+}

@@ -34,6 +34,11 @@ where
                 break;
             }
             chain.push(q);
+            // A cycle would mean a wrong sweep order: stop instead of growing without bound.
+            assert!(
+                chain.len() <= pieces.len(),
+                "kernel bug: the pieces above piece {k} form a cycle (pinned in tests/fuzz_regressions.rs)"
+            );
             cur = above[q];
         }
         for &q in chain.iter().rev() {
