@@ -4,65 +4,26 @@
 
 mod common;
 use common::gen::{strategies, FeatureStats, Features, Shape};
-use common::laws::{self, Tally};
+use common::laws;
+use common::runner::{cases, run};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, TestCaseError, TestError, TestRunner};
-use std::sync::Mutex;
-
-/// Cases per property (override with the environment variable `AXIOM_CASES`).
-fn cases(default: u32) -> u32 {
-    std::env::var("AXIOM_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(default)
-}
-
-/// Run `check` on `cases` generated values (with shrinking on failure) and report the tally.
-fn run<S: Strategy>(
-    name: &str,
-    n: u32,
-    strategy: S,
-    check: impl Fn(&mut Tally, S::Value) -> Result<(), String>,
-) where
-    S::Value: Clone + std::fmt::Debug,
-{
-    let tally = Mutex::new(Tally::default());
-    let config = Config {
-        cases: n,
-        failure_persistence: None,
-        ..Config::default()
-    };
-    let mut runner = TestRunner::new(config);
-    let result = runner.run(&strategy, |v| {
-        let mut t = Tally::default();
-        let r = check(&mut t, v);
-        tally.lock().unwrap().merge(&t);
-        r.map_err(TestCaseError::fail)
-    });
-    if let Err(e) = result {
-        panic!("{name}: {e}");
-    }
-    eprintln!(
-        "{}",
-        tally
-            .lock()
-            .unwrap()
-            .report(&format!("proptest {name}, {n} cases"))
-    );
-}
 
 #[test]
 fn unary_laws() {
-    run("unary laws", cases(512), strategies::shape(), |t, s| {
-        laws::unary(t, &s.build())
-    });
+    run(
+        "proptest unary laws",
+        cases(512),
+        strategies::shape(),
+        |t, s| laws::unary(t, &s.build()),
+    );
 }
 
 #[test]
 fn binary_laws_and_membership() {
     let pts = laws::probe_points();
     run(
-        "binary laws",
+        "proptest binary laws",
         cases(512),
         strategies::pair(),
         |t, (a, b)| {
@@ -76,7 +37,7 @@ fn binary_laws_and_membership() {
 #[test]
 fn ternary_laws() {
     run(
-        "ternary laws",
+        "proptest ternary laws",
         cases(256),
         strategies::triple(),
         |t, (a, b, c)| laws::ternary(t, &a.build(), &b.build(), &c.build()),

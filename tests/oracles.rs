@@ -13,50 +13,13 @@
 mod common;
 use common::cells::{full_mask, Cells, Complex, Split};
 use common::gen::strategies;
-use common::laws::{self, law, ok, Tally};
+use common::laws::{self, law, ok};
+use common::runner::{cases, run};
 use common::Y;
 use proptest::prelude::*;
-use proptest::test_runner::{Config, TestCaseError, TestRunner};
-use std::sync::Mutex;
 use yinset::kernel::Point;
 use yinset::num::Rational;
 use yinset::yin2::YinSet2;
-
-fn cases(default: u32) -> u32 {
-    std::env::var("AXIOM_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(default)
-}
-
-fn run<S: Strategy>(
-    name: &str,
-    n: u32,
-    strategy: S,
-    check: impl Fn(&mut Tally, S::Value) -> Result<(), String>,
-) where
-    S::Value: Clone + std::fmt::Debug,
-{
-    let tally = Mutex::new(Tally::default());
-    let mut runner = TestRunner::new(Config {
-        cases: n,
-        failure_persistence: None,
-        ..Config::default()
-    });
-    let result = runner.run(&strategy, |v| {
-        let mut t = Tally::default();
-        let r = check(&mut t, v);
-        tally.lock().unwrap().merge(&t);
-        r.map_err(TestCaseError::fail)
-    });
-    if let Err(e) = result {
-        panic!("{name}: {e}");
-    }
-    eprintln!(
-        "{}",
-        tally.lock().unwrap().report(&format!("{name}, {n} cases"))
-    );
-}
 
 /// The subdivisions of the random cell oracle: larger than the exhaustive universes of
 /// proofs/, so that islands inside holes, nested holes and long pinched chains occur.

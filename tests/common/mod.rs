@@ -48,3 +48,4 @@ pub fn valid(y: &Y) -> &Y {
 pub mod cells;
 pub mod gen;
 pub mod laws;
+pub mod runner;
