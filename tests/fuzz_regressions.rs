@@ -169,12 +169,13 @@ fn float_even_odd_fill_with_a_doubled_edge_is_valid() {
 }
 
 /// parse_wkt (campaign of 2026-11-21, `timeout-d2ca8fe4…`): one self-crossing ring whose
-/// coordinates run from 60 to 2·10⁶⁶. Its exact even-odd fill cuts it into pieces of length
-/// 10⁻⁵⁸ beside (140, 160), and the winding sweep's "first piece above" of two such pieces
-/// meeting at a point points at each other: the walk up the faces cycled, allocating without
-/// bound (a 45 s timeout in the fuzzer). It now stops with a panic naming the bug.
+/// coordinates run from 60 to 2·10⁶⁶. Its exact even-odd fill cuts it into pieces 10⁻⁵⁸ long
+/// beside (140, 160), whose orientation tests multiply numbers with denominators beyond `f64`'s
+/// range: the floating-point filter read such a fraction as 0 and decided an orientation
+/// wrongly, the winding sweep's "first piece above" then formed a cycle, and the walk up the
+/// faces allocated without bound (a 45 s timeout in the fuzzer). Fixed in the filter
+/// (`Rational`'s approximation is NaN when a part overflows).
 #[test]
-#[ignore = "kernel bug: first piece above forms a cycle on pieces 1e-58 long; cargo test --test fuzz_regressions -- --ignored"]
 fn exact_fill_of_a_ring_spanning_sixty_orders_of_magnitude() {
     let text = "POLYGON((94 160, 140 160, 090149 6950670, \
         222222222222222222222222222222222222222222222222222222222224 160, 140 160, \

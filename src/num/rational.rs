@@ -120,11 +120,17 @@ fn digits(s: &str) -> BigInt {
 }
 
 /// `v` within 3 ulps (numerator and denominator rounded, then divided: cheaper than the
-/// correctly rounded `to_f64`); NaN or infinite when out of range, which the filters reject.
+/// correctly rounded `to_f64`); NaN when the numerator or the denominator is out of `f64`'s
+/// range, which the filters reject. (A finite numerator over an overflowing denominator would
+/// read as 0 and decide orders wrongly: found by fuzzing, pinned in tests/fuzz_regressions.rs.)
 fn approx(v: &Rational) -> f64 {
     let n = ToPrimitive::to_f64(v.numer()).unwrap_or(f64::NAN);
     let d = ToPrimitive::to_f64(v.denom()).unwrap_or(f64::NAN);
-    n / d
+    if n.is_finite() && d.is_finite() {
+        n / d
+    } else {
+        f64::NAN
+    }
 }
 
 impl Num for Rational {
@@ -229,6 +235,29 @@ mod tests {
                 proptest::prop_assert_eq!(b.cmp(&a), y.cmp(&x));
             }
         }
+    }
+
+    #[test]
+    fn huge_denominators_defer_to_exact_comparison() {
+        // (10³⁰⁰ + 1)/10⁴⁰⁰ ≈ 10⁻¹⁰⁰ has a finite numerator over a denominator that overflows
+        // f64: read as 0 it would order below 10⁻²⁰⁰ and turn orientations around.
+        let big = BigInt::from(10).pow(300) + 1;
+        let a = Rational::new(big, BigInt::from(10).pow(400));
+        let b = Rational::new(1.into(), BigInt::from(10).pow(200));
+        assert!(approx(&a).is_nan());
+        assert_eq!(a.cmp(&b), Ordering::Greater);
+        assert_eq!(b.cmp(&a), Ordering::Less);
+        let (o, x) = (Rational::from_i64(0), Rational::from_i64(1));
+        // (0,0) → (1,0) → (b, a): a point above the x-axis, to the left of the direction.
+        assert_eq!(
+            Rational::orient2d([&o, &o], [&x, &o], [&b, &a], &()),
+            Ordering::Greater
+        );
+        let neg = -a.clone();
+        assert_eq!(
+            Rational::orient2d([&o, &o], [&x, &o], [&b, &neg], &()),
+            Ordering::Less
+        );
     }
 
     #[test]

@@ -37,7 +37,7 @@ where
             // A cycle would mean a wrong sweep order: stop instead of growing without bound.
             assert!(
                 chain.len() <= pieces.len(),
-                "kernel bug: the pieces above piece {k} form a cycle (pinned in tests/fuzz_regressions.rs)"
+                "kernel bug: the pieces above piece {k} form a cycle (a wrong sweep order)"
             );
             cur = above[q];
         }
