@@ -45,7 +45,10 @@ impl<N: Num> Curve<N> {
     pub fn is_positive(&self) -> bool {
         let v = &self.vertices;
         let n = v.len();
-        match orient(&v[n - 1], &v[0], &v[1 % n], &N::exact_ctx()) {
+        if n < 3 {
+            return self.twice_signed_area().sign() == Ordering::Greater;
+        }
+        match orient(&v[n - 1], &v[0], &v[1], &N::exact_ctx()) {
             Ordering::Equal => self.twice_signed_area().sign() == Ordering::Greater,
             turn => turn == Ordering::Greater,
         }
