@@ -8,6 +8,7 @@ use super::set::YinSet2;
 use super::winding::left_windings;
 use crate::kernel::{Contact, Point};
 use crate::num::{Float, Num};
+use rstar::{RTree, SelectionFunction, AABB};
 use std::collections::{BTreeSet, HashMap};
 use std::ops::{Add, Sub};
 
@@ -106,10 +107,11 @@ fn snap_round(segments: Vec<((G, G), usize)>, g: f64) -> Vec<((G, G), usize)> {
     let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
     let mut forced: Vec<BTreeSet<G>> = vec![BTreeSet::new(); segments.len()];
     loop {
+        let pixels = RTree::bulk_load(hot.iter().map(|&(x, y)| [x, y]).collect());
         let mut owner = Vec::new();
         let mut fragments = Vec::new();
         for (k, &(s, label)) in segments.iter().enumerate() {
-            for f in reroute(s, &hot, &forced[k]) {
+            for f in reroute(s, &pixels, &forced[k]) {
                 owner.push(k);
                 fragments.push((f, label));
             }
@@ -142,21 +144,20 @@ fn inside_projection(s: (G, G), c: G) -> bool {
     t > 0 && t < d.0 * d.0 + d.1 * d.1
 }
 
-/// The segment `s` rerouted through the centres of the hot pixels its closed pixel squares
-/// meet and through the `forced` centres, in order along `s` (centres projecting strictly
-/// inside `s` only).
-fn reroute(s: (G, G), hot: &BTreeSet<G>, forced: &BTreeSet<G>) -> Vec<(G, G)> {
+/// The segment `s` rerouted through the centres of the hot pixels it meets and through the
+/// `forced` centres, in order along `s` (centres projecting strictly inside `s` only). The hot
+/// pixels come from an R-tree searched along the segment ([`AlongSegment`]), so the cost
+/// follows the pixels near the segment, not all pixels in its x-range.
+fn reroute(s: (G, G), hot: &RTree<[i64; 2]>, forced: &BTreeSet<G>) -> Vec<(G, G)> {
     let (a, b) = s;
-    let (x0, x1) = (a.0.min(b.0) - 1, a.0.max(b.0) + 1);
-    let (y0, y1) = (a.1.min(b.1) - 1, a.1.max(b.1) + 1);
     let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
     let along = |c: &G| (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
     let mut stops: Vec<(i128, G)> = hot
-        .range((x0, i64::MIN)..=(x1, i64::MAX))
-        .filter(|c| c.1 >= y0 && c.1 <= y1 && **c != a && **c != b)
-        .filter(|&&c| inside_projection(s, c) && meets_pixel(a, b, c))
-        .chain(forced.iter().filter(|&&c| c != a && c != b))
-        .map(|&c| (along(&c), c))
+        .locate_with_selection_function(AlongSegment(a, b))
+        .map(|p| (p[0], p[1]))
+        .filter(|&c| c != a && c != b && inside_projection(s, c))
+        .chain(forced.iter().copied().filter(|&c| c != a && c != b))
+        .map(|c| (along(&c), c))
         .collect();
     if stops.is_empty() {
         return vec![s];
@@ -168,6 +169,36 @@ fn reroute(s: (G, G), hot: &BTreeSet<G>, forced: &BTreeSet<G>) -> Vec<(G, G)> {
     path.push(b);
     path.dedup();
     path.windows(2).map(|w| (w[0], w[1])).collect()
+}
+
+/// The R-tree search for the hot pixels a segment meets: a node is opened when the segment
+/// meets the union of its pixels' squares (closed, a superset), a pixel is taken when
+/// [`meets_pixel`] says so.
+struct AlongSegment(G, G);
+
+impl SelectionFunction<[i64; 2]> for AlongSegment {
+    fn should_unpack_parent(&self, envelope: &AABB<[i64; 2]>) -> bool {
+        let (lo, hi) = (envelope.lower(), envelope.upper());
+        meets_box(self.0, self.1, (lo[0], lo[1]), (hi[0], hi[1]))
+    }
+
+    fn should_unpack_leaf(&self, c: &[i64; 2]) -> bool {
+        meets_pixel(self.0, self.1, (c[0], c[1]))
+    }
+}
+
+/// True if the segment `ab` meets the closed box of the pixel squares from `lo` to `hi` (in
+/// doubled coordinates [2·lo − 1, 2·hi + 1]).
+fn meets_box(a: G, b: G, lo: G, hi: G) -> bool {
+    let w = |v: i64| 2 * v as i128;
+    let (ax, ay, bx, by) = (w(a.0), w(a.1), w(b.0), w(b.1));
+    let (x0, y0, x1, y1) = (w(lo.0) - 1, w(lo.1) - 1, w(hi.0) + 1, w(hi.1) + 1);
+    if ax.max(bx) < x0 || ax.min(bx) > x1 || ay.max(by) < y0 || ay.min(by) > y1 {
+        return false;
+    }
+    let side = |px: i128, py: i128| ((bx - ax) * (py - ay) - (by - ay) * (px - ax)).signum();
+    let s = [side(x0, y0), side(x1, y0), side(x1, y1), side(x0, y1)];
+    !(s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0))
 }
 
 /// True if the segment `ab` meets the half-open pixel square of side 1 centred at `c`
@@ -312,5 +343,31 @@ impl Windings {
                 self.left[k][1] - self.mult[k][1],
             ],
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The R-tree search along a segment finds exactly the pixels that `meets_pixel`
+        /// accepts among all of them (segments through corners and along pixel edges included).
+        #[test]
+        fn search_along_a_segment_finds_every_pixel_it_meets(
+            a in (0i64..12, 0i64..12),
+            b in (0i64..12, 0i64..12),
+            pixels in proptest::collection::btree_set((0i64..12, 0i64..12), 0..80),
+        ) {
+            let tree = RTree::bulk_load(pixels.iter().map(|&(x, y)| [x, y]).collect());
+            let mut found: Vec<G> = tree
+                .locate_with_selection_function(AlongSegment(a, b))
+                .map(|p| (p[0], p[1]))
+                .collect();
+            found.sort();
+            let want: Vec<G> = pixels.iter().copied().filter(|&c| meets_pixel(a, b, c)).collect();
+            prop_assert_eq!(found, want);
+        }
     }
 }
