@@ -134,10 +134,18 @@ pub fn yin2(text: &str) {
     }
 }
 
-/// The WKT reader (both entry points).
-pub fn wkt(text: &str) {
-    let exact = wkt::read_polygons::<Rational>(text);
-    let float = wkt::read_polygons::<Float>(text);
+/// The readers of one polygon format, in both modes, and its writer.
+struct Format {
+    read_exact: fn(&str) -> Result<Vec<Polygon<Rational>>, ParseError>,
+    read_float: fn(&str) -> Result<Vec<Polygon<Float>>, ParseError>,
+    write: fn(&[Polygon<Rational>]) -> String,
+}
+
+/// A polygon reader: exact and float mode agree, errors point into the text, what it reads
+/// writes back to text that reads the same, and the rings give sets. Returns the exact reading.
+fn polygons(text: &str, f: Format) -> Result<Vec<Polygon<Rational>>, ParseError> {
+    let exact = (f.read_exact)(text);
+    let float = (f.read_float)(text);
     agree(
         &exact.as_ref().map(|p| rings_of(p)).map_err(Clone::clone),
         &float.as_ref().map(|p| rings_of(p)).map_err(Clone::clone),
@@ -147,8 +155,8 @@ pub fn wkt(text: &str) {
         Err(e) => check_parse_error(e, text),
         Ok(polys) => {
             if polys.iter().flat_map(|p| p.rings()).all(|r| !r.is_empty()) {
-                let written = wkt::write_multipolygon(polys);
-                match wkt::read_polygons::<Rational>(&written) {
+                let written = (f.write)(polys);
+                match (f.read_exact)(&written) {
                     Ok(again) if again == *polys => {}
                     other => fail!(
                         text,
@@ -162,6 +170,19 @@ pub fn wkt(text: &str) {
     if let Ok(polys) = &float {
         build(&rings_of(polys), &text);
     }
+    exact
+}
+
+/// The WKT reader (both entry points).
+pub fn wkt(text: &str) {
+    let exact = polygons(
+        text,
+        Format {
+            read_exact: wkt::read_polygons::<Rational>,
+            read_float: wkt::read_polygons::<Float>,
+            write: wkt::write_multipolygon::<Rational>,
+        },
+    );
     match wkt::read_polygonal_parts::<Rational>(text) {
         Err(e) => check_parse_error(&e, text),
         Ok(polys) => {
@@ -179,30 +200,13 @@ pub fn wkt(text: &str) {
 
 /// The GeoJSON reader.
 pub fn geojson(text: &str) {
-    let exact = geojson::read_polygons::<Rational>(text);
-    let float = geojson::read_polygons::<Float>(text);
-    agree(
-        &exact.as_ref().map(|p| rings_of(p)).map_err(Clone::clone),
-        &float.as_ref().map(|p| rings_of(p)).map_err(Clone::clone),
+    // The exact reading is checked inside; only WKT compares it with a second entry point.
+    let _ = polygons(
         text,
+        Format {
+            read_exact: geojson::read_polygons::<Rational>,
+            read_float: geojson::read_polygons::<Float>,
+            write: geojson::write_multipolygon::<Rational>,
+        },
     );
-    match &exact {
-        Err(e) => check_parse_error(e, text),
-        Ok(polys) => {
-            if polys.iter().flat_map(|p| p.rings()).all(|r| !r.is_empty()) {
-                let written = geojson::write_multipolygon(polys);
-                match geojson::read_polygons::<Rational>(&written) {
-                    Ok(again) if again == *polys => {}
-                    other => fail!(
-                        text,
-                        "write then read differs: {other:?}\nwritten: {written:?}"
-                    ),
-                }
-            }
-            build(&rings_of(polys), &text);
-        }
-    }
-    if let Ok(polys) = &float {
-        build(&rings_of(polys), &text);
-    }
 }
