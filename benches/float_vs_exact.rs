@@ -6,28 +6,13 @@
 //!
 //! `cargo bench --bench float_vs_exact`; the ratio is the exact mean over the float mean.
 
+#[path = "common/mod.rs"]
+mod common;
+
 use criterion::{criterion_group, criterion_main, Criterion, SamplingMode};
 use std::hint::black_box;
-use std::path::PathBuf;
-use yinset::io::yin2_text::read_curves;
-use yinset::kernel::Point;
-use yinset::num::{Float, Num, Rational, Tolerance};
+use yinset::num::{Float, Rational, Tolerance};
 use yinset::yin2::YinSet2;
-
-/// All curves of one of the paper's figures (one file per curve).
-fn figure<N: Num>(name: &str, count: usize) -> Vec<Vec<Point<N>>> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/2d")
-        .join(name);
-    (1..=count)
-        .flat_map(|i| {
-            let path = dir.join(format!("curve{i:02}.txt"));
-            let text = std::fs::read_to_string(&path)
-                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-            read_curves::<N>(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-        })
-        .collect()
-}
 
 /// SplitMix64, so that the random polygons are the same on every run.
 struct Rng(u64);
@@ -56,12 +41,6 @@ fn star(rng: &mut Rng, n: usize, centre: [f64; 2], phase: f64) -> Vec<[f64; 2]> 
         .collect()
 }
 
-fn points<N: Num>(c: &[[f64; 2]]) -> Vec<Point<N>> {
-    c.iter()
-        .map(|p| Point::new(N::from_f64(p[0]).unwrap(), N::from_f64(p[1]).unwrap()))
-        .collect()
-}
-
 /// Exact and float operands of one benchmark.
 struct Pair {
     exact: (YinSet2<Rational>, YinSet2<Rational>),
@@ -69,13 +48,13 @@ struct Pair {
 }
 
 fn panda_mickey() -> Pair {
-    let exact = |name, count| YinSet2::<Rational>::from_curves(figure(name, count)).unwrap();
-    let float = |name, count| {
-        YinSet2::<Float>::from_curves_with(figure(name, count), Tolerance::default()).unwrap()
+    let exact = |name| YinSet2::<Rational>::from_curves(common::figure(name)).unwrap();
+    let float = |name| {
+        YinSet2::<Float>::from_curves_with(common::figure(name), Tolerance::default()).unwrap()
     };
     Pair {
-        exact: (exact("panda", 10), exact("mickey", 6)),
-        float: (float("panda", 10), float("mickey", 6)),
+        exact: (exact("panda"), exact("mickey")),
+        float: (float("panda"), float("mickey")),
     }
 }
 
@@ -83,9 +62,9 @@ fn stars(n: usize) -> Pair {
     let mut rng = Rng(0x5eed);
     let a = star(&mut rng, n, [0.0, 0.0], 0.0);
     let b = star(&mut rng, n, [0.13, 0.07], 1.0);
-    let exact = |c: &[[f64; 2]]| YinSet2::<Rational>::from_curves(vec![points(c)]).unwrap();
+    let exact = |c: &[[f64; 2]]| YinSet2::<Rational>::from_curves(vec![common::points(c)]).unwrap();
     let float = |c: &[[f64; 2]]| {
-        YinSet2::<Float>::from_curves_with(vec![points(c)], Tolerance::default()).unwrap()
+        YinSet2::<Float>::from_curves_with(vec![common::points(c)], Tolerance::default()).unwrap()
     };
     Pair {
         exact: (exact(&a), exact(&b)),

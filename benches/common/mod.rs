@@ -107,26 +107,32 @@ pub fn read_data(rel: &str) -> String {
     std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("cannot read {}: {e}", p.display()))
 }
 
-/// The curves of the numbered files `dir/curveNN.txt` (panda, mickey), read in float mode.
-pub fn yin2_dir(dir: &str) -> Curves {
-    let mut curves = Curves::new();
+/// The curves of the numbered files `dir/curveNN.txt` (panda, mickey), read in mode `N`
+/// (exact mode: the decimal text without rounding).
+pub fn figure<N: Num>(dir: &str) -> Vec<Vec<Point<N>>> {
+    let root = data_path(dir);
+    let mut curves = Vec::new();
     for k in 1.. {
-        let rel = format!("{dir}/curve{k:02}.txt");
-        let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-            .join("../shared/data/2d")
-            .join(&rel);
-        if k > 1 && !p.exists() {
+        let file = root.join(format!("curve{k:02}.txt"));
+        if k > 1 && !file.exists() {
             break;
         }
-        let text = read_data(&rel);
-        let read = yin2_text::read_curves::<Float>(&text)
-            .unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+        let text = std::fs::read_to_string(&file)
+            .unwrap_or_else(|e| panic!("cannot read {}: {e}", file.display()));
         curves.extend(
-            read.into_iter()
-                .map(|c| c.iter().map(|p| [p.x.get(), p.y.get()]).collect()),
+            yin2_text::read_curves::<N>(&text)
+                .unwrap_or_else(|e| panic!("{}: {e}", file.display())),
         );
     }
     curves
+}
+
+/// The curves of a figure (see [`figure`]) as read in float mode.
+pub fn yin2_dir(dir: &str) -> Curves {
+    figure::<Float>(dir)
+        .iter()
+        .map(|c| c.iter().map(|p| [p.x.get(), p.y.get()]).collect())
+        .collect()
 }
 
 /// W4: the panda and Mickey of seed 000 Fig. 13.
