@@ -1,6 +1,7 @@
 //! Issue 7: the JTS overlay suites (`../shared/data/2d/jts`) in exact and float mode.
 //! Run with `--nocapture` to see the per-suite report.
 
+mod common;
 mod conformance;
 use conformance::*;
 use yinset::num::{Float, Rational};

@@ -1,6 +1,7 @@
 //! Issue 7: the Martinez–Rueda cases (`../shared/data/2d/martinez`) in exact and float mode.
 //! Run with `--nocapture` to see the per-suite report.
 
+mod common;
 mod conformance;
 use conformance::*;
 use yinset::num::{Float, Rational};

@@ -22,6 +22,7 @@
 //! to stderr (`--nocapture` shows them). Kernel bugs found are pinned at the end of this file
 //! as ignored tests (`cargo test --test float_mode -- --ignored`).
 
+mod common;
 #[path = "float_mode/data.rs"]
 mod data;
 #[path = "float_mode/gen.rs"]

@@ -3,24 +3,10 @@
 
 mod common;
 use common::*;
-use std::path::PathBuf;
 use yinset::io::yin2_text::read_curves;
 use yinset::kernel::Point;
 use yinset::num::{Num, Rational};
 use yinset::yin2::{Location, YinSet2};
-
-/// The data directory of the paper's curves; panics naming the path if it is missing.
-fn data_dir(name: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/2d")
-        .join(name);
-    assert!(
-        dir.is_dir(),
-        "test data missing: {} (expected ../shared/data beside the repository)",
-        dir.display()
-    );
-    dir
-}
 
 /// All curves of one figure, read exactly (one file per curve, as in the data set).
 fn read_figure<N: Num>(name: &str, count: usize) -> Vec<Vec<Point<N>>> {

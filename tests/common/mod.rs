@@ -1,11 +1,26 @@
 //! Shapes shared by the integration tests.
 #![allow(dead_code)]
 
+use std::path::PathBuf;
 use yinset::kernel::Point;
 use yinset::num::Rational;
 use yinset::yin2::YinSet2;
 
 pub type Y = YinSet2<Rational>;
+
+/// A directory of the shared data under `../shared/data/2d`; panics naming the path if it is
+/// missing.
+pub fn data_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data/2d")
+        .join(name);
+    assert!(
+        dir.is_dir(),
+        "test data missing: {} (expected ../shared/data beside the repository)",
+        dir.display()
+    );
+    dir
+}
 
 /// Exact rational p/q.
 pub fn q(p: i64, d: i64) -> Rational {

@@ -8,6 +8,7 @@
 //! lower-dimensional parts of expected results are dropped before comparing.
 #![allow(dead_code)]
 
+use crate::common::data_dir;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -84,19 +85,6 @@ pub struct Case<N> {
     pub expected: Vec<Expected<N>>,
     /// Operations of the case that are not Boolean operations (not run).
     pub skipped: usize,
-}
-
-/// The directory of one data set under `../shared/data/2d`; panics naming it if missing.
-pub fn data_dir(name: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/2d")
-        .join(name);
-    assert!(
-        dir.is_dir(),
-        "test data missing: {} (expected ../shared/data beside the repository)",
-        dir.display()
-    );
-    dir
 }
 
 /// The files of a data set ending in `ext`, sorted, with their stems and texts.

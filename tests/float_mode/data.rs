@@ -3,23 +3,10 @@
 //! inputs are those `f64` values read as rationals).
 
 use super::gen::{exact_curves, is_valid, Curves};
-use std::path::PathBuf;
+use crate::common::data_dir;
 use yinset::io::{geojson, yin2_text, Polygon};
 use yinset::num::{Float, Rational};
 use yinset::yin2::{FillRule, YinSet2};
-
-/// A directory of the shared data; panics naming the path if it is missing.
-pub fn data_dir(sub: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/2d")
-        .join(sub);
-    assert!(
-        dir.is_dir(),
-        "test data missing: {} (expected ../shared/data beside the repository)",
-        dir.display()
-    );
-    dir
-}
 
 /// `f64` cycles of float points.
 fn to_curves<'a>(rings: impl IntoIterator<Item = &'a [yinset::kernel::Point<Float>]>) -> Curves {
