@@ -484,7 +484,7 @@ fn regression_dangling_piece_after_overlay_fallback() {
 #[test]
 #[ignore = "kernel bug: for ε < 2⁻³⁷ × extent the snapping grid is silently coarsened to keep \
             grid coordinates below 2³⁸, so the area error exceeds C·ε·L by orders of magnitude; \
-            cargo test -- --ignored"]
+            cargo test --test float_mode -- --ignored"]
 fn kernel_bug_grid_coarsened_for_small_relative_eps() {
     // Coordinates near 10⁶, ε = 10⁻⁹: the grid spacing used is 2⁻¹⁷ ≈ 7.6·10⁻⁶, not 2⁻³⁰.
     let x = 1e6;
