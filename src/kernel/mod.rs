@@ -4,8 +4,10 @@
 
 mod angle;
 mod point;
+mod point3;
 mod segment;
 
 pub use angle::cmp_clockwise_from;
 pub use point::{orient, BBox, Point};
+pub use point3::{orient3d, BBox3, Point3};
 pub use segment::{classify, on_closed_segment, Contact};

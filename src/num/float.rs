@@ -175,6 +175,18 @@ impl Num for Float {
         }
     }
 
+    fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], _ctx: &Tolerance) -> Ordering {
+        let p = |q: [&Float; 3]| robust::Coord3D {
+            x: q[0].0,
+            y: q[1].0,
+            z: q[2].0,
+        };
+        // Shewchuk's orient3d is positive when d lies below the plane abc (seen from above, a,
+        // b, c counterclockwise): the opposite of our convention.
+        let det = robust::orient3d(p(a), p(b), p(c), p(d));
+        0.0f64.partial_cmp(&det).unwrap_or(Ordering::Equal)
+    }
+
     fn grid(ctx: &Tolerance) -> Option<f64> {
         (ctx.eps > 0.0).then(|| 2f64.powi(ctx.eps.log2().floor() as i32))
     }

@@ -1,6 +1,6 @@
 //! The GMP exact backend (feature `gmp`): `rug::Rational` on the system libgmp.
 
-use super::{exact_orient, filtered_orient, Literal, Num, NumError};
+use super::{exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::fmt;
@@ -76,6 +76,11 @@ impl Num for GmpRational {
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
         let f = |p: [&Self; 2]| [p[0].0.to_f64(), p[1].0.to_f64()];
         filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| exact_orient(a, b, c))
+    }
+
+    fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], _ctx: &()) -> Ordering {
+        let f = |p: [&Self; 3]| p.map(|v| v.0.to_f64());
+        filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| exact_orient3d(a, b, c, d))
     }
 }
 

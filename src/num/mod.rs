@@ -99,6 +99,13 @@ pub trait Num:
     /// (in float mode: within ε of it).
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], ctx: &Self::Ctx) -> Ordering;
 
+    /// Orientation of `d` relative to the plane through `a`, `b`, `c`: the sign of
+    /// det[b − a, c − a, d − a], `Greater` on the side the normal (b − a) × (c − a) points to
+    /// (DESIGN-3D §2.1). Exact in every backend (float mode: Shewchuk's adaptive `orient3d`);
+    /// 3D float mode applies no tolerance yet.
+    fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], ctx: &Self::Ctx)
+        -> Ordering;
+
     /// The context whose predicates decide without tolerance (float mode: ε = 0, the exact sign
     /// of Shewchuk's adaptive determinant). The edges of a valid set never cross exactly, so
     /// orders between them are decided with it.
@@ -158,6 +165,48 @@ pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<O
     } else {
         None
     }
+}
+
+/// The sign of det[b − a, c − a, d − a] evaluated in `f64` from coordinates each within
+/// 3 ulps of the exact ones, if the error bound proves it; `None` if it cannot decide.
+///
+/// With M the largest magnitude and u = 2⁻⁵³, each difference is off by at most 8M·u, each
+/// 2×2 minor by about 70M²·u, the determinant by about 330M³·u; 2048M³·u is safe.
+pub(crate) fn filtered_orient3d(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Option<Ordering> {
+    let m = [a, b, c, d]
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+    let w = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
+    let det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
+        + u[2] * (v[0] * w[1] - v[1] * w[0]);
+    let bound = 2048.0 * m * m * m * f64::EPSILON * 0.5;
+    if !det.is_finite() || !bound.is_finite() || m.is_nan() || m < 1e-90 {
+        return None;
+    }
+    if det > bound {
+        Some(Ordering::Greater)
+    } else if det < -bound {
+        Some(Ordering::Less)
+    } else {
+        None
+    }
+}
+
+/// Sign of det[b − a, c − a, d − a] in exact arithmetic: the shared body of the exact
+/// backends' [`Num::orient3d`].
+pub(crate) fn exact_orient3d<N>(a: [&N; 3], b: [&N; 3], c: [&N; 3], d: [&N; 3]) -> Ordering
+where
+    N: Clone + Ord + Add<Output = N> + Sub<Output = N> + Mul<Output = N>,
+{
+    let diff = |p: [&N; 3]| [0, 1, 2].map(|k| p[k].clone() - a[k].clone());
+    let (u, v, w) = (diff(b), diff(c), diff(d));
+    let minor = |i: usize, j: usize| v[i].clone() * w[j].clone() - v[j].clone() * w[i].clone();
+    let pos = u[0].clone() * minor(1, 2) + u[2].clone() * minor(0, 1);
+    let neg = u[1].clone() * minor(0, 2);
+    pos.cmp(&neg)
 }
 
 /// Sign of the 2×2 determinant `(b − a) × (c − a)` in exact arithmetic: the shared body of

@@ -1,7 +1,7 @@
 //! The default exact backend: `num-rational`'s big rationals, compared through a
 //! floating-point filter.
 
-use super::{exact_orient, filtered_orient, Literal, Num, NumError};
+use super::{exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -177,6 +177,11 @@ impl Num for Rational {
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
         let f = |p: [&Self; 2]| [approx(p[0]), approx(p[1])];
         filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| exact_orient(a, b, c))
+    }
+
+    fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], _ctx: &()) -> Ordering {
+        let f = |p: [&Self; 3]| p.map(approx);
+        filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| exact_orient3d(a, b, c, d))
     }
 }
 
