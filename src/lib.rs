@@ -5,3 +5,5 @@ pub mod io;
 pub mod kernel;
 pub mod num;
 pub mod yin2;
+pub mod yin3;
+mod union_find;

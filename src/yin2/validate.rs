@@ -2,6 +2,7 @@
 //! that the curves form a realizable spadjor (Def. 3.15–3.17) and builds its Hasse diagram.
 
 use super::error::YinError;
+use crate::union_find::UnionFind;
 use super::intersect::{intersections, Edge};
 use super::set::{Spadjor, YinSet2};
 use super::snap::{inside_set, regularize};
@@ -354,37 +355,4 @@ fn check_structure<N: Num>(
         }
     }
     Ok(())
-}
-
-/// Disjoint sets for the forest test of atom connectivity.
-struct UnionFind {
-    parent: Vec<usize>,
-}
-
-impl UnionFind {
-    fn new(n: usize) -> UnionFind {
-        UnionFind {
-            parent: (0..n).collect(),
-        }
-    }
-
-    fn add(&mut self) -> usize {
-        self.parent.push(self.parent.len());
-        self.parent.len() - 1
-    }
-
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.parent[x] != x {
-            self.parent[x] = self.parent[self.parent[x]];
-            x = self.parent[x];
-        }
-        x
-    }
-
-    /// Join the sets of `a` and `b`; false if they were already one (a cycle).
-    fn union(&mut self, a: usize, b: usize) -> bool {
-        let (ra, rb) = (self.find(a), self.find(b));
-        self.parent[ra] = rb;
-        ra != rb
-    }
 }

@@ -1,0 +1,178 @@
+//! The arrangement of triangles against each other (seed 004 steps 1–2; DESIGN-3D §2.3–2.4):
+//! every contact of two triangles is computed exactly, every contact point is given to every
+//! triangle that contains it, and each triangle that received points or cut segments is
+//! re-triangulated in its plane. Because a triangle receives *every* contact point lying on it,
+//! two triangles that share a segment split it at the same points: the pieces form a
+//! conforming complex.
+
+use super::geom::{f64_box, in_triangle3, Chart};
+use super::tri::intersect;
+use super::triangulate::triangulate;
+use crate::kernel::{Point, Point3};
+use crate::num::Num;
+use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
+use std::collections::{BTreeSet, HashMap};
+
+/// Triangles over one table of interned points, each tagged with its operand.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Soup<N: Num> {
+    /// The points; equal points have one index.
+    pub points: Vec<Point3<N>>,
+    index: HashMap<Point3<N>, usize>,
+    /// The triangles, as indices into `points`.
+    pub tris: Vec<[usize; 3]>,
+    /// The operand (0 or 1) of each triangle.
+    pub operand: Vec<u8>,
+}
+
+impl<N: Num> Soup<N> {
+    /// An empty soup.
+    pub(crate) fn new() -> Soup<N> {
+        Soup {
+            points: Vec::new(),
+            index: HashMap::new(),
+            tris: Vec::new(),
+            operand: Vec::new(),
+        }
+    }
+
+    /// The index of `p`, added if new.
+    pub(crate) fn intern(&mut self, p: &Point3<N>) -> usize {
+        if let Some(&i) = self.index.get(p) {
+            return i;
+        }
+        self.points.push(p.clone());
+        self.index.insert(p.clone(), self.points.len() - 1);
+        self.points.len() - 1
+    }
+
+    /// Add the triangle `abc` of operand `operand`.
+    pub(crate) fn push(&mut self, t: [&Point3<N>; 3], operand: u8) {
+        let t = t.map(|p| self.intern(p));
+        self.tris.push(t);
+        self.operand.push(operand);
+    }
+
+    /// The corners of triangle `i`.
+    pub(crate) fn corners(&self, i: usize) -> [&Point3<N>; 3] {
+        self.tris[i].map(|v| &self.points[v])
+    }
+}
+
+/// Which pairs of triangles are intersected.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Pairs {
+    /// Only triangles of different operands (each operand is already a valid boundary).
+    Across,
+    /// Every pair: the validation of one operand; meeting interiors are an error.
+    All,
+}
+
+/// Why an arrangement could not be made.
+#[derive(Clone, Debug)]
+pub(crate) enum ArrangeError<N> {
+    /// Triangles `a` and `b` cross (`coplanar` false) or overlap (true) near `point`.
+    Clash {
+        a: usize,
+        b: usize,
+        coplanar: bool,
+        point: Point3<N>,
+    },
+    /// Cut segments crossed inside a triangle (an operand was not valid).
+    Internal(String),
+}
+
+/// The pieces of the arrangement: each a triangle over `soup.points` (which gains the contact
+/// points), oriented as its parent, with the index of its parent triangle.
+pub(crate) fn arrange<N: Num>(
+    soup: &mut Soup<N>,
+    pairs: Pairs,
+    ctx: &N::Ctx,
+) -> Result<Vec<([usize; 3], usize)>, ArrangeError<N>> {
+    let n = soup.tris.len();
+    let tree = RTree::bulk_load(
+        (0..n)
+            .map(|i| GeomWithData::new(Rectangle::from_aabb(f64_box(soup.corners(i))), i))
+            .collect(),
+    );
+    let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
+    let mut contact: BTreeSet<usize> = BTreeSet::new();
+    for i in 0..n {
+        let b = f64_box(soup.corners(i));
+        let mut others: Vec<usize> = tree
+            .locate_in_envelope_intersecting(&b)
+            .map(|g| g.data)
+            .filter(|&j| j > i && (pairs == Pairs::All || soup.operand[i] != soup.operand[j]))
+            .collect();
+        others.sort_unstable();
+        for j in others {
+            let Some(c) = intersect(soup.corners(i), soup.corners(j), ctx) else {
+                continue;
+            };
+            if c.interiors_meet && pairs == Pairs::All {
+                return Err(ArrangeError::Clash {
+                    a: i,
+                    b: j,
+                    coplanar: c.coplanar,
+                    point: c.points[0].clone(),
+                });
+            }
+            for p in &c.points {
+                contact.insert(soup.intern(p));
+            }
+            for (p, q) in &c.cuts_t {
+                let e = (soup.intern(p), soup.intern(q));
+                cuts[i].push(e);
+            }
+            for (p, q) in &c.cuts_s {
+                let e = (soup.intern(p), soup.intern(q));
+                cuts[j].push(e);
+            }
+        }
+    }
+    // Every contact point goes to every triangle containing it.
+    let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
+    for &v in &contact {
+        let b = f64_box([&soup.points[v]]);
+        for g in tree.locate_in_envelope_intersecting(&b) {
+            let t = g.data;
+            if !soup.tris[t].contains(&v) && in_triangle3(soup.corners(t), &soup.points[v], ctx) {
+                extra[t].insert(v);
+            }
+        }
+    }
+    let mut pieces = Vec::with_capacity(n);
+    for t in 0..n {
+        if extra[t].is_empty() {
+            pieces.push((soup.tris[t], t));
+            continue;
+        }
+        for piece in retriangulate(soup, t, &extra[t], &cuts[t], ctx)? {
+            pieces.push((piece, t));
+        }
+    }
+    Ok(pieces)
+}
+
+/// The pieces of triangle `t` with the points `extra` on it and the cut segments `cuts`.
+fn retriangulate<N: Num>(
+    soup: &Soup<N>,
+    t: usize,
+    extra: &BTreeSet<usize>,
+    cuts: &[(usize, usize)],
+    ctx: &N::Ctx,
+) -> Result<Vec<[usize; 3]>, ArrangeError<N>> {
+    let [a, b, c] = soup.corners(t);
+    let chart = Chart::of_triangle(a, b, c);
+    let ids: Vec<usize> = soup.tris[t].iter().copied().chain(extra.iter().copied()).collect();
+    let local: HashMap<usize, usize> = ids.iter().enumerate().map(|(k, &v)| (v, k)).collect();
+    let pts: Vec<Point<N>> = ids.iter().map(|&v| chart.project(&soup.points[v])).collect();
+    let cons: Vec<(usize, usize)> = cuts
+        .iter()
+        .filter(|(p, q)| p != q)
+        .filter_map(|(p, q)| Some((*local.get(p)?, *local.get(q)?)))
+        .collect();
+    let tris = triangulate(&pts, [0, 1, 2], &cons, ctx)
+        .map_err(|e| ArrangeError::Internal(format!("re-triangulating triangle {t}: {e:?}")))?;
+    Ok(tris.into_iter().map(|tri| tri.map(|k| ids[k])).collect())
+}

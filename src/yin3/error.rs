@@ -1,0 +1,63 @@
+//! Why user data is not the boundary of a 3D Yin set (seed 003 Def. 7.1–7.8; DESIGN-3D §1,
+//! invariants I1–I4), naming the face or edge at fault.
+
+/// A reason the faces given do not bound a 3D Yin set. Face and vertex indices are 0-based
+/// positions in the input as given.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum Yin3Error {
+    /// No face at all (use `YinSet3::empty()` or `YinSet3::full()` for 0̂ and 1̂).
+    #[error("no faces given: a boundary representation needs triangles (use empty() or full() for 0̂ and 1̂)")]
+    NoFaces,
+    /// A coordinate is NaN or infinite.
+    #[error("vertex {vertex}: coordinate is not finite")]
+    NotFinite { vertex: usize },
+    /// A face names a vertex that does not exist.
+    #[error("face {face}: vertex index {index} is out of range (there are {count} vertices)")]
+    IndexOutOfRange {
+        face: usize,
+        index: usize,
+        count: usize,
+    },
+    /// A face with fewer than 3 vertices or a repeated vertex.
+    #[error("face {face}: {reason}")]
+    DegenerateFace { face: usize, reason: String },
+    /// A face whose vertices are not coplanar.
+    #[error("face {face}: its {count} vertices are not coplanar (vertex {vertex} is off the plane of the first three that span one)")]
+    NonPlanarFace {
+        face: usize,
+        count: usize,
+        vertex: usize,
+    },
+    /// Two faces cross each other.
+    #[error("faces {a} and {b} cross each other (their interiors meet along a segment through {point})")]
+    Crossing { a: usize, b: usize, point: String },
+    /// Two coplanar faces overlap in an area.
+    #[error("faces {a} and {b} are coplanar and overlap in an area around {point}")]
+    Overlap { a: usize, b: usize, point: String },
+    /// An edge with an odd number of faces: the surface is open there.
+    #[error("the edge from {from} to {to} has {count} faces (face {face} among them): the surface is open there, every edge needs an even number")]
+    OpenEdge {
+        from: String,
+        to: String,
+        count: usize,
+        face: usize,
+    },
+    /// Faces around an edge whose orientations do not alternate (DESIGN-3D I3, seed 003 Lemma 5.5(c)).
+    #[error("faces {a} and {b} are neighbours around the edge from {from} to {to} with inconsistent orientations: around an edge, faces must alternate between bounding the set from one side and from the other")]
+    Inconsistent {
+        from: String,
+        to: String,
+        a: usize,
+        b: usize,
+    },
+    /// A closed surface whose normals point the wrong way relative to the rest (DESIGN-3D I4).
+    #[error("the closed surface through face {face} is oriented against the rest: the winding number on the side its normals point to is {winding}, not {expected} (normals must point out of the set, by the right-hand rule)")]
+    Orientation {
+        face: usize,
+        winding: i64,
+        expected: i64,
+    },
+    /// `validate` found a stored set that breaks an invariant (an internal bug).
+    #[error("internal invariant broken: {0}")]
+    Internal(String),
+}

@@ -1,0 +1,138 @@
+//! Plane keys, 2D charts of planes, and point/triangle predicates (DESIGN-3D §2.1).
+
+use crate::kernel::{orient, orient3d, Point, Point3};
+use crate::num::Num;
+use std::cmp::Ordering;
+
+/// |v|.
+pub(crate) fn abs<N: Num>(v: &N) -> N {
+    if v.sign() == Ordering::Less {
+        -v.clone()
+    } else {
+        v.clone()
+    }
+}
+
+/// The normal (b − a) × (c − a) of the triangle `abc`.
+pub(crate) fn normal<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Point3<N> {
+    b.sub(a).cross(&c.sub(a))
+}
+
+/// det[a, b, c] = a · (b × c): six times the signed volume of the tetrahedron (0, a, b, c).
+pub(crate) fn det3<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> N {
+    a.dot(&b.cross(c))
+}
+
+/// The index of the largest |v_k| (the first on ties).
+pub(crate) fn dominant_axis<N: Num>(v: &Point3<N>) -> usize {
+    let m = [abs(&v.x), abs(&v.y), abs(&v.z)];
+    let mut k = 0;
+    for i in 1..3 {
+        if m[i] > m[k] {
+            k = i;
+        }
+    }
+    k
+}
+
+/// The oriented plane of a triangle as a canonical key: the normal scaled so that its first
+/// nonzero coordinate is 1, and the offset `n · p` of the plane's points; two triangles are
+/// coplanar iff their keys are equal (exact mode).
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub(crate) struct PlaneKey<N> {
+    /// Normal with first nonzero coordinate 1.
+    pub n: [N; 3],
+    /// The offset: n · p for every point p of the plane.
+    pub d: N,
+}
+
+/// The canonical key of the plane of the (non-degenerate) triangle `abc`, and `true` if the
+/// triangle's normal is a positive multiple of the key's normal.
+pub(crate) fn plane_key<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> (PlaneKey<N>, bool) {
+    let m = normal(a, b, c);
+    let lead = [&m.x, &m.y, &m.z]
+        .into_iter()
+        .find(|v| v.sign() != Ordering::Equal)
+        .expect("plane_key of a degenerate triangle")
+        .clone();
+    let n = [m.x / lead.clone(), m.y / lead.clone(), m.z / lead.clone()];
+    let d = n[0].clone() * a.x.clone() + n[1].clone() * a.y.clone() + n[2].clone() * a.z.clone();
+    (PlaneKey { n, d }, lead.sign() == Ordering::Greater)
+}
+
+/// A 2D chart of a plane: drop the coordinate where the normal is largest and keep the other
+/// two in the order that maps triangles whose normal is a positive multiple of `n` to
+/// counterclockwise triangles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Chart {
+    /// The two coordinates kept, in order.
+    keep: [usize; 2],
+}
+
+impl Chart {
+    /// The chart of planes with normal `n` (nonzero).
+    pub(crate) fn of_normal<N: Num>(n: &Point3<N>) -> Chart {
+        let k = dominant_axis(n);
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        if n.coord(k).sign() == Ordering::Less {
+            Chart { keep: [j, i] }
+        } else {
+            Chart { keep: [i, j] }
+        }
+    }
+
+    /// The chart of the plane of the triangle `abc`, in which it is counterclockwise.
+    pub(crate) fn of_triangle<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Chart {
+        Chart::of_normal(&normal(a, b, c))
+    }
+
+    /// The image of `p`.
+    pub(crate) fn project<N: Num>(&self, p: &Point3<N>) -> Point<N> {
+        Point::new(p.coord(self.keep[0]).clone(), p.coord(self.keep[1]).clone())
+    }
+
+    /// The point of the plane `n · x = d` whose image is `q`.
+    pub(crate) fn lift<N: Num>(&self, q: &Point<N>, n: &Point3<N>, d: &N) -> Point3<N> {
+        let [i, j] = self.keep;
+        let k = 3 - i - j;
+        let mut c = [N::zero(), N::zero(), N::zero()];
+        c[i] = q.x.clone();
+        c[j] = q.y.clone();
+        c[k] = (d.clone() - n.coord(i).clone() * q.x.clone() - n.coord(j).clone() * q.y.clone())
+            / n.coord(k).clone();
+        let [x, y, z] = c;
+        Point3::new(x, y, z)
+    }
+}
+
+/// True if `p` lies in the closed 2D triangle `abc` (counterclockwise).
+pub(crate) fn in_triangle2<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, p: &Point<N>, ctx: &N::Ctx) -> bool {
+    orient(a, b, p, ctx) != Ordering::Less
+        && orient(b, c, p, ctx) != Ordering::Less
+        && orient(c, a, p, ctx) != Ordering::Less
+}
+
+/// True if `p` lies in the closed triangle `abc` of space (non-degenerate).
+pub(crate) fn in_triangle3<N: Num>(t: [&Point3<N>; 3], p: &Point3<N>, ctx: &N::Ctx) -> bool {
+    let [a, b, c] = t;
+    if orient3d(a, b, c, p, ctx) != Ordering::Equal {
+        return false;
+    }
+    let ch = Chart::of_triangle(a, b, c);
+    in_triangle2(&ch.project(a), &ch.project(b), &ch.project(c), &ch.project(p), ctx)
+}
+
+/// The `f64` box of a set of points, widened by an ulp on each side so that it contains the
+/// exact points' box whatever the arithmetic (as the 2D contact search does).
+pub(crate) fn f64_box<'a, N: Num>(points: impl IntoIterator<Item = &'a Point3<N>>) -> rstar::AABB<[f64; 3]> {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for p in points {
+        let v = p.to_f64();
+        for k in 0..3 {
+            lo[k] = lo[k].min(v[k]);
+            hi[k] = hi[k].max(v[k]);
+        }
+    }
+    rstar::AABB::from_corners(lo.map(f64::next_down), hi.map(f64::next_up))
+}

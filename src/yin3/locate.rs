@@ -1,0 +1,76 @@
+//! Point location by a symbolically perturbed ray (DESIGN-3D §2.11): deterministic and exact,
+//! with rays through edges and vertices decided by the perturbation q + (0, ε, ε²).
+
+use super::geom::in_triangle3;
+use crate::kernel::{orient, orient3d, Point, Point3};
+use crate::num::Num;
+use std::cmp::Ordering;
+
+/// The winding number at `q` of the oriented triangles `tris`: the sum of sign(n_x) over the
+/// triangles that the ray from q + (0, ε, ε²) in direction +x crosses. `q` must lie on none of
+/// them. For the boundary of a Yin set 𝒴 it is 1_𝒴(q), or 1_𝒴(q) − 1 if 𝒴 is unbounded.
+pub(crate) fn winding<'a, N: Num>(tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>, q: &Point3<N>, ctx: &N::Ctx) -> i64 {
+    tris.into_iter().map(|t| crossing(t, q, ctx)).sum()
+}
+
+/// True if `q` lies on one of the closed triangles.
+pub(crate) fn on_triangles<'a, N: Num>(tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>, q: &Point3<N>, ctx: &N::Ctx) -> bool {
+    tris.into_iter()
+        .any(|t| in_box(t, q, [0, 1, 2]) && in_triangle3(t, q, ctx))
+}
+
+/// True if `q`'s coordinates `axes` lie in the closed box of the triangle's.
+fn in_box<N: Num>(t: [&Point3<N>; 3], q: &Point3<N>, axes: [usize; 3]) -> bool {
+    axes.iter().all(|&k| {
+        let v = q.coord(k);
+        t.iter().any(|p| p.coord(k) <= v) && t.iter().any(|p| p.coord(k) >= v)
+    })
+}
+
+/// The contribution of triangle `t` to the winding number at `q`: ±1 if the perturbed ray
+/// crosses it (the sign of its normal's x), 0 otherwise; triangles parallel to x never count.
+fn crossing<N: Num>(t: [&Point3<N>; 3], q: &Point3<N>, ctx: &N::Ctx) -> i64 {
+    if !in_box(t, q, [1, 2, 1]) || t.iter().all(|p| p.x < q.x) {
+        return 0;
+    }
+    let yz = |p: &Point3<N>| Point::new(p.y.clone(), p.z.clone());
+    let (a, mut b, mut c) = (yz(t[0]), yz(t[1]), yz(t[2]));
+    let nx = orient(&a, &b, &c, ctx);
+    if nx == Ordering::Equal {
+        return 0;
+    }
+    if nx == Ordering::Less {
+        std::mem::swap(&mut b, &mut c);
+    }
+    let qp = yz(q);
+    let inside = [(&a, &b), (&b, &c), (&c, &a)]
+        .iter()
+        .all(|(u, v)| left_of_perturbed(u, v, &qp, ctx));
+    if !inside {
+        return 0;
+    }
+    // The ray meets the plane beyond q iff q is on the side the normal's x points away from.
+    let side = orient3d(t[0], t[1], t[2], q, ctx);
+    if side == Ordering::Equal || side == nx {
+        return 0;
+    }
+    if nx == Ordering::Greater {
+        1
+    } else {
+        -1
+    }
+}
+
+/// True if q + (ε, ε²) is strictly left of the directed line u → v: on a tie the sign of
+/// (v − u) × (ε, ε²) = −(v_z − u_z) ε + (v_y − u_y) ε² decides.
+fn left_of_perturbed<N: Num>(u: &Point<N>, v: &Point<N>, q: &Point<N>, ctx: &N::Ctx) -> bool {
+    match orient(u, v, q, ctx) {
+        Ordering::Greater => true,
+        Ordering::Less => false,
+        Ordering::Equal => match v.y.cmp(&u.y) {
+            Ordering::Less => true,
+            Ordering::Greater => false,
+            Ordering::Equal => v.x > u.x,
+        },
+    }
+}

@@ -1,0 +1,142 @@
+//! The meet of two 3D Yin sets (DESIGN-3D §2.5, §2.10; seed 004 steps 1–5; the 3D MRS-b..d of
+//! seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8): arrange both boundaries against each other, keep
+//! the pieces of each that lie in the other (coincident pieces: one copy if equally oriented,
+//! none if opposite), and paste the kept pieces into glued surfaces.
+
+use super::arrange::{arrange, Pairs, Soup};
+use super::geom::{f64_box, in_triangle3, plane_key, PlaneKey};
+use super::locate::winding;
+use super::set::{Brep, YinSet3};
+use crate::kernel::Point3;
+use crate::num::Num;
+use crate::union_find::UnionFind;
+use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
+use std::collections::HashMap;
+
+/// Where a piece of one operand lies relative to the other operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Side {
+    /// On a face of the other with the same orientation (MRS-c, kept once).
+    Same,
+    /// On a face of the other with the opposite orientation (dropped from both).
+    Opposite,
+    /// In the other's interior.
+    Inside,
+    /// In the other's exterior.
+    Outside,
+}
+
+impl<N: Num> YinSet3<N> {
+    /// The meet 𝒴 ∧ 𝒵 (seed 000 Def. 4.8 lifted to 3D by seed 004): the regularized
+    /// intersection.
+    pub fn meet(&self, other: &YinSet3<N>) -> YinSet3<N> {
+        let ctx = N::combine_ctx(self.ctx, other.ctx);
+        let (a, b) = match (self.brep(), other.brep()) {
+            _ if self.is_empty() || other.is_empty() => return YinSet3::empty(),
+            (None, _) => return other.clone(),
+            (_, None) => return self.clone(),
+            (Some(a), Some(b)) => (a, b),
+        };
+        if a.bounded && b.bounded && !self.bbox().zip(other.bbox()).is_some_and(|(x, y)| x.meets(&y)) {
+            return YinSet3::empty();
+        }
+        let mut soup = Soup::new();
+        for (operand, brep) in [a, b].into_iter().enumerate() {
+            for t in 0..brep.tris.len() {
+                soup.push(brep.corners(t), operand as u8);
+            }
+        }
+        let pieces = arrange(&mut soup, Pairs::Across, &ctx)
+            .unwrap_or_else(|e| panic!("the operands of a meet are valid Yin sets, yet their arrangement failed: {e:?}"));
+        let bounded = [a.bounded, b.bounded];
+        let sides = classify(&soup, &pieces, bounded, &ctx);
+        let kept: Vec<[usize; 3]> = pieces
+            .iter()
+            .zip(&sides)
+            .filter(|((_, parent), side)| match (soup.operand[*parent], side) {
+                (0, Side::Same) => true,
+                (_, Side::Inside) => true,
+                _ => false,
+            })
+            .map(|((t, _), _)| *t)
+            .collect();
+        if kept.is_empty() {
+            return YinSet3::empty();
+        }
+        let brep = Brep::assemble(soup.points, kept, &ctx)
+            .unwrap_or_else(|e| panic!("the kept pieces of a meet do not bound a Yin set: {e}"));
+        YinSet3::from_brep(brep, ctx)
+    }
+}
+
+/// The side of every piece relative to the other operand. Membership is constant on patches
+/// (pieces of one operand joined across edges off the other's boundary): one ray per patch.
+fn classify<N: Num>(soup: &Soup<N>, pieces: &[([usize; 3], usize)], bounded: [bool; 2], ctx: &N::Ctx) -> Vec<Side> {
+    let op = |i: usize| soup.operand[pieces[i].1] as usize;
+    let trees: [RTree<GeomWithData<Rectangle<[f64; 3]>, usize>>; 2] = [0u8, 1].map(|o| {
+        RTree::bulk_load(
+            (0..soup.tris.len())
+                .filter(|&t| soup.operand[t] == o)
+                .map(|t| GeomWithData::new(Rectangle::from_aabb(f64_box(soup.corners(t))), t))
+                .collect(),
+        )
+    });
+    let on_operand = |o: usize, q: &Point3<N>| {
+        trees[o]
+            .locate_in_envelope_intersecting(&f64_box([q]))
+            .find(|g| in_triangle3(soup.corners(g.data), q, ctx))
+            .map(|g| g.data)
+    };
+    let mut planes: HashMap<PlaneKey<N>, bool> = HashMap::new();
+    let mut key_of = |t: usize| -> (PlaneKey<N>, bool) {
+        let [a, b, c] = soup.corners(t);
+        let (k, along) = plane_key(a, b, c);
+        planes.insert(k.clone(), along);
+        (k, along)
+    };
+    // Patches across edges whose midpoints are off the other operand's boundary.
+    let mut edges: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
+    for (i, (t, _)) in pieces.iter().enumerate() {
+        for k in 0..3 {
+            let (u, v) = (t[k], t[(k + 1) % 3]);
+            edges.entry((u.min(v), u.max(v))).or_default().push(i);
+        }
+    }
+    let mut uf = UnionFind::new(pieces.len());
+    for ((u, v), at) in &edges {
+        let mid = soup.points[*u].midpoint(&soup.points[*v]);
+        for o in 0..2 {
+            let mine: Vec<usize> = at.iter().copied().filter(|&i| op(i) == o).collect();
+            if mine.len() > 1 && on_operand(1 - o, &mid).is_none() {
+                for w in &mine[1..] {
+                    uf.union(mine[0], *w);
+                }
+            }
+        }
+    }
+    let mut memo: HashMap<usize, Side> = HashMap::new();
+    (0..pieces.len())
+        .map(|i| {
+            let (t, parent) = &pieces[i];
+            let o = op(i);
+            let [a, b, c] = t.map(|v| &soup.points[v]);
+            let q = Point3::centroid(a, b, c);
+            if let Some(s) = on_operand(1 - o, &q) {
+                let (_, mine) = key_of(*parent);
+                let (_, theirs) = key_of(s);
+                return if mine == theirs { Side::Same } else { Side::Opposite };
+            }
+            let root = uf.find(i);
+            *memo.entry(root).or_insert_with(|| {
+                let others = (0..soup.tris.len())
+                    .filter(|&s| soup.operand[s] as usize == 1 - o)
+                    .map(|s| soup.corners(s));
+                if winding(others, &q, ctx) + i64::from(!bounded[1 - o]) == 1 {
+                    Side::Inside
+                } else {
+                    Side::Outside
+                }
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,24 @@
+//! The 3D Yin space (seeds 003, 004; DESIGN-3D): boundary representations by oriented
+//! triangles partitioned into glued surfaces, and the Boolean algebra on them, on the same
+//! number trait and kernel as [`crate::yin2`].
+
+mod arrange;
+mod betti;
+mod canonical;
+mod error;
+mod fins;
+mod geom;
+mod glue;
+mod hasse;
+mod locate;
+mod meet;
+mod ops;
+mod set;
+mod tri;
+mod triangulate;
+mod validate;
+
+pub use betti::Betti3;
+pub use error::Yin3Error;
+pub use hasse::Atom3;
+pub use set::{GluedSurface, YinSet3};

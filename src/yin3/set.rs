@@ -1,0 +1,317 @@
+//! The 3D Yin space {0̂, 1̂, boundary representations} (seed 003 Def. 7.1–7.8, Cor. 7.11;
+//! DESIGN-3D §1) as the type `YinSet3`.
+
+use super::betti::{betti, Betti3};
+use super::canonical::{canonical, Canon};
+use super::error::Yin3Error;
+use super::fins::{first_non_alternating, FinTable, Pairing};
+use super::geom::det3;
+use super::glue::{corner_cycles, glued_surfaces};
+use super::hasse::{hasse, Atom3};
+use super::locate::{on_triangles, winding};
+use crate::kernel::{BBox3, Point3};
+use crate::num::Num;
+use crate::yin2::Location;
+use std::hash::{Hash, Hasher};
+use std::sync::OnceLock;
+
+/// A 3D Yin set, stored as its boundary representation (seed 003 Thm 7.10, Cor. 7.11): 0̂ (∅),
+/// 1̂ (ℝ³), or oriented triangles forming a conforming complex, partitioned into glued
+/// surfaces. Normals point out of the set. `==` and `Hash` are set equality, although
+/// triangulations are not unique.
+#[derive(Clone, Debug)]
+pub struct YinSet3<N: Num> {
+    pub(crate) repr: Repr3<N>,
+    pub(crate) ctx: N::Ctx,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) enum Repr3<N: Num> {
+    Empty,
+    Full,
+    Brep(Box<Brep<N>>),
+}
+
+/// One glued surface (seed 003 Def. 7.1) of a set's boundary.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct GluedSurface {
+    /// Its triangles (indices into [`YinSet3::triangles`]).
+    pub triangles: Vec<usize>,
+    /// True if positively oriented: normals point from its bounded to its unbounded complement
+    /// (seed 003 Def. 7.3).
+    pub positive: bool,
+    /// The genus of the surface it is a quotient of.
+    pub genus: usize,
+}
+
+/// A boundary representation with its glued surfaces, Hasse diagram and atoms.
+#[derive(Clone, Debug)]
+pub(crate) struct Brep<N: Num> {
+    pub(crate) points: Vec<Point3<N>>,
+    pub(crate) tris: Vec<[usize; 3]>,
+    pub(crate) table: FinTable,
+    pub(crate) surfaces: Vec<GluedSurface>,
+    pub(crate) parent: Vec<Option<usize>>,
+    pub(crate) atoms: Vec<Atom3>,
+    pub(crate) bounded: bool,
+    betti: OnceLock<Betti3>,
+    canon: OnceLock<Canon<N>>,
+}
+
+impl<N: Num> Brep<N> {
+    /// Build from a conforming closed complex (points may be unused): fins, glued surfaces,
+    /// orientations, Hasse diagram, atoms. Errors name triangles by their index in `tris`.
+    pub(crate) fn assemble(points: Vec<Point3<N>>, tris: Vec<[usize; 3]>, ctx: &N::Ctx) -> Result<Brep<N>, Yin3Error> {
+        let (points, tris) = compact(points, tris);
+        let table = FinTable::new(&points, &tris, ctx);
+        if let Some((e, f, g)) = first_non_alternating(&table) {
+            let (a, b) = table.edges[e];
+            let (from, to) = (points[a].to_string(), points[b].to_string());
+            let count = table.fins[e].len();
+            return Err(if count % 2 == 1 {
+                Yin3Error::OpenEdge { from, to, count, face: f.tri }
+            } else {
+                Yin3Error::Inconsistent { from, to, a: f.tri, b: g.tri }
+            });
+        }
+        let (label, count) = glued_surfaces(&table, tris.len(), Pairing::Inside);
+        let h = hasse(&points, &tris, &label, count, ctx);
+        let genus = genera(&points, &tris, &table, &label, count);
+        let mut surfaces: Vec<GluedSurface> = (0..count)
+            .map(|s| GluedSurface {
+                triangles: Vec::new(),
+                positive: h.volume6[s].sign() == std::cmp::Ordering::Greater,
+                genus: genus[s],
+            })
+            .collect();
+        for (t, &l) in label.iter().enumerate() {
+            surfaces[l].triangles.push(t);
+        }
+        Ok(Brep {
+            points,
+            tris,
+            table,
+            surfaces,
+            parent: h.parent,
+            atoms: h.atoms,
+            bounded: h.bounded,
+            betti: OnceLock::new(),
+            canon: OnceLock::new(),
+        })
+    }
+
+    /// The corners of triangle `t`.
+    pub(crate) fn corners(&self, t: usize) -> [&Point3<N>; 3] {
+        self.tris[t].map(|v| &self.points[v])
+    }
+
+    /// All triangles' corners.
+    pub(crate) fn all_corners(&self) -> impl Iterator<Item = [&Point3<N>; 3]> + '_ {
+        (0..self.tris.len()).map(|t| self.corners(t))
+    }
+
+    /// Locate each point (DESIGN-3D §2.11).
+    pub(crate) fn locate(&self, points: &[Point3<N>], ctx: &N::Ctx) -> Vec<Location> {
+        points
+            .iter()
+            .map(|q| {
+                if on_triangles(self.all_corners(), q, ctx) {
+                    Location::OnBoundary
+                } else if winding(self.all_corners(), q, ctx) + i64::from(!self.bounded) == 1 {
+                    Location::Inside
+                } else {
+                    Location::Outside
+                }
+            })
+            .collect()
+    }
+
+    /// The canonical form deciding equality.
+    fn canon(&self, ctx: &N::Ctx) -> &Canon<N> {
+        self.canon.get_or_init(|| canonical(&self.points, &self.tris, ctx))
+    }
+}
+
+/// Keep only the points that triangles use, renumbered in order of first use.
+fn compact<N: Num>(points: Vec<Point3<N>>, tris: Vec<[usize; 3]>) -> (Vec<Point3<N>>, Vec<[usize; 3]>) {
+    let mut new = vec![usize::MAX; points.len()];
+    let mut kept = Vec::new();
+    let mut slots: Vec<Option<Point3<N>>> = points.into_iter().map(Some).collect();
+    let tris = tris
+        .into_iter()
+        .map(|t| {
+            t.map(|v| {
+                if new[v] == usize::MAX {
+                    new[v] = kept.len();
+                    kept.push(slots[v].take().expect("each point is taken once"));
+                }
+                new[v]
+            })
+        })
+        .collect();
+    (kept, tris)
+}
+
+/// The genus of each glued surface: its triangles joined across its own pairing (the
+/// ⊥-pairing restricted to its fins, GS.2), χ = V − E + F with V its corner cycles.
+fn genera<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table: &FinTable, label: &[usize], count: usize) -> Vec<usize> {
+    let _ = points;
+    let mut cycles = corner_cycles(table, tris, Some(label), Pairing::Outside);
+    let mut vertices = vec![std::collections::HashSet::new(); count];
+    let mut faces = vec![0i64; count];
+    for (t, &l) in label.iter().enumerate() {
+        faces[l] += 1;
+        for k in 0..3 {
+            vertices[l].insert(cycles.find(3 * t + k));
+        }
+    }
+    (0..count)
+        .map(|s| {
+            let chi = vertices[s].len() as i64 - faces[s] / 2;
+            ((2 - chi) / 2).max(0) as usize
+        })
+        .collect()
+}
+
+impl<N: Num> YinSet3<N> {
+    /// 0̂, the empty set.
+    pub fn empty() -> YinSet3<N> {
+        YinSet3 {
+            repr: Repr3::Empty,
+            ctx: N::Ctx::default(),
+        }
+    }
+
+    /// 1̂, the whole space.
+    pub fn full() -> YinSet3<N> {
+        YinSet3 {
+            repr: Repr3::Full,
+            ctx: N::Ctx::default(),
+        }
+    }
+
+    pub(crate) fn from_brep(b: Brep<N>, ctx: N::Ctx) -> YinSet3<N> {
+        YinSet3 {
+            repr: Repr3::Brep(Box::new(b)),
+            ctx,
+        }
+    }
+
+    pub(crate) fn brep(&self) -> Option<&Brep<N>> {
+        match &self.repr {
+            Repr3::Brep(b) => Some(b),
+            _ => None,
+        }
+    }
+
+    /// The number context in force.
+    pub fn ctx(&self) -> N::Ctx {
+        self.ctx
+    }
+
+    /// True for 0̂.
+    pub fn is_empty(&self) -> bool {
+        matches!(self.repr, Repr3::Empty)
+    }
+
+    /// True for 1̂.
+    pub fn is_full(&self) -> bool {
+        matches!(self.repr, Repr3::Full)
+    }
+
+    /// True if the set is bounded (0̂ is, 1̂ is not).
+    pub fn is_bounded(&self) -> bool {
+        match &self.repr {
+            Repr3::Empty => true,
+            Repr3::Full => false,
+            Repr3::Brep(b) => b.bounded,
+        }
+    }
+
+    /// The boundary's vertices (empty for 0̂ and 1̂).
+    pub fn vertices(&self) -> &[Point3<N>] {
+        self.brep().map_or(&[], |b| &b.points)
+    }
+
+    /// The boundary's oriented triangles, as indices into [`YinSet3::vertices`]; normals
+    /// (b − a) × (c − a) point out of the set.
+    pub fn triangles(&self) -> &[[usize; 3]] {
+        self.brep().map_or(&[], |b| &b.tris)
+    }
+
+    /// The glued surfaces of the boundary (seed 003 Def. 7.8).
+    pub fn surfaces(&self) -> &[GluedSurface] {
+        self.brep().map_or(&[], |b| &b.surfaces)
+    }
+
+    /// The Hasse diagram: each surface's parent, the smallest surface whose bounded complement
+    /// contains it (seed 003 Def. 7.5–7.6).
+    pub fn parents(&self) -> &[Option<usize>] {
+        self.brep().map_or(&[], |b| &b.parent)
+    }
+
+    /// The atoms: one per connected component (seed 003 Thm 7.10, Cor. 7.11).
+    pub fn atoms(&self) -> &[Atom3] {
+        self.brep().map_or(&[], |b| &b.atoms)
+    }
+
+    /// Betti numbers b0, b1, b2 of the set as an open subset of ℝ³ (DESIGN-3D §2.12).
+    pub fn betti(&self) -> Betti3 {
+        match &self.repr {
+            Repr3::Empty => Betti3::default(),
+            Repr3::Full => Betti3 { b0: 1, b1: 0, b2: 0 },
+            Repr3::Brep(b) => *b.betti.get_or_init(|| betti(&b.points, &b.tris, &b.table, b.atoms.len(), b.bounded, &self.ctx)),
+        }
+    }
+
+    /// The volume (exact in exact mode); `None` if the set is unbounded.
+    pub fn volume(&self) -> Option<N> {
+        match &self.repr {
+            Repr3::Empty => Some(N::zero()),
+            Repr3::Full => None,
+            Repr3::Brep(b) if b.bounded => {
+                let sum = b.all_corners().fold(N::zero(), |s, [p, q, r]| s + det3(p, q, r));
+                Some(sum / N::from_i64(6))
+            }
+            Repr3::Brep(_) => None,
+        }
+    }
+
+    /// The bounding box of the boundary (`None` for 0̂ and 1̂).
+    pub fn bbox(&self) -> Option<BBox3<N>> {
+        BBox3::of(self.vertices())
+    }
+
+    /// Locate each point: inside, outside or on the boundary (DESIGN-3D §2.11).
+    pub fn locate(&self, points: &[Point3<N>]) -> Vec<Location> {
+        match &self.repr {
+            Repr3::Empty => vec![Location::Outside; points.len()],
+            Repr3::Full => vec![Location::Inside; points.len()],
+            Repr3::Brep(b) => b.locate(points, &self.ctx),
+        }
+    }
+}
+
+impl<N: Num> PartialEq for YinSet3<N> {
+    fn eq(&self, other: &Self) -> bool {
+        match (&self.repr, &other.repr) {
+            (Repr3::Empty, Repr3::Empty) | (Repr3::Full, Repr3::Full) => true,
+            (Repr3::Brep(a), Repr3::Brep(b)) => a.canon(&self.ctx) == b.canon(&other.ctx),
+            _ => false,
+        }
+    }
+}
+impl<N: Num> Eq for YinSet3<N> {}
+
+impl<N: Num> Hash for YinSet3<N> {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        match &self.repr {
+            Repr3::Empty => 0u8.hash(state),
+            Repr3::Full => 1u8.hash(state),
+            Repr3::Brep(b) => {
+                2u8.hash(state);
+                b.canon(&self.ctx).hash(state);
+            }
+        }
+    }
+}
