@@ -8,9 +8,10 @@
 use super::geom::{f64_box, in_triangle3, Chart};
 use super::tri::intersect;
 use super::triangulate::triangulate;
-use crate::kernel::{Point, Point3};
+use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
+use std::cmp::Ordering;
 use std::collections::{BTreeSet, HashMap};
 
 /// Triangles over one table of interned points, each tagged with its operand.
@@ -106,6 +107,10 @@ pub(crate) fn arrange<N: Num>(
             .collect();
         others.sort_unstable();
         for j in others {
+            if let Some(shared) = shared_only(soup, i, j, ctx) {
+                contact.extend(shared);
+                continue;
+            }
             let Some(c) = intersect(soup.corners(i), soup.corners(j), ctx) else {
                 continue;
             };
@@ -154,6 +159,32 @@ pub(crate) fn arrange<N: Num>(
     Ok(pieces)
 }
 
+/// The shared vertices of triangles `i` and `j` if they are the whole intersection, decided
+/// without constructing anything: two triangles sharing an edge and not coplanar meet in that
+/// edge; two sharing one vertex meet only there if either one's other corners lie strictly on
+/// one side of the other's plane.
+fn shared_only<N: Num>(soup: &Soup<N>, i: usize, j: usize, ctx: &N::Ctx) -> Option<Vec<usize>> {
+    let (t, s) = (soup.tris[i], soup.tris[j]);
+    let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
+    let side = |tri: [usize; 3], other: [usize; 3]| -> Vec<Ordering> {
+        let [a, b, c] = tri.map(|v| &soup.points[v]);
+        other
+            .iter()
+            .filter(|v| !shared.contains(v))
+            .map(|&v| orient3d(a, b, c, &soup.points[v], ctx))
+            .collect()
+    };
+    let one_side = |o: Vec<Ordering>| {
+        o.iter().all(|x| *x == Ordering::Greater) || o.iter().all(|x| *x == Ordering::Less)
+    };
+    let alone = match shared.len() {
+        2 => side(t, s)[0] != Ordering::Equal,
+        1 => one_side(side(t, s)) || one_side(side(s, t)),
+        _ => false,
+    };
+    alone.then_some(shared)
+}
+
 /// The pieces of triangle `t` with the points `extra` on it and the cut segments `cuts`.
 fn retriangulate<N: Num>(
     soup: &Soup<N>,
@@ -164,9 +195,16 @@ fn retriangulate<N: Num>(
 ) -> Result<Vec<[usize; 3]>, ArrangeError<N>> {
     let [a, b, c] = soup.corners(t);
     let chart = Chart::of_triangle(a, b, c);
-    let ids: Vec<usize> = soup.tris[t].iter().copied().chain(extra.iter().copied()).collect();
+    let ids: Vec<usize> = soup.tris[t]
+        .iter()
+        .copied()
+        .chain(extra.iter().copied())
+        .collect();
     let local: HashMap<usize, usize> = ids.iter().enumerate().map(|(k, &v)| (v, k)).collect();
-    let pts: Vec<Point<N>> = ids.iter().map(|&v| chart.project(&soup.points[v])).collect();
+    let pts: Vec<Point<N>> = ids
+        .iter()
+        .map(|&v| chart.project(&soup.points[v]))
+        .collect();
     let cons: Vec<(usize, usize)> = cuts
         .iter()
         .filter(|(p, q)| p != q)

@@ -69,9 +69,24 @@ pub(crate) fn betti<N: Num>(
         } else {
             let groups: Vec<Vec<usize>> = comps
                 .iter()
-                .map(|&k| corners.iter().copied().filter(|&c| link.find(c) == k).collect())
+                .map(|&k| {
+                    corners
+                        .iter()
+                        .copied()
+                        .filter(|&c| link.find(c) == k)
+                        .collect()
+                })
                 .collect();
-            local_components(points, tris, p, &groups, &mut inside, &mut outside, &ycycles, ctx) as i64
+            local_components(
+                points,
+                tris,
+                p,
+                &groups,
+                &mut inside,
+                &mut outside,
+                &ycycles,
+                ctx,
+            ) as i64
         };
         sum += 2 * r - l;
     }
@@ -80,7 +95,9 @@ pub(crate) fn betti<N: Num>(
     let b1 = atoms as i64 + b2 as i64 - chi;
     Betti3 {
         b0: atoms,
-        b1: b1.max(0) as usize,
+        b1: usize::try_from(b1).unwrap_or_else(|_| {
+            panic!("negative b1 = {b1} (b0 = {atoms}, b2 = {b2}, χ = {chi}): a kernel bug")
+        }),
         b2,
     }
 }
@@ -92,7 +109,12 @@ fn corner(tris: &[[usize; 3]], t: usize, v: usize) -> usize {
 
 /// The number of components of ℝ³ ∖ 𝒴 (closed): the atoms of the complement, joined when
 /// they share a vertex.
-fn closed_complement_components<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table: &FinTable, ctx: &N::Ctx) -> usize {
+fn closed_complement_components<N: Num>(
+    points: &[Point3<N>],
+    tris: &[[usize; 3]],
+    table: &FinTable,
+    ctx: &N::Ctx,
+) -> usize {
     let (label, count) = glued_surfaces(table, tris.len(), Pairing::Outside);
     let reversed: Vec<[usize; 3]> = tris.iter().map(|&[a, b, c]| [a, c, b]).collect();
     let h = hasse(points, &reversed, &label, count, ctx);
@@ -137,7 +159,9 @@ fn local_components<N: Num>(
     for i in 0..m {
         for j in 0..m {
             if i != j {
-                face[i][j] = face_holding(points, tris, p, &groups[i], &groups[j], inside, outside, ctx);
+                face[i][j] = face_holding(
+                    points, tris, p, &groups[i], &groups[j], inside, outside, ctx,
+                );
             }
         }
     }
@@ -169,7 +193,14 @@ fn face_holding<N: Num>(
     outside: &mut UnionFind,
     ctx: &N::Ctx,
 ) -> (bool, usize) {
-    const WEIGHTS: [[i64; 3]; 6] = [[1, 1, 1], [1, 2, 3], [3, 1, 2], [2, 3, 1], [1, 5, 2], [4, 1, 7]];
+    const WEIGHTS: [[i64; 3]; 6] = [
+        [1, 1, 1],
+        [1, 2, 3],
+        [3, 1, 2],
+        [2, 3, 1],
+        [1, 5, 2],
+        [4, 1, 7],
+    ];
     let wedge = |c: usize| {
         let t = tris[c / 3];
         let k = c % 3;
@@ -178,7 +209,12 @@ fn face_holding<N: Num>(
     let interior = |c: usize, w: [i64; 3]| {
         let [a, b, d] = wedge(c);
         let s = N::from_i64(w[0] + w[1] + w[2]);
-        let mix = |k: usize| (N::from_i64(w[0]) * a.coord(k).clone() + N::from_i64(w[1]) * b.coord(k).clone() + N::from_i64(w[2]) * d.coord(k).clone()) / s.clone();
+        let mix = |k: usize| {
+            (N::from_i64(w[0]) * a.coord(k).clone()
+                + N::from_i64(w[1]) * b.coord(k).clone()
+                + N::from_i64(w[2]) * d.coord(k).clone())
+                / s.clone()
+        };
         Point3::new(mix(0), mix(1), mix(2))
     };
     for &cx in cj {
@@ -235,7 +271,12 @@ fn first_hit<'a, N: Num>(
         let s = vx.clone() / (vx.clone() - vy);
         let z = x.lerp(y, &s);
         let chart = super::geom::Chart::of_normal(&n);
-        let (o2, a2, b2, z2) = (chart.project(o), chart.project(a), chart.project(b), chart.project(&z));
+        let (o2, a2, b2, z2) = (
+            chart.project(o),
+            chart.project(a),
+            chart.project(b),
+            chart.project(&z),
+        );
         let (oa, ob) = (orient(&o2, &a2, &z2, ctx), orient(&o2, &b2, &z2, ctx));
         if oa == Ordering::Equal || ob == Ordering::Equal {
             return None;

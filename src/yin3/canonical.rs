@@ -12,13 +12,24 @@ use std::collections::BTreeMap;
 /// (index 1) the plane key's normal, in the key's chart.
 pub(crate) type Canon<N> = BTreeMap<PlaneKey<N>, [YinSet2<N>; 2]>;
 
+/// Per plane, the triangles (as 2D rings) with normal along and against the key's normal.
+type Rings<N> = BTreeMap<PlaneKey<N>, [Vec<Vec<Point<N>>>; 2]>;
+
 /// The canonical form of the triangles `tris` over `points`.
-pub(crate) fn canonical<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], ctx: &N::Ctx) -> Canon<N> {
-    let mut rings: BTreeMap<PlaneKey<N>, [Vec<Vec<Point<N>>>; 2]> = BTreeMap::new();
+pub(crate) fn canonical<N: Num>(
+    points: &[Point3<N>],
+    tris: &[[usize; 3]],
+    ctx: &N::Ctx,
+) -> Canon<N> {
+    let mut rings: Rings<N> = BTreeMap::new();
     for t in tris {
         let [a, b, c] = t.map(|v| &points[v]);
         let (key, along) = plane_key(a, b, c);
-        let chart = Chart::of_normal(&Point3::new(key.n[0].clone(), key.n[1].clone(), key.n[2].clone()));
+        let chart = Chart::of_normal(&Point3::new(
+            key.n[0].clone(),
+            key.n[1].clone(),
+            key.n[2].clone(),
+        ));
         // Counterclockwise in the chart either way, so that the nonzero fill is the union.
         let ring = if along {
             vec![chart.project(a), chart.project(b), chart.project(c)]

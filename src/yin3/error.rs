@@ -29,7 +29,9 @@ pub enum Yin3Error {
         vertex: usize,
     },
     /// Two faces cross each other.
-    #[error("faces {a} and {b} cross each other (their interiors meet along a segment through {point})")]
+    #[error(
+        "faces {a} and {b} cross each other (their interiors meet along a segment through {point})"
+    )]
     Crossing { a: usize, b: usize, point: String },
     /// Two coplanar faces overlap in an area.
     #[error("faces {a} and {b} are coplanar and overlap in an area around {point}")]

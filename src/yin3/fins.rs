@@ -78,7 +78,13 @@ pub(crate) fn partner_in(fins: &[Fin], i: usize, pairing: Pairing) -> usize {
 }
 
 /// Sort the fins of the edge `a → b` counterclockwise about b − a, starting from the first.
-fn sort_about<N: Num>(a: &Point3<N>, b: &Point3<N>, fins: &mut [Fin], points: &[Point3<N>], ctx: &N::Ctx) {
+fn sort_about<N: Num>(
+    a: &Point3<N>,
+    b: &Point3<N>,
+    fins: &mut [Fin],
+    points: &[Point3<N>],
+    ctx: &N::Ctx,
+) {
     if fins.len() <= 2 {
         return;
     }
@@ -101,7 +107,9 @@ fn sort_about<N: Num>(a: &Point3<N>, b: &Point3<N>, fins: &mut [Fin], points: &[
     let first = fins[0];
     fins[1..].sort_by(|f, g| {
         let (cf, cg) = (&points[f.apex], &points[g.apex]);
-        class(cf).cmp(&class(cg)).then_with(|| orient3d(a, b, cg, cf, ctx))
+        class(cf)
+            .cmp(&class(cg))
+            .then_with(|| orient3d(a, b, cg, cf, ctx))
     });
     debug_assert_eq!(fins[0], first);
 }

@@ -48,7 +48,11 @@ pub(crate) struct PlaneKey<N> {
 
 /// The canonical key of the plane of the (non-degenerate) triangle `abc`, and `true` if the
 /// triangle's normal is a positive multiple of the key's normal.
-pub(crate) fn plane_key<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> (PlaneKey<N>, bool) {
+pub(crate) fn plane_key<N: Num>(
+    a: &Point3<N>,
+    b: &Point3<N>,
+    c: &Point3<N>,
+) -> (PlaneKey<N>, bool) {
     let m = normal(a, b, c);
     let lead = [&m.x, &m.y, &m.z]
         .into_iter()
@@ -106,7 +110,13 @@ impl Chart {
 }
 
 /// True if `p` lies in the closed 2D triangle `abc` (counterclockwise).
-pub(crate) fn in_triangle2<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, p: &Point<N>, ctx: &N::Ctx) -> bool {
+pub(crate) fn in_triangle2<N: Num>(
+    a: &Point<N>,
+    b: &Point<N>,
+    c: &Point<N>,
+    p: &Point<N>,
+    ctx: &N::Ctx,
+) -> bool {
     orient(a, b, p, ctx) != Ordering::Less
         && orient(b, c, p, ctx) != Ordering::Less
         && orient(c, a, p, ctx) != Ordering::Less
@@ -119,12 +129,20 @@ pub(crate) fn in_triangle3<N: Num>(t: [&Point3<N>; 3], p: &Point3<N>, ctx: &N::C
         return false;
     }
     let ch = Chart::of_triangle(a, b, c);
-    in_triangle2(&ch.project(a), &ch.project(b), &ch.project(c), &ch.project(p), ctx)
+    in_triangle2(
+        &ch.project(a),
+        &ch.project(b),
+        &ch.project(c),
+        &ch.project(p),
+        ctx,
+    )
 }
 
 /// The `f64` box of a set of points, widened by an ulp on each side so that it contains the
 /// exact points' box whatever the arithmetic (as the 2D contact search does).
-pub(crate) fn f64_box<'a, N: Num>(points: impl IntoIterator<Item = &'a Point3<N>>) -> rstar::AABB<[f64; 3]> {
+pub(crate) fn f64_box<'a, N: Num>(
+    points: impl IntoIterator<Item = &'a Point3<N>>,
+) -> rstar::AABB<[f64; 3]> {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for p in points {

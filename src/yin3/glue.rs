@@ -21,7 +21,12 @@ impl Pairing {
 /// Call `f(fin, edge, partner)` for every fin of every edge and its partner in `pairing`,
 /// among the fins of the same `label` only when labels are given (the restricted cyclic order
 /// of GS.2).
-pub(crate) fn pair_fins(table: &FinTable, label: Option<&[usize]>, pairing: Pairing, mut f: impl FnMut(Fin, usize, Fin)) {
+pub(crate) fn pair_fins(
+    table: &FinTable,
+    label: Option<&[usize]>,
+    pairing: Pairing,
+    mut f: impl FnMut(Fin, usize, Fin),
+) {
     for (e, fins) in table.fins.iter().enumerate() {
         match label {
             None => {
@@ -50,7 +55,11 @@ pub(crate) fn pair_fins(table: &FinTable, label: Option<&[usize]>, pairing: Pair
 /// The glued surfaces of a closed complex of `ntris` triangles bounding a set on the side
 /// that `bounding` pairs (Inside for 𝒴, Outside for its complement): each triangle's surface
 /// label and the number of surfaces.
-pub(crate) fn glued_surfaces(table: &FinTable, ntris: usize, bounding: Pairing) -> (Vec<usize>, usize) {
+pub(crate) fn glued_surfaces(
+    table: &FinTable,
+    ntris: usize,
+    bounding: Pairing,
+) -> (Vec<usize>, usize) {
     let mut gs1 = UnionFind::new(ntris);
     pair_fins(table, None, bounding, |f, _, g| {
         gs1.union(f.tri, g.tri);
@@ -66,7 +75,12 @@ pub(crate) fn glued_surfaces(table: &FinTable, ntris: usize, bounding: Pairing) 
 /// Corner cycles: corners (3 t + k is corner k of triangle t) joined when their triangles are
 /// partners in `pairing` at an edge through the corner's vertex, restricted to fins of one
 /// label when labels are given.
-pub(crate) fn corner_cycles(table: &FinTable, tris: &[[usize; 3]], label: Option<&[usize]>, pairing: Pairing) -> UnionFind {
+pub(crate) fn corner_cycles(
+    table: &FinTable,
+    tris: &[[usize; 3]],
+    label: Option<&[usize]>,
+    pairing: Pairing,
+) -> UnionFind {
     let corner = |t: usize, v: usize| 3 * t + tris[t].iter().position(|&w| w == v).unwrap_or(0);
     let mut uf = UnionFind::new(3 * tris.len());
     pair_fins(table, label, pairing, |f, e, g| {

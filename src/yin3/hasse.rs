@@ -33,7 +33,13 @@ pub(crate) struct Hasse<N> {
 }
 
 /// The Hasse diagram of the surfaces `label` (per triangle, `count` of them) of the triangles.
-pub(crate) fn hasse<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], label: &[usize], count: usize, ctx: &N::Ctx) -> Hasse<N> {
+pub(crate) fn hasse<N: Num>(
+    points: &[Point3<N>],
+    tris: &[[usize; 3]],
+    label: &[usize],
+    count: usize,
+    ctx: &N::Ctx,
+) -> Hasse<N> {
     let mut members: Vec<Vec<usize>> = vec![Vec::new(); count];
     for (t, &l) in label.iter().enumerate() {
         members[l].push(t);
@@ -41,7 +47,12 @@ pub(crate) fn hasse<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], label: &[
     let corners = |t: usize| tris[t].map(|v| &points[v]);
     let volume6: Vec<N> = members
         .iter()
-        .map(|m| m.iter().fold(N::zero(), |s, &t| { let [a, b, c] = corners(t); s + det3(a, b, c) }))
+        .map(|m| {
+            m.iter().fold(N::zero(), |s, &t| {
+                let [a, b, c] = corners(t);
+                s + det3(a, b, c)
+            })
+        })
         .collect();
     let total = volume6.iter().fold(N::zero(), |s, v| s + v.clone());
     let size: Vec<N> = volume6.iter().map(super::geom::abs).collect();
@@ -57,7 +68,11 @@ pub(crate) fn hasse<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], label: &[
         };
         let mut best: Option<usize> = None;
         for k in 0..count {
-            if k == l || size[k] <= size[l] || !boxes[k].contains(&boxes[l].min) || !boxes[k].contains(&boxes[l].max) {
+            if k == l
+                || size[k] <= size[l]
+                || !boxes[k].contains(&boxes[l].min)
+                || !boxes[k].contains(&boxes[l].max)
+            {
                 continue;
             }
             if best.is_some_and(|b| size[b] <= size[k]) {
@@ -69,15 +84,22 @@ pub(crate) fn hasse<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], label: &[
         }
         parent[l] = best;
     }
-    let positive: Vec<bool> = volume6.iter().map(|v| v.sign() == Ordering::Greater).collect();
+    let positive: Vec<bool> = volume6
+        .iter()
+        .map(|v| v.sign() == Ordering::Greater)
+        .collect();
     let mut atoms: Vec<Atom3> = (0..count)
         .filter(|&s| positive[s])
         .map(|s| Atom3 {
             outer: Some(s),
-            inner: (0..count).filter(|&n| !positive[n] && parent[n] == Some(s)).collect(),
+            inner: (0..count)
+                .filter(|&n| !positive[n] && parent[n] == Some(s))
+                .collect(),
         })
         .collect();
-    let free: Vec<usize> = (0..count).filter(|&n| !positive[n] && parent[n].is_none()).collect();
+    let free: Vec<usize> = (0..count)
+        .filter(|&n| !positive[n] && parent[n].is_none())
+        .collect();
     if !free.is_empty() {
         atoms.push(Atom3 {
             outer: None,

@@ -9,12 +9,20 @@ use std::cmp::Ordering;
 /// The winding number at `q` of the oriented triangles `tris`: the sum of sign(n_x) over the
 /// triangles that the ray from q + (0, ε, ε²) in direction +x crosses. `q` must lie on none of
 /// them. For the boundary of a Yin set 𝒴 it is 1_𝒴(q), or 1_𝒴(q) − 1 if 𝒴 is unbounded.
-pub(crate) fn winding<'a, N: Num>(tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>, q: &Point3<N>, ctx: &N::Ctx) -> i64 {
+pub(crate) fn winding<'a, N: Num>(
+    tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>,
+    q: &Point3<N>,
+    ctx: &N::Ctx,
+) -> i64 {
     tris.into_iter().map(|t| crossing(t, q, ctx)).sum()
 }
 
 /// True if `q` lies on one of the closed triangles.
-pub(crate) fn on_triangles<'a, N: Num>(tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>, q: &Point3<N>, ctx: &N::Ctx) -> bool {
+pub(crate) fn on_triangles<'a, N: Num>(
+    tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>,
+    q: &Point3<N>,
+    ctx: &N::Ctx,
+) -> bool {
     tris.into_iter()
         .any(|t| in_box(t, q, [0, 1, 2]) && in_triangle3(t, q, ctx))
 }

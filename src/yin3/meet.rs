@@ -37,7 +37,13 @@ impl<N: Num> YinSet3<N> {
             (_, None) => return self.clone(),
             (Some(a), Some(b)) => (a, b),
         };
-        if a.bounded && b.bounded && !self.bbox().zip(other.bbox()).is_some_and(|(x, y)| x.meets(&y)) {
+        if a.bounded
+            && b.bounded
+            && !self
+                .bbox()
+                .zip(other.bbox())
+                .is_some_and(|(x, y)| x.meets(&y))
+        {
             return YinSet3::empty();
         }
         let mut soup = Soup::new();
@@ -46,17 +52,19 @@ impl<N: Num> YinSet3<N> {
                 soup.push(brep.corners(t), operand as u8);
             }
         }
-        let pieces = arrange(&mut soup, Pairs::Across, &ctx)
-            .unwrap_or_else(|e| panic!("the operands of a meet are valid Yin sets, yet their arrangement failed: {e:?}"));
+        let pieces = arrange(&mut soup, Pairs::Across, &ctx).unwrap_or_else(|e| {
+            panic!("the operands of a meet are valid Yin sets, yet their arrangement failed: {e:?}")
+        });
         let bounded = [a.bounded, b.bounded];
         let sides = classify(&soup, &pieces, bounded, &ctx);
         let kept: Vec<[usize; 3]> = pieces
             .iter()
             .zip(&sides)
-            .filter(|((_, parent), side)| match (soup.operand[*parent], side) {
-                (0, Side::Same) => true,
-                (_, Side::Inside) => true,
-                _ => false,
+            .filter(|((_, parent), side)| {
+                matches!(
+                    (soup.operand[*parent], side),
+                    (0, Side::Same) | (_, Side::Inside)
+                )
             })
             .map(|((t, _), _)| *t)
             .collect();
@@ -71,7 +79,12 @@ impl<N: Num> YinSet3<N> {
 
 /// The side of every piece relative to the other operand. Membership is constant on patches
 /// (pieces of one operand joined across edges off the other's boundary): one ray per patch.
-fn classify<N: Num>(soup: &Soup<N>, pieces: &[([usize; 3], usize)], bounded: [bool; 2], ctx: &N::Ctx) -> Vec<Side> {
+fn classify<N: Num>(
+    soup: &Soup<N>,
+    pieces: &[([usize; 3], usize)],
+    bounded: [bool; 2],
+    ctx: &N::Ctx,
+) -> Vec<Side> {
     let op = |i: usize| soup.operand[pieces[i].1] as usize;
     let trees: [RTree<GeomWithData<Rectangle<[f64; 3]>, usize>>; 2] = [0u8, 1].map(|o| {
         RTree::bulk_load(
@@ -124,7 +137,11 @@ fn classify<N: Num>(soup: &Soup<N>, pieces: &[([usize; 3], usize)], bounded: [bo
             if let Some(s) = on_operand(1 - o, &q) {
                 let (_, mine) = key_of(*parent);
                 let (_, theirs) = key_of(s);
-                return if mine == theirs { Side::Same } else { Side::Opposite };
+                return if mine == theirs {
+                    Side::Same
+                } else {
+                    Side::Opposite
+                };
             }
             let root = uf.find(i);
             *memo.entry(root).or_insert_with(|| {

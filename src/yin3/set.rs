@@ -61,7 +61,11 @@ pub(crate) struct Brep<N: Num> {
 impl<N: Num> Brep<N> {
     /// Build from a conforming closed complex (points may be unused): fins, glued surfaces,
     /// orientations, Hasse diagram, atoms. Errors name triangles by their index in `tris`.
-    pub(crate) fn assemble(points: Vec<Point3<N>>, tris: Vec<[usize; 3]>, ctx: &N::Ctx) -> Result<Brep<N>, Yin3Error> {
+    pub(crate) fn assemble(
+        points: Vec<Point3<N>>,
+        tris: Vec<[usize; 3]>,
+        ctx: &N::Ctx,
+    ) -> Result<Brep<N>, Yin3Error> {
         let (points, tris) = compact(points, tris);
         let table = FinTable::new(&points, &tris, ctx);
         if let Some((e, f, g)) = first_non_alternating(&table) {
@@ -69,9 +73,19 @@ impl<N: Num> Brep<N> {
             let (from, to) = (points[a].to_string(), points[b].to_string());
             let count = table.fins[e].len();
             return Err(if count % 2 == 1 {
-                Yin3Error::OpenEdge { from, to, count, face: f.tri }
+                Yin3Error::OpenEdge {
+                    from,
+                    to,
+                    count,
+                    face: f.tri,
+                }
             } else {
-                Yin3Error::Inconsistent { from, to, a: f.tri, b: g.tri }
+                Yin3Error::Inconsistent {
+                    from,
+                    to,
+                    a: f.tri,
+                    b: g.tri,
+                }
             });
         }
         let (label, count) = glued_surfaces(&table, tris.len(), Pairing::Inside);
@@ -128,12 +142,16 @@ impl<N: Num> Brep<N> {
 
     /// The canonical form deciding equality.
     fn canon(&self, ctx: &N::Ctx) -> &Canon<N> {
-        self.canon.get_or_init(|| canonical(&self.points, &self.tris, ctx))
+        self.canon
+            .get_or_init(|| canonical(&self.points, &self.tris, ctx))
     }
 }
 
 /// Keep only the points that triangles use, renumbered in order of first use.
-fn compact<N: Num>(points: Vec<Point3<N>>, tris: Vec<[usize; 3]>) -> (Vec<Point3<N>>, Vec<[usize; 3]>) {
+fn compact<N: Num>(
+    points: Vec<Point3<N>>,
+    tris: Vec<[usize; 3]>,
+) -> (Vec<Point3<N>>, Vec<[usize; 3]>) {
     let mut new = vec![usize::MAX; points.len()];
     let mut kept = Vec::new();
     let mut slots: Vec<Option<Point3<N>>> = points.into_iter().map(Some).collect();
@@ -154,7 +172,13 @@ fn compact<N: Num>(points: Vec<Point3<N>>, tris: Vec<[usize; 3]>) -> (Vec<Point3
 
 /// The genus of each glued surface: its triangles joined across its own pairing (the
 /// ⊥-pairing restricted to its fins, GS.2), χ = V − E + F with V its corner cycles.
-fn genera<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table: &FinTable, label: &[usize], count: usize) -> Vec<usize> {
+fn genera<N: Num>(
+    points: &[Point3<N>],
+    tris: &[[usize; 3]],
+    table: &FinTable,
+    label: &[usize],
+    count: usize,
+) -> Vec<usize> {
     let _ = points;
     let mut cycles = corner_cycles(table, tris, Some(label), Pairing::Outside);
     let mut vertices = vec![std::collections::HashSet::new(); count];
@@ -259,8 +283,21 @@ impl<N: Num> YinSet3<N> {
     pub fn betti(&self) -> Betti3 {
         match &self.repr {
             Repr3::Empty => Betti3::default(),
-            Repr3::Full => Betti3 { b0: 1, b1: 0, b2: 0 },
-            Repr3::Brep(b) => *b.betti.get_or_init(|| betti(&b.points, &b.tris, &b.table, b.atoms.len(), b.bounded, &self.ctx)),
+            Repr3::Full => Betti3 {
+                b0: 1,
+                b1: 0,
+                b2: 0,
+            },
+            Repr3::Brep(b) => *b.betti.get_or_init(|| {
+                betti(
+                    &b.points,
+                    &b.tris,
+                    &b.table,
+                    b.atoms.len(),
+                    b.bounded,
+                    &self.ctx,
+                )
+            }),
         }
     }
 
@@ -270,7 +307,9 @@ impl<N: Num> YinSet3<N> {
             Repr3::Empty => Some(N::zero()),
             Repr3::Full => None,
             Repr3::Brep(b) if b.bounded => {
-                let sum = b.all_corners().fold(N::zero(), |s, [p, q, r]| s + det3(p, q, r));
+                let sum = b
+                    .all_corners()
+                    .fold(N::zero(), |s, [p, q, r]| s + det3(p, q, r));
                 Some(sum / N::from_i64(6))
             }
             Repr3::Brep(_) => None,

@@ -24,7 +24,11 @@ pub(crate) struct TriContact<N> {
 }
 
 /// The intersection of the closed, non-degenerate triangles `t` and `s`; `None` if disjoint.
-pub(crate) fn intersect<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N::Ctx) -> Option<TriContact<N>> {
+pub(crate) fn intersect<N: Num>(
+    t: [&Point3<N>; 3],
+    s: [&Point3<N>; 3],
+    ctx: &N::Ctx,
+) -> Option<TriContact<N>> {
     let s_side = t_side(t, s, ctx);
     if strictly_one_side(&s_side) {
         return None;
@@ -41,8 +45,16 @@ pub(crate) fn intersect<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N:
     let key = |p: &Point3<N>| p.coord(axis).clone();
     let it = section(t, s, &t_sides, axis);
     let is = section(s, t, &s_side, axis);
-    let lo = if key(&it.0) >= key(&is.0) { &it.0 } else { &is.0 };
-    let hi = if key(&it.1) <= key(&is.1) { &it.1 } else { &is.1 };
+    let lo = if key(&it.0) >= key(&is.0) {
+        &it.0
+    } else {
+        &is.0
+    };
+    let hi = if key(&it.1) <= key(&is.1) {
+        &it.1
+    } else {
+        &is.1
+    };
     match key(lo).cmp(&key(hi)) {
         Ordering::Greater => None,
         Ordering::Equal => Some(TriContact {

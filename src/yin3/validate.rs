@@ -30,16 +30,26 @@ impl<N: Num> YinSet3<N> {
     /// assert_eq!((cube.betti().b0, cube.betti().b1, cube.betti().b2), (1, 0, 0));
     /// # Ok::<(), yinset::yin3::Yin3Error>(())
     /// ```
-    pub fn from_triangles(vertices: Vec<Point3<N>>, faces: Vec<Vec<usize>>) -> Result<YinSet3<N>, Yin3Error> {
+    pub fn from_triangles(
+        vertices: Vec<Point3<N>>,
+        faces: Vec<Vec<usize>>,
+    ) -> Result<YinSet3<N>, Yin3Error> {
         YinSet3::from_triangles_with(vertices, faces, N::Ctx::default())
     }
 
     /// As [`YinSet3::from_triangles`], with the given number context.
-    pub fn from_triangles_with(vertices: Vec<Point3<N>>, faces: Vec<Vec<usize>>, ctx: N::Ctx) -> Result<YinSet3<N>, Yin3Error> {
+    pub fn from_triangles_with(
+        vertices: Vec<Point3<N>>,
+        faces: Vec<Vec<usize>>,
+        ctx: N::Ctx,
+    ) -> Result<YinSet3<N>, Yin3Error> {
         if faces.is_empty() {
             return Err(Yin3Error::NoFaces);
         }
-        if let Some(v) = vertices.iter().position(|p| p.coords().iter().any(|c| !c.is_finite())) {
+        if let Some(v) = vertices
+            .iter()
+            .position(|p| p.coords().iter().any(|c| !c.is_finite()))
+        {
             return Err(Yin3Error::NotFinite { vertex: v });
         }
         let mut soup = Soup::new();
@@ -51,7 +61,12 @@ impl<N: Num> YinSet3<N> {
             }
         }
         let pieces = arrange(&mut soup, Pairs::All, &ctx).map_err(|e| match e {
-            ArrangeError::Clash { a, b, coplanar, point } => {
+            ArrangeError::Clash {
+                a,
+                b,
+                coplanar,
+                point,
+            } => {
                 let (a, b, point) = (face_of[a], face_of[b], point.to_string());
                 if coplanar {
                     Yin3Error::Overlap { a, b, point }
@@ -63,7 +78,8 @@ impl<N: Num> YinSet3<N> {
         })?;
         let origin: Vec<usize> = pieces.iter().map(|(_, t)| face_of[*t]).collect();
         let tris: Vec<[usize; 3]> = pieces.into_iter().map(|(t, _)| t).collect();
-        let brep = Brep::assemble(soup.points, tris, &ctx).map_err(|e| e.renumber_faces(&origin))?;
+        let brep =
+            Brep::assemble(soup.points, tris, &ctx).map_err(|e| e.renumber_faces(&origin))?;
         check_windings(&brep, &ctx).map_err(|e| e.renumber_faces(&origin))?;
         Ok(YinSet3::from_brep(brep, ctx))
     }
@@ -84,8 +100,13 @@ impl<N: Num> YinSet3<N> {
                 rebuilt.tris.len()
             )));
         }
-        if rebuilt.surfaces != b.surfaces || rebuilt.parent != b.parent || rebuilt.bounded != b.bounded {
-            return Err(Yin3Error::Internal("the stored glued surfaces or Hasse diagram differ from the recomputed ones".into()));
+        if rebuilt.surfaces != b.surfaces
+            || rebuilt.parent != b.parent
+            || rebuilt.bounded != b.bounded
+        {
+            return Err(Yin3Error::Internal(
+                "the stored glued surfaces or Hasse diagram differ from the recomputed ones".into(),
+            ));
         }
         Ok(())
     }
@@ -96,22 +117,57 @@ impl Yin3Error {
     fn renumber_faces(self, origin: &[usize]) -> Yin3Error {
         let f = |t: usize| origin.get(t).copied().unwrap_or(t);
         match self {
-            Yin3Error::OpenEdge { from, to, count, face } => Yin3Error::OpenEdge { from, to, count, face: f(face) },
-            Yin3Error::Inconsistent { from, to, a, b } => Yin3Error::Inconsistent { from, to, a: f(a), b: f(b) },
-            Yin3Error::Orientation { face, winding, expected } => Yin3Error::Orientation { face: f(face), winding, expected },
+            Yin3Error::OpenEdge {
+                from,
+                to,
+                count,
+                face,
+            } => Yin3Error::OpenEdge {
+                from,
+                to,
+                count,
+                face: f(face),
+            },
+            Yin3Error::Inconsistent { from, to, a, b } => Yin3Error::Inconsistent {
+                from,
+                to,
+                a: f(a),
+                b: f(b),
+            },
+            Yin3Error::Orientation {
+                face,
+                winding,
+                expected,
+            } => Yin3Error::Orientation {
+                face: f(face),
+                winding,
+                expected,
+            },
             other => other,
         }
     }
 }
 
 /// The triangles of face `f` (a planar, simple polygon), as vertex index triples.
-fn face_triangles<N: Num>(vertices: &[Point3<N>], face: &[usize], f: usize, ctx: &N::Ctx) -> Result<Vec<[usize; 3]>, Yin3Error> {
+fn face_triangles<N: Num>(
+    vertices: &[Point3<N>],
+    face: &[usize],
+    f: usize,
+    ctx: &N::Ctx,
+) -> Result<Vec<[usize; 3]>, Yin3Error> {
     let degenerate = |reason: String| Yin3Error::DegenerateFace { face: f, reason };
     if face.len() < 3 {
-        return Err(degenerate(format!("{} vertices, a face needs at least 3", face.len())));
+        return Err(degenerate(format!(
+            "{} vertices, a face needs at least 3",
+            face.len()
+        )));
     }
     if let Some(&index) = face.iter().find(|&&v| v >= vertices.len()) {
-        return Err(Yin3Error::IndexOutOfRange { face: f, index, count: vertices.len() });
+        return Err(Yin3Error::IndexOutOfRange {
+            face: f,
+            index,
+            count: vertices.len(),
+        });
     }
     for (i, v) in face.iter().enumerate() {
         if face[i + 1..].contains(v) {
@@ -123,8 +179,14 @@ fn face_triangles<N: Num>(vertices: &[Point3<N>], face: &[usize], f: usize, ctx:
     let Some(k) = (2..face.len()).find(|&k| normal(p(0), p(1), p(k)) != zero) else {
         return Err(degenerate("all its vertices are collinear".into()));
     };
-    if let Some(i) = (2..face.len()).find(|&i| orient3d(p(0), p(1), p(k), p(i), ctx) != Ordering::Equal) {
-        return Err(Yin3Error::NonPlanarFace { face: f, count: face.len(), vertex: face[i] });
+    if let Some(i) =
+        (2..face.len()).find(|&i| orient3d(p(0), p(1), p(k), p(i), ctx) != Ordering::Equal)
+    {
+        return Err(Yin3Error::NonPlanarFace {
+            face: f,
+            count: face.len(),
+            vertex: face[i],
+        });
     }
     if face.len() == 3 {
         return Ok(vec![[face[0], face[1], face[2]]]);
@@ -173,7 +235,11 @@ fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yin3Error> {
         // The ray runs into the +n side if the normal's x is positive; the −n side has one more.
         let plus = if nx == Ordering::Greater { w } else { w - 1 };
         if plus != expected {
-            return Err(Yin3Error::Orientation { face: t, winding: plus, expected });
+            return Err(Yin3Error::Orientation {
+                face: t,
+                winding: plus,
+                expected,
+            });
         }
     }
     Ok(())

@@ -1,0 +1,565 @@
+//! Exact constrained triangulation of one triangle with extra points and constraint segments:
+//! the re-triangulation of a cut face (seed 004 step 2; DESIGN-3D §2.4).
+//!
+//! Points are inserted one by one, each located by descending the history of splits; then every
+//! constraint, split at the points on it, is made an edge by removing the triangles its open
+//! segment crosses and ear-clipping the two pseudo-polygons on its sides. Every decision is an
+//! [`orient`] or the exact order of points: no Delaunay test, no floats, no ε of our own.
+
+use crate::kernel::{on_closed_segment, orient, Point};
+use crate::num::Num;
+use std::cmp::Ordering::{Equal, Greater, Less};
+use std::collections::hash_map::Entry;
+use std::collections::HashMap;
+
+/// Why a triangle could not be re-triangulated (a caller's broken promise).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) enum TriangulateError {
+    /// Constraints `a` and `b` (indices into the `constraints` slice) cross at a point that is not one of the points.
+    CrossingConstraints(usize, usize),
+    /// Point `p` lies outside the triangle.
+    PointOutside(usize),
+}
+
+/// Triangulate the triangle `corners` (indices into `points`, counterclockwise) using every
+/// point of `points` as a vertex, so that every constraint is a union of edges.
+///
+/// The points must be pairwise distinct and the constraints pairs of distinct points. The
+/// result is a list of counterclockwise triangles that tile the triangle conformingly: no point
+/// lies inside a triangle or inside an edge, and each piece of a constraint between consecutive
+/// points on it is an edge. Constraints may overlap, run along the sides or pass through
+/// points; two that cross elsewhere are [`TriangulateError::CrossingConstraints`] (reported as
+/// `(smaller, larger)` index).
+pub(crate) fn triangulate<N: Num>(
+    points: &[Point<N>],
+    corners: [usize; 3],
+    constraints: &[(usize, usize)],
+    ctx: &N::Ctx,
+) -> Result<Vec<[usize; 3]>, TriangulateError> {
+    let mut mesh = Mesh::new(points, corners, ctx);
+    for p in (0..points.len()).filter(|p| !corners.contains(p)) {
+        mesh.insert(p)?;
+    }
+    let mut owner = HashMap::new();
+    let mut pieces = Vec::new();
+    for (c, &(u, v)) in constraints.iter().enumerate() {
+        for (a, b) in split(points, u, v, ctx) {
+            if let Entry::Vacant(e) = owner.entry(key(a, b)) {
+                e.insert(c);
+                pieces.push((a, b, c));
+            }
+        }
+    }
+    for (u, v, c) in pieces {
+        mesh.recover(u, v, c, &owner)?;
+    }
+    Ok(mesh.triangles())
+}
+
+/// The undirected edge `ab` as a map key.
+fn key(a: usize, b: usize) -> (usize, usize) {
+    (a.min(b), a.max(b))
+}
+
+/// The triangle `t` rotated to start at vertex `x` (`None` if `x` is not a vertex of it).
+fn from_vertex(t: [usize; 3], x: usize) -> Option<[usize; 3]> {
+    let i = t.iter().position(|&y| y == x)?;
+    Some([t[i], t[(i + 1) % 3], t[(i + 2) % 3]])
+}
+
+/// True if point `x` lies in the closed triangle `t` (counterclockwise).
+fn in_closed<N: Num>(points: &[Point<N>], t: [usize; 3], x: usize, ctx: &N::Ctx) -> bool {
+    (0..3).all(|i| orient(&points[t[i]], &points[t[(i + 1) % 3]], &points[x], ctx) != Less)
+}
+
+/// The pieces of the segment `uv` between consecutive points lying on it.
+fn split<N: Num>(points: &[Point<N>], u: usize, v: usize, ctx: &N::Ctx) -> Vec<(usize, usize)> {
+    let (a, b) = (&points[u], &points[v]);
+    let mut on: Vec<usize> = (0..points.len())
+        .filter(|&w| orient(a, b, &points[w], ctx) == Equal && on_closed_segment(a, b, &points[w]))
+        .collect();
+    on.sort_by(|&x, &y| points[x].cmp(&points[y]));
+    on.windows(2).map(|w| (w[0], w[1])).collect()
+}
+
+/// Triangulate the counterclockwise simple polygon `poly` (indices into `points`) by clipping
+/// ears: strictly convex corners whose closed triangle holds no other vertex of the polygon;
+/// `None` if no ear is left (the polygon is not simple).
+pub(crate) fn ear_clip<N: Num>(
+    points: &[Point<N>],
+    poly: &[usize],
+    ctx: &N::Ctx,
+) -> Option<Vec<[usize; 3]>> {
+    let mut poly = poly.to_vec();
+    let mut out = Vec::with_capacity(poly.len().saturating_sub(2));
+    let (mut i, mut misses) = (0, 0);
+    while poly.len() > 3 {
+        let n = poly.len();
+        let ear = [poly[(i + n - 1) % n], poly[i], poly[(i + 1) % n]];
+        let [a, b, c] = ear.map(|k| &points[k]);
+        let empty = || {
+            poly.iter().all(|&k| {
+                ear.contains(&k)
+                    || points[k] == *a
+                    || points[k] == *b
+                    || points[k] == *c
+                    || orient(a, b, &points[k], ctx) == Less
+                    || orient(b, c, &points[k], ctx) == Less
+                    || orient(c, a, &points[k], ctx) == Less
+            })
+        };
+        if orient(a, b, c, ctx) == Greater && empty() {
+            out.push(ear);
+            poly.remove(i);
+            i = (i + n - 2) % (n - 1);
+            misses = 0;
+        } else {
+            i = (i + 1) % n;
+            misses += 1;
+            if misses > n {
+                return None;
+            }
+        }
+    }
+    let [a, b, c] = [poly[0], poly[1], poly[2]].map(|k| &points[k]);
+    (orient(a, b, c, ctx) == Greater).then(|| {
+        out.push([poly[0], poly[1], poly[2]]);
+        out
+    })
+}
+
+/// A triangulation under construction, with the history of its splits for point location.
+struct Mesh<'a, N: Num> {
+    /// The coordinates of the vertices.
+    points: &'a [Point<N>],
+    /// The context of the predicates.
+    ctx: &'a N::Ctx,
+    /// Every triangle ever made, counterclockwise.
+    tris: Vec<[usize; 3]>,
+    /// True for the triangles of the current triangulation.
+    alive: Vec<bool>,
+    /// The triangles that replaced each split one (the history searched by [`Mesh::locate`]).
+    children: Vec<Vec<usize>>,
+    /// The current triangle on the left of each directed edge.
+    edges: HashMap<(usize, usize), usize>,
+}
+
+impl<'a, N: Num> Mesh<'a, N> {
+    /// The triangulation of the single triangle `corners`.
+    fn new(points: &'a [Point<N>], corners: [usize; 3], ctx: &'a N::Ctx) -> Self {
+        let [a, b, c] = corners.map(|i| &points[i]);
+        debug_assert_eq!(
+            orient(a, b, c, ctx),
+            Greater,
+            "corners must be counterclockwise"
+        );
+        let mut mesh = Mesh {
+            points,
+            ctx,
+            tris: Vec::new(),
+            alive: Vec::new(),
+            children: Vec::new(),
+            edges: HashMap::new(),
+        };
+        mesh.add(corners);
+        mesh
+    }
+
+    /// Add the counterclockwise triangle `t` to the current triangulation; its id.
+    fn add(&mut self, t: [usize; 3]) -> usize {
+        let id = self.tris.len();
+        self.tris.push(t);
+        self.alive.push(true);
+        self.children.push(Vec::new());
+        for i in 0..3 {
+            self.edges.insert((t[i], t[(i + 1) % 3]), id);
+        }
+        id
+    }
+
+    /// Replace the current triangle `id` by the triangles `parts`, recorded as its children.
+    fn replace(&mut self, id: usize, parts: &[[usize; 3]]) {
+        let t = self.tris[id];
+        self.alive[id] = false;
+        for i in 0..3 {
+            self.edges.remove(&(t[i], t[(i + 1) % 3]));
+        }
+        self.children[id] = parts.iter().map(|&p| self.add(p)).collect();
+    }
+
+    /// The current triangle whose closure holds point `p` (`None` if `p` is outside).
+    fn locate(&self, p: usize) -> Option<usize> {
+        let inside = |id: usize| in_closed(self.points, self.tris[id], p, self.ctx);
+        let mut id = Some(0).filter(|&root| inside(root))?;
+        while !self.children[id].is_empty() {
+            id = self.children[id].iter().copied().find(|&c| inside(c))?;
+        }
+        Some(id)
+    }
+
+    /// Make point `p` a vertex: split the triangle holding it in 3, or the 1 or 2 triangles
+    /// sharing the edge it lies on in 2 each.
+    fn insert(&mut self, p: usize) -> Result<(), TriangulateError> {
+        let id = self.locate(p).ok_or(TriangulateError::PointOutside(p))?;
+        let t = self.tris[id];
+        let on_edge = (0..3).find(|&i| {
+            orient(
+                &self.points[t[i]],
+                &self.points[t[(i + 1) % 3]],
+                &self.points[p],
+                self.ctx,
+            ) == Equal
+        });
+        match on_edge {
+            None => self.replace(id, &[[t[0], t[1], p], [t[1], t[2], p], [t[2], t[0], p]]),
+            Some(i) => {
+                let (a, b) = (t[i], t[(i + 1) % 3]);
+                let twin = self.edges.get(&(b, a)).copied();
+                self.split_edge(id, a, p);
+                if let Some(twin) = twin {
+                    self.split_edge(twin, b, p);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Split the current triangle `id`, `[x, y, z]` from its vertex `x`, at the point `p` of
+    /// its edge `xy` into `[x, p, z]` and `[p, y, z]`.
+    fn split_edge(&mut self, id: usize, x: usize, p: usize) {
+        let [x, y, z] = from_vertex(self.tris[id], x).expect("the edge's start is a vertex");
+        self.replace(id, &[[x, p, z], [p, y, z]]);
+    }
+
+    /// Make the constraint piece `uv` of constraint `c` an edge: remove the triangles its open
+    /// segment crosses and ear-clip the pseudo-polygons on its two sides. `owner` maps every
+    /// constraint piece to its constraint, so that crossing one is an error.
+    fn recover(
+        &mut self,
+        u: usize,
+        v: usize,
+        c: usize,
+        owner: &HashMap<(usize, usize), usize>,
+    ) -> Result<(), TriangulateError> {
+        if self.edges.contains_key(&(u, v)) || self.edges.contains_key(&(v, u)) {
+            return Ok(());
+        }
+        let [pu, pv] = [u, v].map(|i| &self.points[i]);
+        // The crossed edge (a, b), a right of uv and b left, and the triangle before it.
+        let (mut a, mut b, first) = (0..self.tris.len())
+            .filter(|&id| self.alive[id])
+            .find_map(|id| {
+                let [_, a, b] = from_vertex(self.tris[id], u)?;
+                let crosses = orient(pu, pv, &self.points[a], self.ctx) == Less
+                    && orient(pu, pv, &self.points[b], self.ctx) == Greater;
+                crosses.then_some((a, b, id))
+            })
+            .expect("the segment leaves u through a triangle");
+        let (mut doomed, mut right, mut left) = (vec![first], vec![a], vec![b]);
+        loop {
+            if let Some(&d) = owner.get(&key(a, b)) {
+                return Err(TriangulateError::CrossingConstraints(d.min(c), d.max(c)));
+            }
+            let next = self.edges[&(b, a)];
+            doomed.push(next);
+            let [_, _, w] = from_vertex(self.tris[next], b).expect("the twin holds the edge");
+            if w == v {
+                break;
+            }
+            if orient(pu, pv, &self.points[w], self.ctx) == Less {
+                a = w;
+                right.push(w);
+            } else {
+                b = w;
+                left.push(w);
+            }
+        }
+        for id in doomed {
+            self.replace(id, &[]);
+        }
+        let left_poly: Vec<usize> = [u, v].into_iter().chain(left.into_iter().rev()).collect();
+        let right_poly: Vec<usize> = [v, u].into_iter().chain(right).collect();
+        for poly in [left_poly, right_poly] {
+            let ears = ear_clip(self.points, &poly, self.ctx)
+                .expect("a pseudo-polygon of constraint recovery is simple and has an ear");
+            for t in ears {
+                self.add(t);
+            }
+        }
+        Ok(())
+    }
+
+    /// The current triangles.
+    fn triangles(&self) -> Vec<[usize; 3]> {
+        (0..self.tris.len())
+            .filter(|&id| self.alive[id])
+            .map(|id| self.tris[id])
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::{classify, Contact};
+    use crate::num::{Float, Rational, Tolerance};
+    use proptest::prelude::*;
+    use std::collections::HashSet;
+
+    /// Points with integer coordinates.
+    fn pts<N: Num>(xy: &[(i64, i64)]) -> Vec<Point<N>> {
+        xy.iter().map(|&(x, y)| Point::int(x, y)).collect()
+    }
+
+    /// (b − a) × (c − a): twice the signed area of `abc`.
+    fn cross<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>) -> N {
+        (b.x.clone() - a.x.clone()) * (c.y.clone() - a.y.clone())
+            - (b.y.clone() - a.y.clone()) * (c.x.clone() - a.x.clone())
+    }
+
+    /// |b − a| in the L1 norm (additive along a line).
+    fn l1<N: Num>(a: &Point<N>, b: &Point<N>) -> N {
+        let abs = |v: N| if v.sign() == Less { -v } else { v };
+        abs(b.x.clone() - a.x.clone()) + abs(b.y.clone() - a.y.clone())
+    }
+
+    /// Assert that `tris` is a conforming triangulation of `corners` with every point a vertex
+    /// and every constraint a union of edges, checked without the algorithm's own reasoning.
+    fn check<N: Num>(
+        points: &[Point<N>],
+        corners: [usize; 3],
+        constraints: &[(usize, usize)],
+        tris: &[[usize; 3]],
+        ctx: &N::Ctx,
+    ) {
+        let p = |i: usize| &points[i];
+        let mut area = N::zero();
+        let mut directed = HashSet::new();
+        for &t in tris {
+            assert_eq!(
+                orient(p(t[0]), p(t[1]), p(t[2]), ctx),
+                Greater,
+                "{t:?} not ccw"
+            );
+            area = area + cross(p(t[0]), p(t[1]), p(t[2]));
+            for x in (0..points.len()).filter(|x| !t.contains(x)) {
+                assert!(!in_closed(points, t, x, ctx), "point {x} on or in {t:?}");
+            }
+            for i in 0..3 {
+                assert!(
+                    directed.insert((t[i], t[(i + 1) % 3])),
+                    "edge twice in {t:?}"
+                );
+            }
+        }
+        let [a, b, c] = corners.map(p);
+        assert_eq!(area, cross(a, b, c), "areas do not add up");
+        for &(x, y) in &directed {
+            let side = (0..3).any(|i| {
+                let (s, e) = (p(corners[i]), p(corners[(i + 1) % 3]));
+                orient(s, e, p(x), ctx) == Equal && orient(s, e, p(y), ctx) == Equal
+            });
+            assert!(
+                directed.contains(&(y, x)) || side,
+                "({x}, {y}) is a loose inner edge"
+            );
+        }
+        let used: HashSet<usize> = tris.iter().flatten().copied().collect();
+        assert_eq!(used.len(), points.len(), "a point is not a vertex");
+        for &(u, v) in constraints {
+            let covered = directed
+                .iter()
+                .filter(|&&(x, y)| x < y || !directed.contains(&(y, x)))
+                .filter(|&&(x, y)| {
+                    [x, y].iter().all(|&z| {
+                        orient(p(u), p(v), p(z), ctx) == Equal
+                            && on_closed_segment(p(u), p(v), p(z))
+                    })
+                })
+                .fold(N::zero(), |s, &(x, y)| s + l1(p(x), p(y)));
+            assert_eq!(covered, l1(p(u), p(v)), "constraint ({u}, {v}) not covered");
+        }
+    }
+
+    /// Triangulate and check, returning the triangles.
+    fn run(
+        xy: &[(i64, i64)],
+        corners: [usize; 3],
+        constraints: &[(usize, usize)],
+    ) -> Vec<[usize; 3]> {
+        let points = pts::<Rational>(xy);
+        let tris = triangulate(&points, corners, constraints, &()).expect("valid input");
+        check(&points, corners, constraints, &tris, &());
+        tris
+    }
+
+    /// True if `tris` has the edge `ab` in either direction.
+    fn has_edge(tris: &[[usize; 3]], a: usize, b: usize) -> bool {
+        tris.iter()
+            .any(|t| (0..3).any(|i| key(t[i], t[(i + 1) % 3]) == key(a, b)))
+    }
+
+    #[test]
+    fn constraint_along_a_side_through_points() {
+        let xy = [(0, 0), (8, 0), (0, 8), (2, 0), (5, 0), (3, 3), (1, 1)];
+        let tris = run(&xy, [0, 1, 2], &[(0, 1), (3, 5)]);
+        assert!(has_edge(&tris, 0, 3) && has_edge(&tris, 3, 4) && has_edge(&tris, 4, 1));
+        assert!(has_edge(&tris, 3, 5));
+    }
+
+    #[test]
+    fn overlapping_collinear_constraints() {
+        let xy = [
+            (0, 0),
+            (20, 0),
+            (0, 20),
+            (2, 3),
+            (5, 3),
+            (9, 3),
+            (12, 3),
+            (6, 1),
+            (6, 7),
+        ];
+        let tris = run(&xy, [0, 1, 2], &[(3, 5), (4, 6), (6, 4), (3, 6)]);
+        assert!(has_edge(&tris, 3, 4) && has_edge(&tris, 4, 5) && has_edge(&tris, 5, 6));
+    }
+
+    #[test]
+    fn constraint_through_three_collinear_interior_points() {
+        let xy = [
+            (0, 0),
+            (30, 0),
+            (0, 30),
+            (3, 3),
+            (6, 6),
+            (9, 9),
+            (12, 12),
+            (20, 1),
+            (1, 20),
+        ];
+        let tris = run(&xy, [0, 1, 2], &[(0, 6), (3, 7), (8, 5)]);
+        assert!((3..6).all(|i| has_edge(&tris, i, i + 1)));
+    }
+
+    /// A closed square ring of constraints strictly inside, with a point inside the ring.
+    fn ring() -> (Vec<(i64, i64)>, Vec<(usize, usize)>) {
+        let xy = vec![
+            (0, 0),
+            (40, 0),
+            (10, 30),
+            (12, 4),
+            (20, 4),
+            (20, 12),
+            (12, 12),
+            (15, 9),
+            (3, 1),
+            (30, 2),
+        ];
+        (xy, vec![(3, 4), (4, 5), (5, 6), (6, 3)])
+    }
+
+    #[test]
+    fn square_ring_strictly_inside() {
+        let (xy, ring) = ring();
+        let tris = run(&xy, [0, 1, 2], &ring);
+        let inside: Vec<_> = tris
+            .iter()
+            .filter(|t| t.iter().all(|&v| (3..8).contains(&v)))
+            .collect();
+        assert_eq!(
+            inside.len(),
+            4,
+            "the ring's inside is the fan around point 7"
+        );
+    }
+
+    #[test]
+    fn fan_of_points_on_one_side_crossed_by_a_constraint() {
+        let mut xy = vec![(0, 0), (100, 0), (50, 100), (12, 20), (88, 20)];
+        xy.extend((1..100).map(|x| (x, 0)));
+        let tris = run(&xy, [1, 2, 0], &[(3, 4), (4, 60)]);
+        assert_eq!(
+            tris.len(),
+            2 * xy.len() - 2 - 102,
+            "Euler: 2n − 2 − h triangles"
+        );
+    }
+
+    #[test]
+    fn broken_promises_are_errors() {
+        let points = pts::<Rational>(&[(0, 0), (10, 0), (0, 10), (1, 1), (6, 1), (1, 6), (5, 5)]);
+        let crossing = [(0, 3), (4, 5), (3, 6)];
+        let r = triangulate(&points, [0, 1, 2], &crossing, &());
+        assert_eq!(r, Err(TriangulateError::CrossingConstraints(1, 2)));
+        let outside = pts::<Rational>(&[(0, 0), (10, 0), (0, 10), (1, 1), (6, 5)]);
+        let r = triangulate(&outside, [0, 1, 2], &[], &());
+        assert_eq!(r, Err(TriangulateError::PointOutside(4)));
+    }
+
+    #[test]
+    fn float_mode_runs_the_ring() {
+        let (xy, ring) = ring();
+        let points = pts::<Float>(&xy);
+        let ctx = Tolerance::new(1e-9);
+        let tris = triangulate(&points, [0, 1, 2], &ring, &ctx).expect("valid input");
+        check(&points, [0, 1, 2], &ring, &tris, &ctx);
+    }
+
+    /// The lattice points of the closed triangle (0,0), (12,0), (6,12) other than its corners.
+    fn grid() -> Vec<Point<Rational>> {
+        let corners = pts::<Rational>(&[(0, 0), (12, 0), (6, 12)]);
+        let mut g = Vec::new();
+        for x in 0..=12 {
+            for y in 0..=12 {
+                let q = Point::int(x, y);
+                let inside =
+                    (0..3).all(|i| orient(&corners[i], &corners[(i + 1) % 3], &q, &()) != Less);
+                if inside && !corners.contains(&q) {
+                    g.push(q);
+                }
+            }
+        }
+        g
+    }
+
+    /// True if constraints `a` and `b` cross at a point that is not in `points`.
+    fn bad_crossing(points: &[Point<Rational>], a: (usize, usize), b: (usize, usize)) -> bool {
+        let c = classify(&points[a.0], &points[a.1], &points[b.0], &points[b.1], &());
+        matches!(c, Contact::Crossing(x) if !points.contains(&x))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+        #[test]
+        fn random_grid_points_and_constraints(
+            pick in proptest::sample::subsequence(grid(), 0..=45),
+            candidates in proptest::collection::vec((0usize..1000, 0usize..1000), 0..20),
+        ) {
+            let mut points = pick;
+            let n = points.len();
+            points.extend(pts::<Rational>(&[(0, 0), (12, 0), (6, 12)]));
+            let corners = [n, n + 1, n + 2];
+            let all: Vec<(usize, usize)> = candidates
+                .iter()
+                .map(|&(a, b)| (a % points.len(), b % points.len()))
+                .filter(|&(a, b)| a != b)
+                .collect();
+            let mut kept: Vec<(usize, usize)> = Vec::new();
+            for &s in &all {
+                if kept.iter().all(|&k| !bad_crossing(&points, k, s)) {
+                    kept.push(s);
+                }
+            }
+            let tris = triangulate(&points, corners, &kept, &()).expect("valid input");
+            check(&points, corners, &kept, &tris, &());
+            if kept.len() < all.len() {
+                match triangulate(&points, corners, &all, &()) {
+                    Err(TriangulateError::CrossingConstraints(i, j)) => {
+                        prop_assert!(i < j && bad_crossing(&points, all[i], all[j]));
+                    }
+                    other => prop_assert!(false, "expected a crossing, got {:?}", other),
+                }
+            }
+        }
+    }
+}
