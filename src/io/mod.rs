@@ -1,5 +1,5 @@
 //! Text formats read and written exactly: the `yin2` curve lists ([`yin2_text`]), WKT
-//! ([`wkt`]) and GeoJSON ([`geojson`]).
+//! ([`wkt`]), GeoJSON ([`geojson`]) and Wavefront OBJ meshes in 3D ([`obj`]).
 //!
 //! Readers parse every coordinate with [`crate::num::Num::parse`], so exact backends get the
 //! decimal text's value without rounding; they never panic, and report malformed input as a
@@ -10,6 +10,7 @@
 mod decimal;
 mod error;
 pub mod geojson;
+pub mod obj;
 pub mod svg;
 #[cfg(test)]
 mod testdata;

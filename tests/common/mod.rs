@@ -11,15 +11,26 @@ pub type Y = YinSet2<Rational>;
 /// A directory of the shared data under `../shared/data/2d`; panics naming the path if it is
 /// missing.
 pub fn data_dir(name: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/2d")
+    shared_data("2d", name, |p: &PathBuf| p.is_dir())
+}
+
+/// A file of the shared data under `../shared/data/3d`; panics naming the path if it is missing.
+pub fn data_file_3d(name: &str) -> PathBuf {
+    shared_data("3d", name, |p: &PathBuf| p.is_file())
+}
+
+/// `../shared/data/<dim>/<name>`, asserted to exist.
+fn shared_data(dim: &str, name: &str, exists: fn(&PathBuf) -> bool) -> PathBuf {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data")
+        .join(dim)
         .join(name);
     assert!(
-        dir.is_dir(),
+        exists(&path),
         "test data missing: {} (expected ../shared/data beside the repository)",
-        dir.display()
+        path.display()
     );
-    dir
+    path
 }
 
 /// Exact rational p/q.
