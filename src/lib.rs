@@ -4,6 +4,6 @@ pub mod demo;
 pub mod io;
 pub mod kernel;
 pub mod num;
+mod union_find;
 pub mod yin2;
 pub mod yin3;
-mod union_find;

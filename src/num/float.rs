@@ -175,7 +175,13 @@ impl Num for Float {
         }
     }
 
-    fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], _ctx: &Tolerance) -> Ordering {
+    fn orient3d(
+        a: [&Self; 3],
+        b: [&Self; 3],
+        c: [&Self; 3],
+        d: [&Self; 3],
+        _ctx: &Tolerance,
+    ) -> Ordering {
         let p = |q: [&Float; 3]| robust::Coord3D {
             x: q[0].0,
             y: q[1].0,

@@ -1,6 +1,8 @@
 //! The GMP exact backend (feature `gmp`): `rug::Rational` on the system libgmp.
 
-use super::{exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError};
+use super::{
+    exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError,
+};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::fmt;

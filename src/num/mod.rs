@@ -103,8 +103,13 @@ pub trait Num:
     /// det[b − a, c − a, d − a], `Greater` on the side the normal (b − a) × (c − a) points to
     /// (DESIGN-3D §2.1). Exact in every backend (float mode: Shewchuk's adaptive `orient3d`);
     /// 3D float mode applies no tolerance yet.
-    fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], ctx: &Self::Ctx)
-        -> Ordering;
+    fn orient3d(
+        a: [&Self; 3],
+        b: [&Self; 3],
+        c: [&Self; 3],
+        d: [&Self; 3],
+        ctx: &Self::Ctx,
+    ) -> Ordering;
 
     /// The context whose predicates decide without tolerance (float mode: ε = 0, the exact sign
     /// of Shewchuk's adaptive determinant). The edges of a valid set never cross exactly, so
@@ -172,7 +177,12 @@ pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<O
 ///
 /// With M the largest magnitude and u = 2⁻⁵³, each difference is off by at most 8M·u, each
 /// 2×2 minor by about 70M²·u, the determinant by about 330M³·u; 2048M³·u is safe.
-pub(crate) fn filtered_orient3d(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Option<Ordering> {
+pub(crate) fn filtered_orient3d(
+    a: [f64; 3],
+    b: [f64; 3],
+    c: [f64; 3],
+    d: [f64; 3],
+) -> Option<Ordering> {
     let m = [a, b, c, d]
         .iter()
         .flatten()

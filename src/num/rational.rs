@@ -1,7 +1,9 @@
 //! The default exact backend: `num-rational`'s big rationals, compared through a
 //! floating-point filter.
 
-use super::{exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError};
+use super::{
+    exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError,
+};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;

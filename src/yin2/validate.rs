@@ -2,12 +2,12 @@
 //! that the curves form a realizable spadjor (Def. 3.15–3.17) and builds its Hasse diagram.
 
 use super::error::YinError;
-use crate::union_find::UnionFind;
 use super::intersect::{intersections, Edge};
 use super::set::{Spadjor, YinSet2};
 use super::snap::{inside_set, regularize};
 use crate::kernel::{cmp_clockwise_from, Contact, Point};
 use crate::num::{Num, Rational};
+use crate::union_find::UnionFind;
 use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet};
 
