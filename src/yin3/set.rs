@@ -90,7 +90,7 @@ impl<N: Num> Brep<N> {
         }
         let (label, count) = glued_surfaces(&table, tris.len(), Pairing::Inside);
         let h = hasse(&points, &tris, &label, count, ctx);
-        let genus = genera(&points, &tris, &table, &label, count);
+        let genus = genera(&tris, &table, &label, count);
         let mut surfaces: Vec<GluedSurface> = (0..count)
             .map(|s| GluedSurface {
                 triangles: Vec::new(),
@@ -172,14 +172,7 @@ fn compact<N: Num>(
 
 /// The genus of each glued surface: its triangles joined across its own pairing (the
 /// ⊥-pairing restricted to its fins, GS.2), χ = V − E + F with V its corner cycles.
-fn genera<N: Num>(
-    points: &[Point3<N>],
-    tris: &[[usize; 3]],
-    table: &FinTable,
-    label: &[usize],
-    count: usize,
-) -> Vec<usize> {
-    let _ = points;
+fn genera(tris: &[[usize; 3]], table: &FinTable, label: &[usize], count: usize) -> Vec<usize> {
     let mut cycles = corner_cycles(table, tris, Some(label), Pairing::Outside);
     let mut vertices = vec![std::collections::HashSet::new(); count];
     let mut faces = vec![0i64; count];
