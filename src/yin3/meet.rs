@@ -4,7 +4,7 @@
 //! none if opposite), and paste the kept pieces into glued surfaces.
 
 use super::arrange::{arrange, Pairs, Soup};
-use super::geom::{f64_box, in_triangle3, plane_key, PlaneKey};
+use super::geom::{f64_box, in_triangle3, plane_key};
 use super::locate::winding;
 use super::set::{Brep, YinSet3};
 use crate::kernel::Point3;
@@ -100,12 +100,10 @@ fn classify<N: Num>(
             .find(|g| in_triangle3(soup.corners(g.data), q, ctx))
             .map(|g| g.data)
     };
-    let mut planes: HashMap<PlaneKey<N>, bool> = HashMap::new();
-    let mut key_of = |t: usize| -> (PlaneKey<N>, bool) {
+    // True if triangle t's normal points along its plane key's normal.
+    let along = |t: usize| {
         let [a, b, c] = soup.corners(t);
-        let (k, along) = plane_key(a, b, c);
-        planes.insert(k.clone(), along);
-        (k, along)
+        plane_key(a, b, c).1
     };
     // Patches across edges whose midpoints are off the other operand's boundary.
     let mut edges: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
@@ -135,9 +133,7 @@ fn classify<N: Num>(
             let [a, b, c] = t.map(|v| &soup.points[v]);
             let q = Point3::centroid(a, b, c);
             if let Some(s) = on_operand(1 - o, &q) {
-                let (_, mine) = key_of(*parent);
-                let (_, theirs) = key_of(s);
-                return if mine == theirs {
+                return if along(*parent) == along(s) {
                     Side::Same
                 } else {
                     Side::Opposite
