@@ -1,9 +1,10 @@
 //! The built-in demonstration: example Yin sets with touching points, holes and unbounded parts,
-//! run through every Boolean operation in exact mode.
+//! run through every Boolean operation in exact mode, in 2D and in 3D.
 
-use crate::kernel::Point;
+use crate::kernel::{Point, Point3};
 use crate::num::{Num, Rational};
 use crate::yin2::{YinError, YinSet2};
+use crate::yin3::{Yin3Error, YinSet3};
 use std::fmt::Write;
 
 /// A counterclockwise axis-aligned rectangle.
@@ -59,8 +60,91 @@ pub fn describe<N: Num>(y: &YinSet2<N>) -> String {
     )
 }
 
+/// One line describing a 3D Yin set: glued surfaces, Betti numbers, exact volume.
+pub fn describe3<N: Num>(y: &YinSet3<N>) -> String {
+    let b = y.betti();
+    let volume = match y.volume() {
+        Some(v) => format!("{v} (≈ {:.6})", v.to_f64()),
+        None => "unbounded".to_string(),
+    };
+    format!(
+        "{} surfaces, b0 = {}, b1 = {}, b2 = {}, volume {}",
+        y.surfaces().len(),
+        b.b0,
+        b.b1,
+        b.b2,
+        volume
+    )
+}
+
+/// Vertices and faces (vertex index lists, counterclockwise seen from outside).
+type Mesh = (Vec<Point3<Rational>>, Vec<Vec<usize>>);
+
+/// The corners and outward faces (quads) of the box [lo, hi], corner `i` taking the `hi`
+/// coordinate where bit 0, 1, 2 of `i` (x, y, z) is set.
+fn cuboid(lo: [i64; 3], hi: [i64; 3]) -> Mesh {
+    let c = |i: usize, k: usize| if i >> k & 1 == 0 { lo[k] } else { hi[k] };
+    let corners = (0..8)
+        .map(|i| Point3::int(c(i, 0), c(i, 1), c(i, 2)))
+        .collect();
+    let faces = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    (corners, faces.map(|f| f.to_vec()).to_vec())
+}
+
+/// The Yin set bounded by the faces of several pieces together (each its own vertex list).
+fn solid(pieces: Vec<Mesh>) -> Result<YinSet3<Rational>, Yin3Error> {
+    let (mut vertices, mut faces) = (Vec::new(), Vec::new());
+    for (v, f) in pieces {
+        let offset = vertices.len();
+        faces.extend(
+            f.into_iter()
+                .map(|f| f.into_iter().map(|i| i + offset).collect()),
+        );
+        vertices.extend(v);
+    }
+    YinSet3::from_triangles(vertices, faces)
+}
+
+/// The 3D example shapes: two unit cubes sharing an edge; a 4×4×4 cube with a tetrahedral
+/// cavity whose apex touches the bottom face; a box across a face of that cube.
+pub fn shapes3() -> Result<Vec<(&'static str, YinSet3<Rational>)>, Yin3Error> {
+    let edge = solid(vec![
+        cuboid([0, 0, 0], [1, 1, 1]),
+        cuboid([1, 1, 0], [2, 2, 1]),
+    ])?;
+    // The cavity's faces turn their normals into it, out of the set.
+    let cavity = (
+        [(2, 2, 0), (1, 1, 2), (3, 1, 2), (2, 3, 2)]
+            .iter()
+            .map(|&(x, y, z)| Point3::int(x, y, z))
+            .collect(),
+        vec![vec![1, 3, 2], vec![0, 1, 2], vec![0, 2, 3], vec![0, 3, 1]],
+    );
+    let hollow = solid(vec![cuboid([0, 0, 0], [4, 4, 4]), cavity])?;
+    let across = solid(vec![cuboid([3, 1, 1], [6, 3, 3])])?;
+    Ok(vec![
+        ("P (unit cubes sharing an edge)", edge),
+        ("Q (4-cube, cavity touching its floor)", hollow),
+        ("R (box across Q's face x = 4)", across),
+    ])
+}
+
 /// Run the demonstration and return its report.
-pub fn run() -> Result<String, YinError> {
+pub fn run() -> Result<String, Box<dyn std::error::Error + Send + Sync>> {
+    let mut out = run2()?;
+    out.push_str(&run3()?);
+    Ok(out)
+}
+
+/// The 2D part of the demonstration.
+fn run2() -> Result<String, YinError> {
     let s = shapes()?;
     let mut out = String::new();
     let mut line = |label: String, y: &YinSet2<Rational>| {
@@ -85,5 +169,34 @@ pub fn run() -> Result<String, YinError> {
         lhs == rhs
     );
     let _ = writeln!(out, "check (A')' == A: {}", &!&!a == a);
+    Ok(out)
+}
+
+/// The 3D part of the demonstration.
+fn run3() -> Result<String, Yin3Error> {
+    let s = shapes3()?;
+    let mut out = String::from("\n3D (exact):\n");
+    let mut line = |label: String, y: &YinSet3<Rational>| {
+        let _ = writeln!(out, "{label:<40} {}", describe3(y));
+    };
+    for (name, y) in &s {
+        line(name.to_string(), y);
+    }
+    let (p, q, r) = (&s[0].1, &s[1].1, &s[2].1);
+    line("P ∧ Q".into(), &(p & q));
+    line("P ∨ Q".into(), &(p | q));
+    line("Q ∧ R".into(), &(q & r));
+    line("Q ∨ R".into(), &(q | r));
+    line("Q ∖ R".into(), &(q - r));
+    line("Q △ R".into(), &(q ^ r));
+    line("Q'".into(), &!q);
+    let volume = |y: &YinSet3<Rational>| y.volume().unwrap_or_default();
+    let lhs = volume(&(q & r)) + volume(&(q | r));
+    let _ = writeln!(
+        out,
+        "check |Q∧R| + |Q∨R| = |Q| + |R| exactly: {}",
+        lhs == volume(q) + volume(r)
+    );
+    let _ = writeln!(out, "check (Q')' == Q: {}", &!&!q == q);
     Ok(out)
 }

@@ -768,12 +768,12 @@ fn ring_mesh() -> Mesh {
     let centre = [[3, 1, 3], [5, 3, 3], [3, 5, 3], [1, 3, 3]];
     let mut faces = Vec::new();
     for r in 0..4 {
-        for k in 0..4 {
+        for (k, c) in centre.into_iter().enumerate() {
             let (r1, k1) = ((r + 1) % 4, (k + 1) % 4);
             faces.push(outward(
                 &pts,
                 vec![4 * r + k, 4 * r + k1, 4 * r1 + k1, 4 * r1 + k],
-                centre[k],
+                c,
                 1,
             ));
         }

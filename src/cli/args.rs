@@ -3,17 +3,18 @@
 use super::format::Format;
 use crate::yin2::FillRule;
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-/// Boolean algebra of 2D Yin sets, exact on rationals (float mode with --eps).
+/// Boolean algebra of 2D and 3D Yin sets, exact on rationals (2D float mode with --eps).
 #[derive(Parser, Debug)]
 #[command(
     name = "yinset",
     version,
     about,
     after_help = "With no subcommand, runs the built-in demonstration.\n\
-                  Inputs are yin2 text, WKT or GeoJSON, chosen by --from or the file extension \
-                  (.txt/.yin2, .wkt, .geojson/.json); `-` is standard input or output.\n\
+                  Inputs are yin2 text, WKT or GeoJSON (2D sets) or OBJ (3D sets), chosen by \
+                  --from or the file extension (.txt/.yin2, .wkt, .geojson/.json, .obj); \
+                  `-` is standard input or output.\n\
                   Exit status: 0 success, 1 bad input or failed checks, 2 wrong usage."
 )]
 pub struct Cli {
@@ -37,9 +38,11 @@ pub enum Command {
     Difference(Binary),
     /// Symmetric difference (A ∧ B′) ∨ (A′ ∧ B).
     Xor(Binary),
-    /// Say for each point (`x y` per line) whether it is inside, outside or on the boundary.
+    /// Say for each point (`x y`, or `x y z` in 3D, per line) whether it is inside, outside or
+    /// on the boundary.
     Locate(LocateArgs),
-    /// Print Betti numbers, curves, Hasse diagram, area and bounding box as JSON.
+    /// Print Betti numbers, curves (surfaces), Hasse diagram, area (volume) and bounding box as
+    /// JSON.
     Info(Single),
     /// Draw one or more sets as SVG.
     Render(RenderArgs),
@@ -54,13 +57,14 @@ pub enum Command {
 /// How inputs are read.
 #[derive(Args, Debug, Clone, Default)]
 pub struct ReadOpts {
-    /// Input format (default: from the file extension; yin2 for standard input).
+    /// Input format (default: from the file extension; for standard input, that of the other
+    /// inputs if they are OBJ, else yin2).
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub from: Option<Format>,
     /// Read the rings as polygon soup and take the region they cover under this rule.
     #[arg(long, value_enum, value_name = "RULE")]
     pub fill: Option<FillArg>,
-    /// Float mode with tolerance E > 0 (default: exact rational arithmetic).
+    /// Float mode with tolerance E > 0 (default: exact rational arithmetic; 2D only).
     #[arg(long, value_name = "E", value_parser = positive_eps, allow_hyphen_values = true)]
     pub eps: Option<f64>,
 }
@@ -71,7 +75,7 @@ pub struct WriteOpts {
     /// Output file (`-` or absent: standard output); its extension picks the format.
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
-    /// Output format (default: from the --output extension, else yin2).
+    /// Output format (default: from the --output extension, else yin2 for 2D sets, obj for 3D).
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub to: Option<Format>,
 }
@@ -185,6 +189,20 @@ impl Command {
             Command::Locate(l) => Some(&l.read),
             Command::Render(r) => Some(&r.read),
             Command::Demo | Command::Axioms(_) => None,
+        }
+    }
+
+    /// The sets a subcommand reads (not the points of `locate`).
+    pub fn set_inputs(&self) -> Vec<&Path> {
+        match self {
+            Command::Meet(b) | Command::Join(b) | Command::Difference(b) | Command::Xor(b) => {
+                vec![&b.a, &b.b]
+            }
+            Command::Complement(u) | Command::Convert(u) => vec![&u.input],
+            Command::Info(s) | Command::Validate(s) => vec![&s.input],
+            Command::Locate(l) => vec![&l.set],
+            Command::Render(r) => r.inputs.iter().map(PathBuf::as_path).collect(),
+            Command::Demo | Command::Axioms(_) => Vec::new(),
         }
     }
 }

@@ -1,21 +1,28 @@
-//! Text of any format → oriented rings, remembering where each ring came from for messages.
+//! Text of any format → oriented rings (2D) or faces (3D, OBJ), remembering where each ring or
+//! face came from for messages.
 
 use super::format::Format;
+use crate::io::obj::{read_obj, ObjMesh};
 use crate::io::{geojson, wkt, yin2_text, ParseError, Polygon};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinError;
+use crate::yin3::Yin3Error;
 use std::cmp::Ordering;
 
 /// The yin2 comment line that stands for the whole plane, which has no boundary curves.
 pub const FULL_PLANE: &str = "# yinset: the whole plane (no boundary curves)";
 
+/// The OBJ comment line that stands for the whole space, which has no boundary.
+pub const WHOLE_SPACE: &str = "# yinset: the whole space (no boundary)";
+
 /// What an input text holds.
-pub enum Decoded<N> {
-    /// The whole plane (a yin2 text with only the [`FULL_PLANE`] line).
+pub enum Decoded<B> {
+    /// The whole plane or space (a text without boundary but with the [`FULL_PLANE`] or
+    /// [`WHOLE_SPACE`] line).
     Full,
-    /// Rings, each a vertex cycle (none: the empty set).
-    Rings(Rings<N>),
+    /// The boundary: [`Rings`] or an [`ObjMesh`] (none: the empty set).
+    Boundary(B),
 }
 
 /// Rings and, for each, where it is in the input.
@@ -41,21 +48,70 @@ enum Origin {
     },
 }
 
-/// Decode `text` in `format`.
-pub fn decode<N: Num>(text: &str, format: Format) -> Result<Decoded<N>, ParseError> {
+/// Decode `text` in `format`, a format of 2D sets.
+pub fn decode<N: Num>(text: &str, format: Format) -> Result<Decoded<Rings<N>>, ParseError> {
     let polygons = match format {
         Format::Yin2 => {
             let rings = yin2_text::read_curves(text)?;
-            if rings.is_empty() && text.lines().any(|l| l.trim() == FULL_PLANE) {
+            if rings.is_empty() && has_line(text, FULL_PLANE) {
                 return Ok(Decoded::Full);
             }
             let origins = Origins(rings.iter().map(|_| Origin::Curve).collect());
-            return Ok(Decoded::Rings(Rings { rings, origins }));
+            return Ok(Decoded::Boundary(Rings { rings, origins }));
         }
         Format::Wkt => wkt::read_polygons(text)?,
         Format::Geojson => geojson::read_polygons(text)?,
+        Format::Obj => return Err(obj_is_3d()),
     };
-    Ok(Decoded::Rings(Rings::of_polygons(polygons)))
+    Ok(Decoded::Boundary(Rings::of_polygons(polygons)))
+}
+
+/// Decode an OBJ text: its mesh (no faces: the empty set), or the whole space.
+pub fn decode_obj<N: Num>(text: &str) -> Result<Decoded<ObjMesh<N>>, ParseError> {
+    let mesh = read_obj(text)?;
+    if mesh.faces.is_empty() && has_line(text, WHOLE_SPACE) {
+        return Ok(Decoded::Full);
+    }
+    Ok(Decoded::Boundary(mesh))
+}
+
+/// True if a line of `text` is `line` (but for surrounding blanks).
+fn has_line(text: &str, line: &str) -> bool {
+    text.lines().any(|l| l.trim() == line)
+}
+
+/// The error of decoding OBJ as a 2D format (the command line never asks for it).
+fn obj_is_3d() -> ParseError {
+    ParseError {
+        line: 1,
+        column: 1,
+        message: "OBJ holds 3D sets, not 2D rings".to_string(),
+    }
+}
+
+/// Where the faces named by `e` are in an OBJ text whose `f` lines are `face_lines`, as a
+/// sentence to append to it.
+pub fn locate_faces(e: &Yin3Error, face_lines: &[usize]) -> String {
+    let faces = match e {
+        Yin3Error::IndexOutOfRange { face, .. }
+        | Yin3Error::DegenerateFace { face, .. }
+        | Yin3Error::NonPlanarFace { face, .. }
+        | Yin3Error::OpenEdge { face, .. }
+        | Yin3Error::Orientation { face, .. } => vec![*face],
+        Yin3Error::Crossing { a, b, .. }
+        | Yin3Error::Overlap { a, b, .. }
+        | Yin3Error::Inconsistent { a, b, .. } => vec![*a, *b],
+        _ => Vec::new(),
+    };
+    let notes: Vec<String> = faces
+        .into_iter()
+        .filter_map(|f| Some(format!("face {f} is on line {}", face_lines.get(f)?)))
+        .collect();
+    if notes.is_empty() {
+        String::new()
+    } else {
+        format!(" (counting faces from 0: {})", notes.join("; "))
+    }
 }
 
 impl<N: Num> Rings<N> {
@@ -170,7 +226,7 @@ mod tests {
 
     fn rings(text: &str, format: Format) -> Rings<Rational> {
         match decode(text, format).unwrap() {
-            Decoded::Rings(r) => r,
+            Decoded::Boundary(r) => r,
             Decoded::Full => panic!("full"),
         }
     }
@@ -224,5 +280,34 @@ mod tests {
         );
         let yin2 = rings("0 0\n1 0\n0 1\n", Format::Yin2);
         assert_eq!(yin2.origins.locate_error(&e), "");
+    }
+
+    #[test]
+    fn obj_without_faces_is_empty_or_the_whole_space() {
+        let mesh = |text: &str| match decode_obj::<Rational>(text).unwrap() {
+            Decoded::Boundary(m) => Some(m),
+            Decoded::Full => None,
+        };
+        assert!(mesh(&format!("{WHOLE_SPACE}\n")).is_none());
+        assert!(mesh("").unwrap().faces.is_empty());
+        assert!(mesh("# yinset\nv 0 0 0\n").unwrap().faces.is_empty());
+        let text = format!("{WHOLE_SPACE}\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        assert_eq!(mesh(&text).unwrap().faces.len(), 1);
+        assert!(decode::<Rational>("v 0 0 0", Format::Obj).is_err());
+    }
+
+    #[test]
+    fn errors_name_the_obj_lines_of_their_faces() {
+        let lines = [3, 5, 9];
+        let e = Yin3Error::Crossing {
+            a: 0,
+            b: 2,
+            point: "(0, 0, 0)".into(),
+        };
+        assert_eq!(
+            locate_faces(&e, &lines),
+            " (counting faces from 0: face 0 is on line 3; face 2 is on line 9)"
+        );
+        assert_eq!(locate_faces(&Yin3Error::NoFaces, &lines), "");
     }
 }

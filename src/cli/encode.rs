@@ -1,12 +1,15 @@
-//! A Yin set → text of any format (yin2 exactly; OGC polygons only for bounded sets).
+//! A Yin set → text of any format (yin2 exactly; OGC polygons only for bounded sets; OBJ for
+//! 3D sets, one object per glued surface).
 
-use super::decode::FULL_PLANE;
+use super::decode::{FULL_PLANE, WHOLE_SPACE};
 use super::error::CliError;
-use super::format::Format;
+use super::format::{Dimension, Format};
+use crate::io::obj::write_obj;
 use crate::io::{geojson, wkt, yin2_text, Polygon};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinSet2;
+use crate::yin3::YinSet3;
 
 /// The text of `set` in `format`.
 pub fn encode<N: Num>(set: &YinSet2<N>, format: Format) -> Result<String, CliError> {
@@ -14,6 +17,55 @@ pub fn encode<N: Num>(set: &YinSet2<N>, format: Format) -> Result<String, CliErr
         Format::Yin2 => Ok(yin2(set)),
         Format::Wkt => Ok(wkt::write_multipolygon(&polygons(set, "WKT")?) + "\n"),
         Format::Geojson => Ok(geojson::write_multipolygon(&polygons(set, "GeoJSON")?) + "\n"),
+        Format::Obj => Err(wrong_dimension(format, Dimension::Two)),
+    }
+}
+
+/// The text of the 3D `set` in `format` (OBJ, the one 3D format).
+pub fn encode3<N: Num>(set: &YinSet3<N>, format: Format) -> Result<String, CliError> {
+    match format {
+        Format::Obj => Ok(obj(set)),
+        _ => Err(wrong_dimension(format, Dimension::Three)),
+    }
+}
+
+/// The error of writing a set of `dimension` in `format`, which holds the other dimension.
+fn wrong_dimension(format: Format, dimension: Dimension) -> CliError {
+    CliError::Usage(format!(
+        "{} cannot hold a {} set",
+        format.name(),
+        dimension.name()
+    ))
+}
+
+/// The OBJ text of `set`: one object `surface_K_positive` or `surface_K_negative` per glued
+/// surface, normals out of the set; a comment line for an unbounded set, the comment line
+/// [`WHOLE_SPACE`] alone for 1̂, nothing for 0̂.
+fn obj<N: Num>(set: &YinSet3<N>) -> String {
+    if set.is_full() {
+        return format!("{WHOLE_SPACE}\n");
+    }
+    if set.is_empty() {
+        return String::new();
+    }
+    let groups: Vec<(String, Vec<[usize; 3]>)> = set
+        .surfaces()
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            let sign = if s.positive { "positive" } else { "negative" };
+            let triangles = s.triangles.iter().map(|&t| set.triangles()[t]).collect();
+            (format!("surface_{k}_{sign}"), triangles)
+        })
+        .collect();
+    let text = write_obj(set.vertices(), &groups);
+    if set.is_bounded() {
+        text
+    } else {
+        "# yinset: the set is unbounded (it contains everything far enough out); \
+         the normals point out of the set\n"
+            .to_string()
+            + &text
     }
 }
 
@@ -90,8 +142,49 @@ mod tests {
         ));
         let empty = encode(&YinSet2::<Rational>::empty(), Format::Yin2).unwrap();
         match decode::<Rational>(&empty, Format::Yin2) {
-            Ok(Decoded::Rings(r)) => assert!(r.rings.is_empty()),
+            Ok(Decoded::Boundary(r)) => assert!(r.rings.is_empty()),
             _ => panic!("not empty"),
         }
+    }
+
+    /// The cube [lo, hi]³.
+    fn cube(lo: i64, hi: i64) -> YinSet3<Rational> {
+        let c = |i: i64, bit: i64| if i >> bit & 1 == 0 { lo } else { hi };
+        let v = (0..8)
+            .map(|i| crate::kernel::Point3::int(c(i, 0), c(i, 1), c(i, 2)))
+            .collect();
+        let faces = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        YinSet3::from_triangles(v, faces.map(|f| f.to_vec()).to_vec()).unwrap()
+    }
+
+    #[test]
+    fn obj_has_one_object_per_glued_surface() {
+        let hollow = &cube(0, 3) - &cube(1, 2);
+        let text = encode3(&hollow, Format::Obj).unwrap();
+        assert!(text.contains("o surface_0_positive\n"), "{text}");
+        assert!(text.contains("o surface_1_negative\n"), "{text}");
+        assert_eq!(text.matches("\no ").count(), 2);
+        let outside = encode3(&hollow.complement(), Format::Obj).unwrap();
+        assert!(
+            outside.starts_with("# yinset: the set is unbounded"),
+            "{outside}"
+        );
+        assert_eq!(
+            encode3(&YinSet3::<Rational>::full(), Format::Obj).unwrap(),
+            format!("{WHOLE_SPACE}\n")
+        );
+        assert_eq!(
+            encode3(&YinSet3::<Rational>::empty(), Format::Obj).unwrap(),
+            ""
+        );
+        assert!(encode3(&hollow, Format::Wkt).is_err());
+        assert!(encode(&square_with_hole(), Format::Obj).is_err());
     }
 }

@@ -1,8 +1,10 @@
 //! What can go wrong on the command line, each naming what and where, and its exit status.
 
 use crate::io::ParseError;
-use crate::yin2::YinError;
 use std::process::ExitCode;
+
+/// The kernel's reason why an input is not a Yin set (a 2D `YinError` or a 3D `Yin3Error`).
+pub type Reason = Box<dyn std::error::Error + Send + Sync>;
 
 /// A failure of the `yinset` command.
 #[derive(Debug, thiserror::Error)]
@@ -25,11 +27,11 @@ pub enum CliError {
     /// Malformed text.
     #[error("{name}: {source}")]
     Parse { name: String, source: ParseError },
-    /// Well-formed text whose curves do not bound a Yin set.
+    /// Well-formed text whose curves (or faces) do not bound a Yin set.
     #[error("{name} is not a Yin set: {source}{note}")]
     Invalid {
         name: String,
-        source: Box<YinError>,
+        source: Reason,
         note: String,
     },
     /// An unbounded set asked for in a format of bounded polygons.

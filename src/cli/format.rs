@@ -1,4 +1,5 @@
-//! The three file formats and how a file's format is chosen: by option, else by extension.
+//! The file formats — three of 2D sets, OBJ of 3D sets — and how a file's format is chosen: by
+//! option, else by extension.
 
 use super::error::CliError;
 use clap::ValueEnum;
@@ -13,6 +14,36 @@ pub enum Format {
     Wkt,
     /// GeoJSON: Polygon, MultiPolygon, Feature, FeatureCollection.
     Geojson,
+    /// Wavefront OBJ: the triangles bounding a 3D set.
+    Obj,
+}
+
+/// The dimension of the sets a format holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dimension {
+    /// Plane sets: yin2, WKT, GeoJSON.
+    Two,
+    /// Sets in space: OBJ.
+    Three,
+}
+
+impl Dimension {
+    /// The format standard input is read in (without --from) and results are written in
+    /// (without --to or an --output extension).
+    fn default_format(self) -> Format {
+        match self {
+            Dimension::Two => Format::Yin2,
+            Dimension::Three => Format::Obj,
+        }
+    }
+
+    /// "2D" or "3D".
+    pub fn name(self) -> &'static str {
+        match self {
+            Dimension::Two => "2D",
+            Dimension::Three => "3D",
+        }
+    }
 }
 
 /// True if `path` is `-`, standard input or output.
@@ -28,28 +59,82 @@ impl Format {
             "txt" | "yin2" => Some(Format::Yin2),
             "wkt" => Some(Format::Wkt),
             "geojson" | "json" => Some(Format::Geojson),
+            "obj" => Some(Format::Obj),
             _ => None,
         }
     }
 
-    /// The format of input `path`: `from` if given, else by extension (yin2 for standard input).
-    pub fn of_input(path: &Path, from: Option<Format>) -> Result<Format, CliError> {
-        match from {
-            Some(f) => Ok(f),
-            None if is_std(path) => Ok(Format::Yin2),
+    /// The format of input `path` if `from` or its extension says it (not for standard input).
+    pub fn declared(path: &Path, from: Option<Format>) -> Option<Format> {
+        from.or_else(|| Format::of_extension(path).filter(|_| !is_std(path)))
+    }
+
+    /// The format of input `path`, one of `dimension`'s: `from` if given, else by extension
+    /// (standard input: yin2 in 2D, OBJ in 3D).
+    pub fn of_input(
+        path: &Path,
+        from: Option<Format>,
+        dimension: Dimension,
+    ) -> Result<Format, CliError> {
+        let format = match from {
+            Some(f) => f,
+            None if is_std(path) => dimension.default_format(),
             None => Format::of_extension(path).ok_or_else(|| {
                 CliError::Usage(format!(
                     "cannot tell the format of `{}` from its extension \
-                     (.txt/.yin2, .wkt, .geojson/.json): give --from yin2|wkt|geojson",
+                     (.txt/.yin2, .wkt, .geojson/.json, .obj): give --from yin2|wkt|geojson|obj",
                     path.display()
                 ))
-            }),
+            })?,
+        };
+        format.holds(dimension)?;
+        Ok(format)
+    }
+
+    /// The dimension of the sets this format holds.
+    pub fn dimension(self) -> Dimension {
+        match self {
+            Format::Obj => Dimension::Three,
+            _ => Dimension::Two,
         }
     }
 
-    /// The format of the output: `to`, else by `output`'s extension, else yin2; a `to` that
-    /// contradicts the extension is an error.
-    pub fn of_output(output: Option<&Path>, to: Option<Format>) -> Result<Format, CliError> {
+    /// An error unless this format holds sets of `dimension`.
+    fn holds(self, dimension: Dimension) -> Result<(), CliError> {
+        if self.dimension() == dimension {
+            return Ok(());
+        }
+        let instead = match dimension {
+            Dimension::Two => "yin2, wkt or geojson",
+            Dimension::Three => "obj",
+        };
+        Err(CliError::Usage(format!(
+            "{} holds {} sets, but these are {} sets: use {instead}",
+            self.name(),
+            self.dimension().name(),
+            dimension.name()
+        )))
+    }
+
+    /// The format of an output of `dimension`: `to`, else by `output`'s extension, else yin2 in
+    /// 2D and OBJ in 3D; a `to` that contradicts the extension, or a format of the other
+    /// dimension, is an error.
+    pub fn of_output(
+        output: Option<&Path>,
+        to: Option<Format>,
+        dimension: Dimension,
+    ) -> Result<Format, CliError> {
+        let format = Format::of_output_any(output, to, dimension.default_format())?;
+        format.holds(dimension)?;
+        Ok(format)
+    }
+
+    /// The format of the output: `to`, else by `output`'s extension, else `default`.
+    fn of_output_any(
+        output: Option<&Path>,
+        to: Option<Format>,
+        default: Format,
+    ) -> Result<Format, CliError> {
         let by_ext = output
             .filter(|p| !is_std(p))
             .map(|p| (p, Format::of_extension(p)));
@@ -63,11 +148,11 @@ impl Format {
             (Some(t), _) => Ok(t),
             (None, Some((_, Some(e)))) => Ok(e),
             (None, Some((p, None))) => Err(CliError::Usage(format!(
-                "cannot tell the output format from `{}`: give --to yin2|wkt|geojson or use \
-                 the extension .txt/.yin2, .wkt or .geojson/.json",
+                "cannot tell the output format from `{}`: give --to yin2|wkt|geojson|obj or use \
+                 the extension .txt/.yin2, .wkt, .geojson/.json or .obj",
                 p.display()
             ))),
-            (None, None) => Ok(Format::Yin2),
+            (None, None) => Ok(default),
         }
     }
 
@@ -77,6 +162,7 @@ impl Format {
             Format::Yin2 => "yin2",
             Format::Wkt => "wkt",
             Format::Geojson => "geojson",
+            Format::Obj => "obj",
         }
     }
 }
@@ -84,6 +170,7 @@ impl Format {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use Dimension::{Three, Two};
 
     fn p(s: &str) -> &Path {
         Path::new(s)
@@ -91,37 +178,67 @@ mod tests {
 
     #[test]
     fn input_format_by_option_extension_or_stdin() {
-        assert_eq!(Format::of_input(p("a.TXT"), None).unwrap(), Format::Yin2);
         assert_eq!(
-            Format::of_input(p("d/a.json"), None).unwrap(),
+            Format::of_input(p("a.TXT"), None, Two).unwrap(),
+            Format::Yin2
+        );
+        assert_eq!(
+            Format::of_input(p("d/a.json"), None, Two).unwrap(),
             Format::Geojson
         );
-        assert_eq!(Format::of_input(p("-"), None).unwrap(), Format::Yin2);
+        assert_eq!(Format::of_input(p("-"), None, Two).unwrap(), Format::Yin2);
         assert_eq!(
-            Format::of_input(p("a.txt"), Some(Format::Wkt)).unwrap(),
+            Format::of_input(p("a.txt"), Some(Format::Wkt), Two).unwrap(),
             Format::Wkt
         );
-        let e = Format::of_input(p("a.dat"), None).unwrap_err().to_string();
+        let e = Format::of_input(p("a.dat"), None, Two)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("`a.dat`") && e.contains("--from"), "{e}");
     }
 
     #[test]
     fn output_format_by_option_or_extension_and_conflicts() {
-        assert_eq!(Format::of_output(None, None).unwrap(), Format::Yin2);
+        assert_eq!(Format::of_output(None, None, Two).unwrap(), Format::Yin2);
         assert_eq!(
-            Format::of_output(Some(p("-")), Some(Format::Wkt)).unwrap(),
+            Format::of_output(Some(p("-")), Some(Format::Wkt), Two).unwrap(),
             Format::Wkt
         );
         assert_eq!(
-            Format::of_output(Some(p("o.wkt")), None).unwrap(),
+            Format::of_output(Some(p("o.wkt")), None, Two).unwrap(),
             Format::Wkt
         );
         assert_eq!(
-            Format::of_output(Some(p("o.out")), Some(Format::Geojson)).unwrap(),
+            Format::of_output(Some(p("o.out")), Some(Format::Geojson), Two).unwrap(),
             Format::Geojson
         );
-        let e = Format::of_output(Some(p("o.geojson")), Some(Format::Wkt)).unwrap_err();
+        let e = Format::of_output(Some(p("o.geojson")), Some(Format::Wkt), Two).unwrap_err();
         assert!(e.to_string().starts_with("conflicting options"), "{e}");
-        assert!(Format::of_output(Some(p("o.out")), None).is_err());
+        assert!(Format::of_output(Some(p("o.out")), None, Two).is_err());
+    }
+
+    #[test]
+    fn obj_is_the_3d_format_in_and_out() {
+        assert_eq!(
+            Format::of_input(p("a.OBJ"), None, Three).unwrap(),
+            Format::Obj
+        );
+        assert_eq!(Format::of_input(p("-"), None, Three).unwrap(), Format::Obj);
+        assert_eq!(Format::declared(p("a.obj"), None), Some(Format::Obj));
+        assert_eq!(Format::declared(p("-"), None), None);
+        assert_eq!(
+            Format::declared(p("-"), Some(Format::Obj)),
+            Some(Format::Obj)
+        );
+        assert_eq!(Format::of_output(None, None, Three).unwrap(), Format::Obj);
+        assert_eq!(
+            Format::of_output(Some(p("r.obj")), None, Three).unwrap(),
+            Format::Obj
+        );
+        let e = Format::of_output(Some(p("r.wkt")), None, Three).unwrap_err();
+        assert!(e.to_string().contains("wkt holds 2D sets"), "{e}");
+        let e = Format::of_output(None, Some(Format::Obj), Two).unwrap_err();
+        assert!(e.to_string().contains("obj holds 3D sets"), "{e}");
+        assert!(Format::of_input(p("a.obj"), None, Two).is_err());
     }
 }

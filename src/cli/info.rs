@@ -1,21 +1,16 @@
-//! `info`: a Yin set's topology, size and extent as a JSON object.
+//! `info`: a Yin set's topology, size and extent as a JSON object (2D and 3D).
 
-use crate::kernel::Point;
+use crate::kernel::{Point, Point3};
 use crate::num::Num;
 use crate::yin2::YinSet2;
+use crate::yin3::YinSet3;
 use serde_json::{json, Value};
 
 /// The JSON report on `set`. Numbers of the backend are given as text (`p/q` in exact mode)
 /// and as the nearest `f64`.
 pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
     let betti = set.betti();
-    let kind = if set.is_empty() {
-        "empty"
-    } else if set.is_full() {
-        "full"
-    } else {
-        "spadjor"
-    };
+    let kind = kind(set.is_empty(), set.is_full(), "spadjor");
     let curves: Vec<Value> = set
         .curves()
         .iter()
@@ -36,6 +31,7 @@ pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
         .map(|a| json!({ "outer": a.outer, "holes": a.holes }))
         .collect();
     json!({
+        "dimension": 2,
         "exact": N::EXACT,
         "set": kind,
         "bounded": set.is_bounded(),
@@ -53,6 +49,58 @@ pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
     })
 }
 
+/// The JSON report on the 3D `set`, in the terms of the 2D one: volume for area, surfaces
+/// (glued surfaces, each with its parent in the Hasse diagram) for curves.
+pub fn report3<N: Num>(set: &YinSet3<N>) -> Value {
+    let betti = set.betti();
+    let surfaces: Vec<Value> = set
+        .surfaces()
+        .iter()
+        .zip(set.parents())
+        .enumerate()
+        .map(|(k, (s, parent))| {
+            json!({
+                "surface": k,
+                "triangles": s.triangles.len(),
+                "positive": s.positive,
+                "genus": s.genus,
+                "parent": parent,
+            })
+        })
+        .collect();
+    let atoms: Vec<Value> = set
+        .atoms()
+        .iter()
+        .map(|a| json!({ "outer": a.outer, "inner": a.inner }))
+        .collect();
+    json!({
+        "dimension": 3,
+        "exact": N::EXACT,
+        "set": kind(set.is_empty(), set.is_full(), "brep"),
+        "bounded": set.is_bounded(),
+        "b0": betti.b0,
+        "b1": betti.b1,
+        "b2": betti.b2,
+        "surfaces": surfaces,
+        "atoms": atoms,
+        "vertices": set.vertices().len(),
+        "triangles": set.triangles().len(),
+        "volume": set.volume().map(|v| number(&v)),
+        "bbox": set.bbox().map(|b| json!({ "min": point3(&b.min), "max": point3(&b.max) })),
+    })
+}
+
+/// What the set is: `empty` (0̂), `full` (1̂) or `boundary`, the kind of boundary it has.
+fn kind(empty: bool, full: bool, boundary: &'static str) -> &'static str {
+    if empty {
+        "empty"
+    } else if full {
+        "full"
+    } else {
+        boundary
+    }
+}
+
 /// A number as its exact text and its nearest `f64`.
 fn number<N: Num>(v: &N) -> Value {
     json!({ "exact": v.to_string(), "float": v.to_f64() })
@@ -61,6 +109,11 @@ fn number<N: Num>(v: &N) -> Value {
 /// A point as `[x, y]` of [`number`]s.
 fn point<N: Num>(p: &Point<N>) -> Value {
     json!([number(&p.x), number(&p.y)])
+}
+
+/// A point as `[x, y, z]` of [`number`]s.
+fn point3<N: Num>(p: &Point3<N>) -> Value {
+    json!([number(&p.x), number(&p.y), number(&p.z)])
 }
 
 #[cfg(test)]
@@ -91,5 +144,44 @@ mod tests {
             (json!(false), Value::Null)
         );
         assert_eq!(report(&YinSet2::<Rational>::full())["set"], "full");
+    }
+
+    #[test]
+    fn reports_3d_betti_volume_surfaces_and_box() {
+        let v = |x, y, z| Point3::int(x, y, z);
+        // A corner tetrahedron with legs 2, normals out: volume 2³/6 = 4/3.
+        let tetra = YinSet3::<Rational>::from_triangles(
+            vec![v(0, 0, 0), v(2, 0, 0), v(0, 2, 0), v(0, 0, 2)],
+            vec![vec![0, 2, 1], vec![0, 1, 3], vec![1, 2, 3], vec![2, 0, 3]],
+        )
+        .unwrap();
+        let r = report3(&tetra);
+        assert_eq!(r["dimension"], 3);
+        assert_eq!(
+            (r["b0"].clone(), r["b1"].clone(), r["b2"].clone()),
+            (json!(1), json!(0), json!(0))
+        );
+        assert_eq!(r["volume"]["exact"], "4/3");
+        assert_eq!(
+            r["surfaces"],
+            json!([{"surface": 0, "triangles": 4, "positive": true, "genus": 0, "parent": null}])
+        );
+        assert_eq!(r["atoms"], json!([{"outer": 0, "inner": []}]));
+        assert_eq!(r["bbox"]["max"][2]["exact"], "2");
+        assert_eq!(
+            (r["vertices"].clone(), r["triangles"].clone()),
+            (json!(4), json!(4))
+        );
+        let outside = report3(&tetra.complement());
+        assert_eq!(
+            (outside["bounded"].clone(), outside["volume"].clone()),
+            (json!(false), Value::Null)
+        );
+        assert_eq!(outside["surfaces"][0]["positive"], false);
+        assert_eq!(report3(&YinSet3::<Rational>::full())["set"], "full");
+        assert_eq!(
+            report3(&YinSet3::<Rational>::empty())["volume"]["exact"],
+            "0"
+        );
     }
 }

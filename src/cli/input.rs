@@ -1,12 +1,16 @@
-//! Files and standard input → Yin sets: read, decode, validate (or fill), with located errors.
+//! Files and standard input → Yin sets: read, decode, validate (or fill), with located errors;
+//! 2D sets from yin2, WKT and GeoJSON, 3D sets from OBJ.
 
 use super::args::{FillArg, ReadOpts};
-use super::decode::{decode, Decoded, Rings};
+use super::decode::{decode, decode_obj, locate_faces, Decoded, Rings};
 use super::error::CliError;
-use super::format::{is_std, Format};
+use super::format::{is_std, Dimension, Format};
 use super::progress;
+use crate::io::obj::ObjMesh;
+use crate::io::ParseError;
 use crate::num::Num;
 use crate::yin2::YinSet2;
+use crate::yin3::YinSet3;
 use std::io::Read;
 use std::path::Path;
 
@@ -45,16 +49,16 @@ pub fn read_text(path: &Path) -> Result<String, CliError> {
 
 /// The Yin set in `path`, read as `opts` say, with number context `ctx`.
 pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2<N>, CliError> {
-    let format = Format::of_input(path, opts.from)?;
+    let format = Format::of_input(path, opts.from, Dimension::Two)?;
     let text = read_text(path)?;
     let rings = match decode::<N>(&text, format) {
         Ok(Decoded::Full) => return Ok(YinSet2::full().with_ctx(ctx)),
-        Ok(Decoded::Rings(rings)) => rings,
-        Err(source) => {
-            return Err(CliError::Parse {
-                name: name(path),
-                source,
-            })
+        Ok(Decoded::Boundary(rings)) => rings,
+        Err(mut source) => {
+            if is_std(path) && opts.from.is_none() && looks_like_obj(&text) {
+                source.message += " (standard input is read as yin2: for OBJ give --from obj)";
+            }
+            return Err(parse_error(path, source));
         }
     };
     if rings.rings.is_empty() {
@@ -64,6 +68,49 @@ pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2
     progress::while_working(message, rings.vertices(), || {
         build(path, rings, opts.fill, ctx)
     })
+}
+
+/// The 3D Yin set in the OBJ file `path`, with number context `ctx`: 0̂ if it has no faces,
+/// 1̂ if it is the whole-space comment line.
+pub fn load3<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet3<N>, CliError> {
+    Format::of_input(path, opts.from, Dimension::Three)?;
+    let text = read_text(path)?;
+    let mesh = match decode_obj::<N>(&text) {
+        Ok(Decoded::Full) => return Ok(YinSet3::full()),
+        Ok(Decoded::Boundary(mesh)) => mesh,
+        Err(source) => return Err(parse_error(path, source)),
+    };
+    let ObjMesh {
+        vertices,
+        faces,
+        face_lines,
+    } = mesh;
+    if faces.is_empty() {
+        return Ok(YinSet3::empty());
+    }
+    let message = || format!("reading {}", name(path));
+    progress::while_working(message, vertices.len(), || {
+        YinSet3::from_triangles_with(vertices, faces, ctx)
+    })
+    .map_err(|source| CliError::Invalid {
+        name: name(path),
+        note: locate_faces(&source, &face_lines),
+        source: Box::new(source),
+    })
+}
+
+/// The error of malformed text in `path`.
+fn parse_error(path: &Path, source: ParseError) -> CliError {
+    CliError::Parse {
+        name: name(path),
+        source,
+    }
+}
+
+/// True if `text` has OBJ vertex or face lines.
+fn looks_like_obj(text: &str) -> bool {
+    text.lines()
+        .any(|l| l.starts_with("v ") || l.starts_with("f "))
 }
 
 /// The Yin set bounded by `rings`, or covered by them under `fill`.

@@ -1,5 +1,6 @@
 //! The `yinset` command line (issue 6): Boolean operations, queries, pictures and format
-//! conversion over yin2 text, WKT and GeoJSON files, exact by default, float mode with `--eps`.
+//! conversion over yin2 text, WKT and GeoJSON files, exact by default, float mode with `--eps`;
+//! and the same operations and queries on 3D sets from OBJ files, exactly (issue 16).
 
 mod args;
 mod axioms;
@@ -13,16 +14,21 @@ mod locate;
 mod ops;
 mod output;
 mod progress;
+mod set;
 
 pub use args::{Cli, Command};
 pub use error::CliError;
 
-use crate::io::svg::write_svg;
-use crate::num::{Float, Num, Tolerance};
+use crate::num::{Float, Tolerance};
+use crate::yin2::YinSet2;
+use crate::yin3::YinSet3;
+use args::ReadOpts;
 use clap::Parser;
-use input::{load, name, one_stdin, read_text};
+use format::{Dimension, Format};
+use input::{name, one_stdin, read_text};
 use ops::{operate, Op};
 use output::write_text;
+use set::Set;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -51,23 +57,63 @@ pub fn main() -> ExitCode {
     }
 }
 
-/// Run one subcommand: exact unless it was given `--eps`.
+/// Run one subcommand: on 2D or 3D sets as its inputs' formats say; exact unless it was given
+/// `--eps` (2D only).
 pub fn run(command: &Command) -> Result<(), CliError> {
-    match command.read_opts().and_then(|r| r.eps) {
-        None => run_in::<Exact>(command, ()),
-        Some(eps) => run_in::<Float>(command, Tolerance::new(eps)),
+    let no_options = ReadOpts::default();
+    let read = command.read_opts().unwrap_or(&no_options);
+    match (dimension(command, read)?, read.eps) {
+        (Dimension::Two, None) => run_in::<YinSet2<Exact>>(command, ()),
+        (Dimension::Two, Some(eps)) => run_in::<YinSet2<Float>>(command, Tolerance::new(eps)),
+        (Dimension::Three, None) => run_in::<YinSet3<Exact>>(command, ()),
+        (Dimension::Three, Some(_)) => Err(CliError::Usage(
+            "--eps: 3D float mode is not available yet; 3D sets (OBJ) are computed exactly, \
+             without --eps"
+                .to_string(),
+        )),
     }
 }
 
-/// Run one subcommand with numbers `N` in context `ctx`.
-fn run_in<N: Num>(command: &Command, ctx: N::Ctx) -> Result<(), CliError> {
-    let binary = |op, b: &args::Binary| operate::<N>(op, &[&b.a, &b.b], &b.read, &b.write, ctx);
-    let unary = |op, u: &args::Unary| operate::<N>(op, &[&u.input], &u.read, &u.write, ctx);
+/// The dimension of the sets `command` reads, by their formats (`--from`, else the file
+/// extensions; standard input follows the other inputs): an error if they mix 2D and 3D, or if
+/// 3D sets meet an option or subcommand of 2D only.
+fn dimension(command: &Command, read: &ReadOpts) -> Result<Dimension, CliError> {
+    let declared: Vec<(&Path, Format)> = command
+        .set_inputs()
+        .into_iter()
+        .filter_map(|p| Some((p, Format::declared(p, read.from)?)))
+        .collect();
+    let of = |d: Dimension| declared.iter().find(|(_, f)| f.dimension() == d);
+    match (of(Dimension::Two), of(Dimension::Three)) {
+        (Some((a, fa)), Some((b, fb))) => Err(CliError::Usage(format!(
+            "conflicting inputs: {} is a 2D set ({}) but {} is a 3D set ({}); \
+             the operands must have one dimension",
+            name(a),
+            fa.name(),
+            name(b),
+            fb.name()
+        ))),
+        (_, Some(_)) if read.fill.is_some() => Err(CliError::Usage(
+            "--fill takes 2D rings as polygon soup; OBJ faces must bound a 3D set as given"
+                .to_string(),
+        )),
+        (_, Some(_)) if matches!(command, Command::Render(_)) => {
+            Err(CliError::Usage(set::NO_3D_RENDER.to_string()))
+        }
+        (_, Some(_)) => Ok(Dimension::Three),
+        (_, None) => Ok(Dimension::Two),
+    }
+}
+
+/// Run one subcommand on sets of kind `S`, with number context `ctx`.
+fn run_in<S: Set>(command: &Command, ctx: S::Ctx) -> Result<(), CliError> {
+    let binary = |op, b: &args::Binary| operate::<S>(op, &[&b.a, &b.b], &b.read, &b.write, ctx);
+    let unary = |op, u: &args::Unary| operate::<S>(op, &[&u.input], &u.read, &u.write, ctx);
     match command {
         Command::Demo => {
             let report = crate::demo::run().map_err(|source| CliError::Invalid {
                 name: "a demonstration shape".to_string(),
-                source: Box::new(source),
+                source,
                 note: String::new(),
             })?;
             write_text(None, &report)
@@ -79,12 +125,12 @@ fn run_in<N: Num>(command: &Command, ctx: N::Ctx) -> Result<(), CliError> {
         Command::Complement(u) => unary(Op::Complement, u),
         Command::Convert(u) => unary(Op::Convert, u),
         Command::Info(s) => {
-            let set = load::<N>(&s.input, &s.read, ctx)?;
-            write_text(None, &format!("{:#}\n", info::report(&set)))
+            let set = S::load(&s.input, &s.read, ctx)?;
+            write_text(None, &format!("{:#}\n", set.info()))
         }
         Command::Validate(s) => {
-            let set = load::<N>(&s.input, &s.read, ctx)?;
-            let summary = crate::demo::describe(&set);
+            let set = S::load(&s.input, &s.read, ctx)?;
+            let summary = set.describe();
             write_text(
                 None,
                 &format!("{} is a Yin set: {summary}\n", name(&s.input)),
@@ -92,26 +138,26 @@ fn run_in<N: Num>(command: &Command, ctx: N::Ctx) -> Result<(), CliError> {
         }
         Command::Locate(l) => {
             one_stdin([l.set.as_path(), l.points.as_path()])?;
-            let set = load::<N>(&l.set, &l.read, ctx)?;
+            let set = S::load(&l.set, &l.read, ctx)?;
             let text = read_text(&l.points)?;
-            let points = locate::read_points::<N>(&text).map_err(|source| CliError::Parse {
+            let words = set.locate_text(&text).map_err(|source| CliError::Parse {
                 name: name(&l.points),
                 source,
             })?;
-            write_text(None, &locate::classify(&set, &points))
+            write_text(None, &words)
         }
         Command::Render(r) => {
             one_stdin(r.inputs.iter().map(|p| p.as_path()))?;
             let sets = r
                 .inputs
                 .iter()
-                .map(|p| load::<N>(p, &r.read, ctx))
+                .map(|p| S::load(p, &r.read, ctx))
                 .collect::<Result<Vec<_>, _>>()?;
             let labels: Vec<String> = r.inputs.iter().map(|p| label(p)).collect();
             let layers: Vec<(&str, _)> = labels.iter().map(String::as_str).zip(&sets).collect();
-            write_text(r.output.as_deref(), &write_svg(&layers))
+            write_text(r.output.as_deref(), &S::svg(&layers)?)
         }
-        Command::Axioms(a) => axioms::run::<N>(a.n, a.seed),
+        Command::Axioms(a) => axioms::run::<Exact>(a.n, a.seed),
     }
 }
 

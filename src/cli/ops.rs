@@ -1,14 +1,13 @@
-//! The set-valued subcommands (the Boolean operations and `convert`), one generic path for all.
+//! The set-valued subcommands (the Boolean operations and `convert`), one generic path for all,
+//! in 2D and 3D.
 
 use super::args::{ReadOpts, WriteOpts};
-use super::encode::encode;
 use super::error::CliError;
 use super::format::Format;
-use super::input::{load, one_stdin};
+use super::input::one_stdin;
 use super::output::write_text;
 use super::progress;
-use crate::num::Num;
-use crate::yin2::YinSet2;
+use super::set::Set;
 use std::path::Path;
 
 /// A set-valued operation on one or more sets.
@@ -30,13 +29,13 @@ pub enum Op {
 
 impl Op {
     /// The result on `first` and the `rest` (binary operations fold left over the rest).
-    pub fn apply<N: Num>(self, first: &YinSet2<N>, rest: &[YinSet2<N>]) -> YinSet2<N> {
-        let step: fn(&YinSet2<N>, &YinSet2<N>) -> YinSet2<N> = match self {
-            Op::Meet => YinSet2::meet,
-            Op::Join => YinSet2::join,
-            Op::Difference => YinSet2::difference,
-            Op::Xor => YinSet2::symmetric_difference,
-            Op::Complement => return first.complement(),
+    pub fn apply<S: Set>(self, first: &S, rest: &[S]) -> S {
+        let step: fn(&S, &S) -> S = match self {
+            Op::Meet => S::meet,
+            Op::Join => S::join,
+            Op::Difference => S::difference,
+            Op::Xor => S::symmetric_difference,
+            Op::Complement => return S::complement(first),
             Op::Convert => return first.clone(),
         };
         rest.iter().fold(first.clone(), |acc, s| step(&acc, s))
@@ -44,23 +43,23 @@ impl Op {
 }
 
 /// Read `inputs`, apply `op`, write the result as `write` says.
-pub fn operate<N: Num>(
+pub fn operate<S: Set>(
     op: Op,
     inputs: &[&Path],
     read: &ReadOpts,
     write: &WriteOpts,
-    ctx: N::Ctx,
+    ctx: S::Ctx,
 ) -> Result<(), CliError> {
     one_stdin(inputs.iter().copied())?;
-    let format = Format::of_output(write.output.as_deref(), write.to)?;
+    let format = Format::of_output(write.output.as_deref(), write.to, S::DIMENSION)?;
     let sets = inputs
         .iter()
-        .map(|p| load::<N>(p, read, ctx))
+        .map(|p| S::load(p, read, ctx))
         .collect::<Result<Vec<_>, _>>()?;
     let Some((first, rest)) = sets.split_first() else {
         return Err(CliError::Usage("no input set given".to_string()));
     };
-    let vertices = sets.iter().flat_map(|s| s.curves()).map(|c| c.len()).sum();
+    let vertices = sets.iter().map(S::size).sum();
     let message = || {
         format!(
             "{} of {vertices} vertices",
@@ -68,7 +67,7 @@ pub fn operate<N: Num>(
         )
     };
     let result = progress::while_working(message, vertices, || op.apply(first, rest));
-    write_text(write.output.as_deref(), &encode(&result, format)?)
+    write_text(write.output.as_deref(), &result.encode(format)?)
 }
 
 #[cfg(test)]
@@ -76,6 +75,7 @@ mod tests {
     use super::*;
     use crate::kernel::Point;
     use crate::num::Rational;
+    use crate::yin2::YinSet2;
 
     fn square(x: i64, y: i64, s: i64) -> YinSet2<Rational> {
         let p = |a, b| Point::int(a, b);

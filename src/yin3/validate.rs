@@ -21,7 +21,7 @@ impl<N: Num> YinSet3<N> {
     /// lying on faces are made conforming. Errors name the face or edge at fault.
     ///
     /// ```
-    /// use yinset::{kernel::Point3, num::Rational, yin3::YinSet3};
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
     /// let v: Vec<Point3<Rational>> = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
     ///     .iter().map(|&(x, y, z)| Point3::int(x, y, z)).collect();
     /// let faces = vec![vec![0, 3, 2, 1], vec![4, 5, 6, 7], vec![0, 1, 5, 4], vec![1, 2, 6, 5], vec![2, 3, 7, 6], vec![3, 0, 4, 7]];

@@ -1,0 +1,129 @@
+//! The two kinds of sets the command works on, 2D (`YinSet2`: yin2, WKT, GeoJSON) and 3D
+//! (`YinSet3`: OBJ), behind one interface, so that each subcommand has one generic path.
+
+use super::args::ReadOpts;
+use super::encode::{encode, encode3};
+use super::error::CliError;
+use super::format::{Dimension, Format};
+use super::input::{load, load3};
+use super::{info, locate};
+use crate::io::svg::write_svg;
+use crate::io::ParseError;
+use crate::num::Num;
+use crate::yin2::YinSet2;
+use crate::yin3::YinSet3;
+use serde_json::Value;
+use std::path::Path;
+
+/// A kind of Yin set of the command line: its Boolean algebra, how it is read and written, and
+/// what the reporting subcommands say about it.
+pub trait Set: Clone {
+    /// The number context (the tolerance in float mode).
+    type Ctx: Copy;
+    /// The dimension of the space the sets live in.
+    const DIMENSION: Dimension;
+    /// The set in `path`, read as `opts` say, with number context `ctx`.
+    fn load(path: &Path, opts: &ReadOpts, ctx: Self::Ctx) -> Result<Self, CliError>;
+    /// The text of the set in `format`.
+    fn encode(&self, format: Format) -> Result<String, CliError>;
+    /// A ∧ B.
+    fn meet(&self, other: &Self) -> Self;
+    /// A ∨ B.
+    fn join(&self, other: &Self) -> Self;
+    /// A ∧ B′.
+    fn difference(&self, other: &Self) -> Self;
+    /// (A ∧ B′) ∨ (A′ ∧ B).
+    fn symmetric_difference(&self, other: &Self) -> Self;
+    /// A′.
+    fn complement(&self) -> Self;
+    /// The number of boundary vertices (large inputs show progress).
+    fn size(&self) -> usize;
+    /// The JSON report of `info`.
+    fn info(&self) -> Value;
+    /// The one-line summary of `validate`.
+    fn describe(&self) -> String;
+    /// The answer of `locate` for the points in `text`, one word per line.
+    fn locate_text(&self, text: &str) -> Result<String, ParseError>;
+    /// An SVG picture of labelled sets (2D only).
+    fn svg(layers: &[(&str, &Self)]) -> Result<String, CliError>;
+}
+
+/// The Boolean algebra of a `Set` impl: the kernel's operations of the same names.
+macro_rules! algebra {
+    ($set:ident) => {
+        fn meet(&self, other: &Self) -> Self {
+            $set::meet(self, other)
+        }
+        fn join(&self, other: &Self) -> Self {
+            $set::join(self, other)
+        }
+        fn difference(&self, other: &Self) -> Self {
+            $set::difference(self, other)
+        }
+        fn symmetric_difference(&self, other: &Self) -> Self {
+            $set::symmetric_difference(self, other)
+        }
+        fn complement(&self) -> Self {
+            $set::complement(self)
+        }
+    };
+}
+
+impl<N: Num> Set for YinSet2<N> {
+    type Ctx = N::Ctx;
+    const DIMENSION: Dimension = Dimension::Two;
+    algebra!(YinSet2);
+
+    fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
+        load(path, opts, ctx)
+    }
+    fn encode(&self, format: Format) -> Result<String, CliError> {
+        encode(self, format)
+    }
+    fn size(&self) -> usize {
+        self.curves().iter().map(|c| c.len()).sum()
+    }
+    fn info(&self) -> Value {
+        info::report(self)
+    }
+    fn describe(&self) -> String {
+        crate::demo::describe(self)
+    }
+    fn locate_text(&self, text: &str) -> Result<String, ParseError> {
+        Ok(locate::classify(self.locate(&locate::read_points(text)?)))
+    }
+    fn svg(layers: &[(&str, &Self)]) -> Result<String, CliError> {
+        Ok(write_svg(layers))
+    }
+}
+
+impl<N: Num> Set for YinSet3<N> {
+    type Ctx = N::Ctx;
+    const DIMENSION: Dimension = Dimension::Three;
+    algebra!(YinSet3);
+
+    fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
+        load3(path, opts, ctx)
+    }
+    fn encode(&self, format: Format) -> Result<String, CliError> {
+        encode3(self, format)
+    }
+    fn size(&self) -> usize {
+        self.vertices().len()
+    }
+    fn info(&self) -> Value {
+        info::report3(self)
+    }
+    fn describe(&self) -> String {
+        crate::demo::describe3(self)
+    }
+    fn locate_text(&self, text: &str) -> Result<String, ParseError> {
+        Ok(locate::classify(self.locate(&locate::read_points3(text)?)))
+    }
+    fn svg(_: &[(&str, &Self)]) -> Result<String, CliError> {
+        Err(CliError::Usage(NO_3D_RENDER.to_string()))
+    }
+}
+
+/// Why `render` refuses 3D sets.
+pub const NO_3D_RENDER: &str = "render draws 2D sets only: 3D sets (OBJ) cannot be drawn yet";

@@ -1,0 +1,345 @@
+//! The `yinset` binary on 3D sets (OBJ files): the Boolean operations, `info`, `validate` and
+//! `locate`, pipelines through standard input, 0̂ and 1̂, invalid meshes named by their OBJ
+//! lines, usage errors (float mode, mixed dimensions), and the shared 3D data.
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use predicates::str::contains;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use tempfile::TempDir;
+use yinset::io::obj::read_obj;
+use yinset::num::Rational;
+use yinset::yin3::YinSet3;
+
+/// The binary under test.
+fn yinset() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_yinset"))
+}
+
+/// A scratch directory for one test.
+fn scratch() -> TempDir {
+    tempfile::tempdir().expect("a temporary directory")
+}
+
+/// Write `text` to `name` in `dir`; its path.
+fn file(dir: &TempDir, name: &str, text: &str) -> PathBuf {
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).expect("write a scratch file");
+    path
+}
+
+/// A path as a command-line argument.
+fn s(p: &Path) -> &str {
+    p.to_str().expect("a UTF-8 path")
+}
+
+/// A file of `../shared/data/3d`.
+fn shared(name: &str) -> PathBuf {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data/3d")
+        .join(name);
+    assert!(
+        path.is_file(),
+        "test data missing: {} (expected ../shared/data beside the repository)",
+        path.display()
+    );
+    path
+}
+
+/// Run with `args` (and `stdin`), expect success; standard output.
+fn ok(args: &[&str], stdin: &str) -> String {
+    let out = yinset().args(args).write_stdin(stdin).assert().success();
+    String::from_utf8(out.get_output().stdout.clone()).expect("UTF-8 output")
+}
+
+/// Run with `args`, expect exit status `code` and a message on stderr containing each of
+/// `needles`, and no panic.
+fn fails(args: &[&str], stdin: &str, code: i32, needles: &[&str]) {
+    let mut assert = yinset()
+        .args(args)
+        .write_stdin(stdin)
+        .assert()
+        .code(code)
+        .stderr(contains("panicked").not());
+    for needle in needles {
+        assert = assert.stderr(contains(*needle));
+    }
+}
+
+/// The `info` JSON of `args`.
+fn info(args: &[&str], stdin: &str) -> Value {
+    serde_json::from_str(&ok(args, stdin)).expect("info prints JSON")
+}
+
+/// The 3D Yin set in an OBJ text (the command's output), read by the library.
+fn parse(text: &str) -> YinSet3<Rational> {
+    let mesh = read_obj(text).expect("OBJ output parses");
+    if mesh.faces.is_empty() {
+        return if text.contains("# yinset: the whole space (no boundary)") {
+            YinSet3::full()
+        } else {
+            YinSet3::empty()
+        };
+    }
+    YinSet3::from_triangles(mesh.vertices, mesh.faces).expect("the output is a Yin set")
+}
+
+/// The OBJ text of the box [lo, hi] (coordinates as written), faces as quads with normals out;
+/// `inward` turns them in, for a cavity.
+fn cuboid(lo: [&str; 3], hi: [&str; 3], inward: bool) -> String {
+    let mut text = String::new();
+    for i in 0..8 {
+        let c = |k: usize| if i >> k & 1 == 0 { lo[k] } else { hi[k] };
+        text += &format!("v {} {} {}\n", c(0), c(1), c(2));
+    }
+    for mut face in [
+        [1, 3, 4, 2],
+        [5, 6, 8, 7],
+        [1, 2, 6, 5],
+        [3, 7, 8, 4],
+        [1, 5, 7, 3],
+        [2, 4, 8, 6],
+    ] {
+        if inward {
+            face.reverse();
+        }
+        // Negative indices count back from the box's own 8 vertices.
+        let [a, b, c, d] = face.map(|v| v as i64 - 9);
+        text += &format!("f {a} {b} {c} {d}\n");
+    }
+    text
+}
+
+/// The box [0, 2]³.
+fn box_a() -> String {
+    cuboid(["0", "0", "0"], ["2", "2", "2"], false)
+}
+
+/// The box [1, 3] × [1, 3] × [0.1, 2.1]: its meet with [`box_a`] has volume 1 · 1 · 1.9.
+fn box_b() -> String {
+    cuboid(["1", "1", "0.1"], ["3", "3", "2.1"], false)
+}
+
+/// The two boxes as files `a.obj` and `b.obj` in `dir`.
+fn two_boxes(dir: &TempDir) -> (PathBuf, PathBuf) {
+    (file(dir, "a.obj", &box_a()), file(dir, "b.obj", &box_b()))
+}
+
+#[test]
+fn meet_and_join_have_exact_volumes() {
+    let dir = scratch();
+    let (a, b) = two_boxes(&dir);
+    let meet = dir.path().join("m.obj");
+    ok(&["meet", s(&a), s(&b), "-o", s(&meet)], "");
+    let m = info(&["info", s(&meet)], "");
+    assert_eq!(m["dimension"], 3);
+    assert_eq!(m["volume"]["exact"], "19/10", "0.1 is read exactly");
+    assert_eq!((m["b0"].clone(), m["b1"].clone()), (1.into(), 0.into()));
+    let j = info(
+        &["info", "--from", "obj", "-"],
+        &ok(&["join", s(&a), s(&b)], ""),
+    );
+    assert_eq!(j["volume"]["exact"], "141/10");
+    assert_eq!(j["volume"]["float"], 14.1);
+    let d = parse(&ok(&["difference", s(&a), s(&b)], ""));
+    assert_eq!(d.volume(), Some(Rational::new(61.into(), 10.into())));
+    let x = parse(&ok(&["xor", s(&a), s(&b)], ""));
+    assert_eq!(x.volume(), Some(Rational::new(122.into(), 10.into())));
+    assert_eq!(x.betti().b0, 2);
+}
+
+#[test]
+fn meet_output_reads_back_through_standard_input() {
+    let dir = scratch();
+    let (a, b) = two_boxes(&dir);
+    let out = ok(&["meet", s(&a), s(&b)], "");
+    assert!(out.starts_with("# yinset\n") && out.contains("\no surface_0_positive\n"));
+    let back = info(&["info", "--from", "obj", "-"], &out);
+    assert_eq!(back["volume"]["exact"], "19/10");
+    // Standard input takes the format of the other operand, OBJ.
+    let again = parse(&ok(&["meet", s(&a), "-"], &box_b()));
+    assert_eq!(again, parse(&out));
+    let summary = ok(&["validate", "--from", "obj", "-"], &out);
+    assert!(
+        summary.starts_with("standard input is a Yin set: 1 surfaces, b0 = 1, b1 = 0, b2 = 0"),
+        "{summary}"
+    );
+    // Without --from, a lone standard input is yin2, and the error says what to do.
+    fails(&["info", "-"], &out, 1, &["--from obj"]);
+}
+
+#[test]
+fn complement_twice_is_the_identity() {
+    let dir = scratch();
+    let (a, _) = two_boxes(&dir);
+    let outside = ok(&["complement", s(&a)], "");
+    assert!(
+        outside.starts_with("# yinset: the set is unbounded"),
+        "{outside}"
+    );
+    assert!(outside.contains("o surface_0_negative"), "{outside}");
+    let o = info(&["info", "--from", "obj", "-"], &outside);
+    assert_eq!(
+        (o["bounded"].clone(), o["volume"].clone(), o["b2"].clone()),
+        (false.into(), Value::Null, 1.into())
+    );
+    let back = ok(&["complement", "--from", "obj", "-"], &outside);
+    assert_eq!(parse(&back), parse(&box_a()));
+}
+
+#[test]
+fn empty_and_whole_space_survive_a_pipeline() {
+    let dir = scratch();
+    let (a, _) = two_boxes(&dir);
+    let empty = ok(&["difference", s(&a), s(&a)], "");
+    assert_eq!(empty, "", "0̂ is an empty file");
+    let full = ok(&["complement", "--from", "obj", "-"], &empty);
+    assert_eq!(full, "# yinset: the whole space (no boundary)\n");
+    let f = info(&["info", "--from", "obj", "-"], &full);
+    assert_eq!(
+        (f["set"].clone(), f["bounded"].clone(), f["b0"].clone()),
+        ("full".into(), false.into(), 1.into())
+    );
+    let e = info(&["info", "--from", "obj", "-"], &empty);
+    assert_eq!(
+        (e["set"].clone(), e["volume"]["exact"].clone()),
+        ("empty".into(), "0".into())
+    );
+    let full_file = file(&dir, "full.obj", &full);
+    assert_eq!(
+        ok(&["meet", s(&a), s(&full_file)], ""),
+        ok(&["convert", s(&a)], "")
+    );
+}
+
+#[test]
+fn info_reports_cavities_surfaces_and_box() {
+    let dir = scratch();
+    let hollow = cuboid(["0", "0", "0"], ["3", "3", "3"], false)
+        + &cuboid(["1", "1", "1"], ["2", "2", "2"], true);
+    let h = file(&dir, "hollow.obj", &hollow);
+    let r = info(&["info", s(&h)], "");
+    assert_eq!(
+        (r["b0"].clone(), r["b1"].clone(), r["b2"].clone()),
+        (1.into(), 0.into(), 1.into())
+    );
+    assert_eq!(r["volume"]["exact"], "26");
+    assert_eq!(r["surfaces"][0]["positive"], true);
+    assert_eq!(r["surfaces"][1]["positive"], false);
+    assert_eq!(r["surfaces"][1]["parent"], 0);
+    assert_eq!(r["surfaces"][0]["genus"], 0);
+    assert_eq!(
+        r["atoms"],
+        serde_json::json!([{ "outer": 0, "inner": [1] }])
+    );
+    assert_eq!(r["bbox"]["max"][2]["exact"], "3");
+    assert_eq!(
+        (r["vertices"].clone(), r["triangles"].clone()),
+        (16.into(), 24.into())
+    );
+    let out = ok(&["validate", s(&h)], "");
+    assert!(
+        out.contains("`") && out.contains("hollow.obj` is a Yin set: 2 surfaces"),
+        "{out}"
+    );
+    assert!(out.contains("b2 = 1, volume 26"), "{out}");
+}
+
+#[test]
+fn locate_takes_xyz_lines() {
+    let dir = scratch();
+    let (a, _) = two_boxes(&dir);
+    let out = ok(&["locate", s(&a)], "# x y z\n1 1 1\n2 1/2 1\n5 5 5\n");
+    assert_eq!(out, "inside\nboundary\noutside\n");
+    fails(&["locate", s(&a)], "1 1\n", 1, &["line 1", "3 numbers"]);
+}
+
+#[test]
+fn invalid_meshes_are_explained_with_their_obj_lines() {
+    let dir = scratch();
+    // The box without its top face: open along four edges.
+    let open: String = box_a()
+        .lines()
+        .filter(|l| *l != "f -4 -3 -1 -2")
+        .map(|l| l.to_string() + "\n")
+        .collect();
+    assert_eq!(open.lines().count(), 13);
+    let o = file(&dir, "open.obj", &open);
+    fails(
+        &["validate", s(&o)],
+        "",
+        1,
+        &["`", "open.obj` is not a Yin set", "open", "is on line"],
+    );
+    fails(&["meet", s(&o), s(&o)], "", 1, &["not a Yin set"]);
+    fails(
+        &["info", "--from", "obj", "-"],
+        "v 0 0 0\nv 1 0 0\nf 1 2 3\n",
+        1,
+        &["line 3", "out of range"],
+    );
+}
+
+#[test]
+fn usage_errors_of_3d_input() {
+    let dir = scratch();
+    let (a, b) = two_boxes(&dir);
+    fails(
+        &["meet", s(&a), s(&b), "--eps", "1e-9"],
+        "",
+        2,
+        &["--eps", "3D float mode is not available yet"],
+    );
+    fails(&["info", s(&a), "--eps", "0.5"], "", 2, &["3D float mode"]);
+    let t = file(&dir, "t.txt", "0 0\n1 0\n0 1\n");
+    fails(
+        &["join", s(&t), s(&a)],
+        "",
+        2,
+        &["2D", "3D", "t.txt", "a.obj"],
+    );
+    fails(&["meet", s(&a), s(&b), "--to", "wkt"], "", 2, &["obj"]);
+    fails(&["complement", s(&a), "-o", "x.txt"], "", 2, &["3D"]);
+    fails(&["convert", s(&t), "--to", "obj"], "", 2, &["2D"]);
+    fails(&["render", s(&a)], "", 2, &["render", "2D"]);
+    fails(&["info", s(&a), "--fill", "nonzero"], "", 2, &["--fill"]);
+}
+
+#[test]
+fn shared_ball_info() {
+    let ball = shared("ballahead.obj");
+    let r = info(&["info", s(&ball)], "");
+    assert_eq!(r["dimension"], 3);
+    assert_eq!(
+        (r["b0"].clone(), r["b1"].clone(), r["b2"].clone()),
+        (1.into(), 0.into(), 0.into())
+    );
+    assert_eq!(r["bounded"], true);
+    assert_eq!(r["surfaces"].as_array().map(Vec::len), Some(1));
+    assert_eq!(r["triangles"], 48);
+    let volume = r["volume"]["float"].as_f64().expect("a bounded volume");
+    assert!(volume > 0.0, "{volume}");
+    assert!(
+        r["volume"]["exact"]
+            .as_str()
+            .is_some_and(|v| v.contains('/')),
+        "{r}"
+    );
+}
+
+#[test]
+fn shared_teddy_is_rejected_naming_crossing_faces_and_lines() {
+    let teddy = shared("teddy.obj");
+    fails(
+        &["validate", s(&teddy)],
+        "",
+        1,
+        &[
+            "teddy.obj` is not a Yin set",
+            "faces",
+            "cross",
+            "is on line",
+        ],
+    );
+}
