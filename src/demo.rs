@@ -4,6 +4,7 @@
 use crate::kernel::{Point, Point3};
 use crate::num::{Num, Rational};
 use crate::yin2::{YinError, YinSet2};
+use crate::yin3::shapes::{self, Mesh};
 use crate::yin3::{Yin3Error, YinSet3};
 use std::fmt::Write;
 
@@ -77,38 +78,15 @@ pub fn describe3<N: Num>(y: &YinSet3<N>) -> String {
     )
 }
 
-/// Vertices and faces (vertex index lists, counterclockwise seen from outside).
-type Mesh = (Vec<Point3<Rational>>, Vec<Vec<usize>>);
-
-/// The corners and outward faces (quads) of the box [lo, hi], corner `i` taking the `hi`
-/// coordinate where bit 0, 1, 2 of `i` (x, y, z) is set.
-fn cuboid(lo: [i64; 3], hi: [i64; 3]) -> Mesh {
-    let c = |i: usize, k: usize| if i >> k & 1 == 0 { lo[k] } else { hi[k] };
-    let corners = (0..8)
-        .map(|i| Point3::int(c(i, 0), c(i, 1), c(i, 2)))
-        .collect();
-    let faces = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    (corners, faces.map(|f| f.to_vec()).to_vec())
+/// The box [lo, hi] with integer corners.
+fn cuboid(lo: [i64; 3], hi: [i64; 3]) -> Mesh<Rational> {
+    let p = |c: [i64; 3]| Point3::int(c[0], c[1], c[2]);
+    shapes::cuboid(&p(lo), &p(hi))
 }
 
-/// The Yin set bounded by the faces of several pieces together (each its own vertex list).
-fn solid(pieces: Vec<Mesh>) -> Result<YinSet3<Rational>, Yin3Error> {
-    let (mut vertices, mut faces) = (Vec::new(), Vec::new());
-    for (v, f) in pieces {
-        let offset = vertices.len();
-        faces.extend(
-            f.into_iter()
-                .map(|f| f.into_iter().map(|i| i + offset).collect()),
-        );
-        vertices.extend(v);
-    }
+/// The Yin set bounded by the faces of several pieces together.
+fn solid(pieces: Vec<Mesh<Rational>>) -> Result<YinSet3<Rational>, Yin3Error> {
+    let (vertices, faces) = shapes::concat(pieces);
     YinSet3::from_triangles(vertices, faces)
 }
 

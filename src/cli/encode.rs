@@ -149,19 +149,8 @@ mod tests {
 
     /// The cube [lo, hi]³.
     fn cube(lo: i64, hi: i64) -> YinSet3<Rational> {
-        let c = |i: i64, bit: i64| if i >> bit & 1 == 0 { lo } else { hi };
-        let v = (0..8)
-            .map(|i| crate::kernel::Point3::int(c(i, 0), c(i, 1), c(i, 2)))
-            .collect();
-        let faces = [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ];
-        YinSet3::from_triangles(v, faces.map(|f| f.to_vec()).to_vec()).unwrap()
+        let p = |c: i64| crate::kernel::Point3::int(c, c, c);
+        YinSet3::cuboid(&p(lo), &p(hi)).unwrap()
     }
 
     #[test]

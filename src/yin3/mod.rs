@@ -14,6 +14,7 @@ mod locate;
 mod meet;
 mod ops;
 mod set;
+pub mod shapes;
 mod tri;
 mod triangulate;
 mod validate;
