@@ -14,9 +14,12 @@
 //! expected set of every mask is traced from the mask independently of the kernel's operations
 //! (tests/common/cells.rs) and only validated by `from_curves`.
 
+mod cells3;
 #[path = "../tests/common/mod.rs"]
 mod common;
+mod laws3;
 
+use cells3::{Grid3, Y3};
 use common::cells::{full_mask, Cells, Complex};
 use common::laws::{self, Res, Tally};
 use common::Y;
@@ -24,21 +27,39 @@ use std::collections::HashSet;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
+use yinset::kernel::Point3;
+use yinset::num::{Num, Rational};
 
 /// True for the full run (`YINSET_PROOFS=full`).
 fn full() -> bool {
     std::env::var("YINSET_PROOFS").is_ok_and(|v| v == "full")
 }
 
-/// A closed universe: every mask of a subdivision, with and without the exterior, and the
+/// A finite universe of Yin sets closed under the Boolean operations, indexed by [`Cells`]
+/// masks (with the exterior bit for the unbounded sets), which carries out one case of each
+/// theorem: the proofs below are generic over it, planar (2D) and spatial (3D) alike.
+trait Universe: Sync {
+    /// Its name in the tables.
+    fn name(&self) -> &str;
+    /// Every set: all masks, bounded only or also with the exterior.
+    fn sets(&self, with_unbounded: bool) -> Vec<Cells>;
+    /// Theorem U for the set `a`.
+    fn unary(&self, t: &mut Tally, a: Cells) -> Res;
+    /// Theorem B for the ordered pair (a, b).
+    fn binary(&self, t: &mut Tally, a: Cells, b: Cells) -> Res;
+    /// Theorem T for the ordered triple (a, b, c).
+    fn ternary(&self, t: &mut Tally, a: Cells, b: Cells, c: Cells) -> Res;
+}
+
+/// A planar universe: every mask of a subdivision, with and without the exterior, and the
 /// expected Yin set of each, traced from the mask.
-struct Universe {
+struct Planar {
     cx: Complex,
     expected: Vec<Y>,
 }
 
-impl Universe {
-    fn new(cx: Complex) -> Universe {
+impl Planar {
+    fn new(cx: Complex) -> Planar {
         let expected: Vec<Y> = cx.all(true).into_iter().map(|s| cx.yin(s)).collect();
         // The oracle is injective: distinct masks give distinct Yin sets (Thm 3.21).
         let distinct: HashSet<&Y> = expected.iter().collect();
@@ -48,7 +69,7 @@ impl Universe {
             "oracle not injective on {}",
             cx.name
         );
-        Universe { cx, expected }
+        Planar { cx, expected }
     }
 
     fn index(&self, s: Cells) -> usize {
@@ -59,13 +80,122 @@ impl Universe {
         &self.expected[self.index(s)]
     }
 
+    /// The set with piece centroids as probe points, for the membership oracle.
+    fn probes(&self) -> Vec<yinset::kernel::Point<yinset::num::Rational>> {
+        self.cx.probes().into_iter().map(|(_, p)| p).collect()
+    }
+}
+
+impl Universe for Planar {
+    fn name(&self) -> &str {
+        &self.cx.name
+    }
+
     fn sets(&self, with_unbounded: bool) -> Vec<Cells> {
         self.cx.all(with_unbounded)
     }
 
-    /// The set with piece centroids as probe points, for the membership oracle.
-    fn probes(&self) -> Vec<yinset::kernel::Point<yinset::num::Rational>> {
-        self.cx.probes().into_iter().map(|(_, p)| p).collect()
+    fn unary(&self, t: &mut Tally, a: Cells) -> Res {
+        let ya = self.get(a);
+        laws::cells_check(t, &self.cx, a, ya, ya, "a (oracle input)")?;
+        laws::unary(t, ya)?;
+        let c = laws::ok(ya.complement(), "a'")?;
+        let n = self.cx.len();
+        laws::cells_check(t, &self.cx, a.not(n), &c, self.get(a.not(n)), "a'")
+    }
+
+    fn binary(&self, t: &mut Tally, a: Cells, b: Cells) -> Res {
+        let (ya, yb) = (self.get(a), self.get(b));
+        let out = laws::binary(t, ya, yb)?;
+        laws::cells_binary(t, &self.cx, (a, b), &out, &|s| self.get(s).clone())?;
+        laws::membership(t, ya, yb, &out, &self.probes())
+    }
+
+    fn ternary(&self, t: &mut Tally, a: Cells, b: Cells, c: Cells) -> Res {
+        laws::ternary(t, self.get(a), self.get(b), self.get(c))
+    }
+}
+
+/// A spatial universe: every union of the unit cells of a small grid (possibly rotated), with
+/// and without the exterior, and the expected Yin set of each, built from the mask's faces.
+struct Spatial {
+    g: Grid3,
+    expected: Vec<Y3>,
+    /// Centres of every open cell of the grid's complex, and a point outside.
+    probes: Vec<Point3<Rational>>,
+    /// Cube centres and a point outside (membership oracle).
+    cube_probes: Vec<Point3<Rational>>,
+}
+
+impl Spatial {
+    fn new(g: Grid3) -> Spatial {
+        let expected: Vec<Y3> = par_map(&g.all(true), |&s| g.yin(s));
+        // `Hash` and `==` are the canonical form's, which the interior `OnceLock` caches
+        // only compute.
+        #[allow(clippy::mutable_key_type)]
+        let distinct: HashSet<&Y3> = expected.iter().collect();
+        assert_eq!(
+            distinct.len(),
+            expected.len(),
+            "oracle not injective on {}",
+            g.name
+        );
+        let (probes, cube_probes) = (g.probes(), g.cube_probes());
+        Spatial {
+            g,
+            expected,
+            probes,
+            cube_probes,
+        }
+    }
+
+    fn get(&self, s: Cells) -> &Y3 {
+        &self.expected[(s.outside as usize) << self.g.len() | s.mask as usize]
+    }
+
+    /// A failure, with the operands' masks.
+    fn at<T>(r: Result<T, String>, what: impl FnOnce() -> String) -> Result<T, String> {
+        r.map_err(|e| format!("{}: {e}", what()))
+    }
+}
+
+impl Universe for Spatial {
+    fn name(&self) -> &str {
+        &self.g.name
+    }
+
+    fn sets(&self, with_unbounded: bool) -> Vec<Cells> {
+        self.g.all(with_unbounded)
+    }
+
+    fn unary(&self, t: &mut Tally, a: Cells) -> Res {
+        let (g, p) = (&self.g, &self.probes[..]);
+        let ya = self.get(a);
+        let r = (|| {
+            laws3::cells_check(t, g, p, a, ya, ya, "a (oracle input)")?;
+            laws::unary(t, ya)?;
+            let c = laws::ok(ya.complement(), "a'")?;
+            let na = a.not(g.len());
+            laws3::cells_check(t, g, p, na, &c, self.get(na), "a'")
+        })();
+        Spatial::at(r, || format!("a = {a:?}"))
+    }
+
+    fn binary(&self, t: &mut Tally, a: Cells, b: Cells) -> Res {
+        let (ya, yb) = (self.get(a), self.get(b));
+        let r = (|| {
+            let out = laws::binary(t, ya, yb)?;
+            laws3::cells_binary(t, &self.g, &self.probes, (a, b), &out, &|s| {
+                self.get(s).clone()
+            })?;
+            laws::membership(t, ya, yb, &out, &self.cube_probes)
+        })();
+        Spatial::at(r, || format!("a = {a:?}, b = {b:?}"))
+    }
+
+    fn ternary(&self, t: &mut Tally, a: Cells, b: Cells, c: Cells) -> Res {
+        let r = laws::ternary(t, self.get(a), self.get(b), self.get(c));
+        Spatial::at(r, || format!("a = {a:?}, b = {b:?}, c = {c:?}"))
     }
 }
 
@@ -103,6 +233,28 @@ fn par<T: Sync>(
     });
     let e = error.into_inner().unwrap();
     (tally.into_inner().unwrap(), e.map_or(Ok(()), Err))
+}
+
+/// `f` of every item, in order, on all cores.
+fn par_map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let next = AtomicUsize::new(0);
+    let out = Mutex::new(Vec::with_capacity(items.len()));
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| loop {
+                let k = next.fetch_add(1, Ordering::Relaxed);
+                if k >= items.len() {
+                    break;
+                }
+                let r = f(&items[k]);
+                out.lock().unwrap().push((k, r));
+            });
+        }
+    });
+    let mut out = out.into_inner().unwrap();
+    out.sort_by_key(|(k, _)| *k);
+    out.into_iter().map(|(_, r)| r).collect()
 }
 
 /// CPU time of this process so far, in seconds (Linux: /proc/self/stat, USER_HZ = 100;
@@ -198,20 +350,13 @@ fn sample(sets: &[Cells], k: usize) -> Vec<Cells> {
 /// from the complemented mask, with the flood-fill Betti numbers, exact area and located
 /// centroids (ρ(a') = ρ(a)^⊥, Lemma 4.5); and idempotence a∧a = a∨a = a, identity a∧1̂ = a∨0̂ =
 /// a, annihilator a∧0̂ = 0̂, a∨1̂ = 1̂, complement a∧a' = 0̂, a∨a' = 1̂ and involution a'' = a hold.
-fn theorem_unary(u: &Universe) {
+fn theorem_unary(u: &impl Universe) {
     let start = Clock::start();
     let sets = u.sets(true);
-    let n = u.cx.len();
-    let result = par(&sets, |t, &a| {
-        let ya = u.get(a);
-        laws::cells_check(t, &u.cx, a, ya, ya, "a (oracle input)")?;
-        laws::unary(t, ya)?;
-        let c = laws::ok(ya.complement(), "a'")?;
-        laws::cells_check(t, &u.cx, a.not(n), &c, u.get(a.not(n)), "a'")
-    });
+    let result = par(&sets, |t, &a| u.unary(t, a));
     conclude(
         "U: unary laws, complement = ¬mask (Lemma 4.5, Thm 4.11)",
-        &format!("{}, all {} sets", u.cx.name, sets.len()),
+        &format!("{}, all {} sets", u.name(), sets.len()),
         sets.len(),
         start,
         result,
@@ -220,20 +365,15 @@ fn theorem_unary(u: &Universe) {
 
 /// **Theorem B (binary laws and the homomorphism; seed 000 Lemma 4.9, Def. 4.10, Thm 4.11).**
 /// For every ordered pair (a, b) of the given sets: a∧b, a∨b, a∖b, a⊕b and a' equal the sets
-/// traced from the bitwise masks (ρ(a∧b) = ρ(a) ∩ ρ(b), Lemma 4.9; the join by De Morgan,
-/// Def. 4.10), with flood-fill Betti numbers, exact areas and located centroids; the order
-/// a∧b = a ⇔ a∨b = b ⇔ mask(a) ⊆ mask(b); commutativity, absorption and both De Morgan laws;
-/// the exact area identities |a∧b| + |a∨b| = |a| + |b| and |a∖b| = |a| − |a∧b| (bounded a, b);
-/// and membership locate(p, a op b) = locate(p, a) op locate(p, b) at every piece centroid.
-fn theorem_binary(u: &Universe, items: Vec<(Cells, Cells)>, universe: &str) {
+/// built from the bitwise masks (ρ(a∧b) = ρ(a) ∩ ρ(b), Lemma 4.9; the join by De Morgan,
+/// Def. 4.10), with the oracle's Betti numbers, exact areas (volumes) and located probes; the
+/// order a∧b = a ⇔ a∨b = b ⇔ mask(a) ⊆ mask(b); commutativity, absorption and both De Morgan
+/// laws; the exact measure identities |a∧b| + |a∨b| = |a| + |b| and |a∖b| = |a| − |a∧b|
+/// (bounded a, b); and membership locate(p, a op b) = locate(p, a) op locate(p, b) at every
+/// piece centroid (cube centre).
+fn theorem_binary(u: &impl Universe, items: Vec<(Cells, Cells)>, universe: &str) {
     let start = Clock::start();
-    let pts = u.probes();
-    let result = par(&items, |t, &(a, b)| {
-        let (ya, yb) = (u.get(a), u.get(b));
-        let out = laws::binary(t, ya, yb)?;
-        laws::cells_binary(t, &u.cx, (a, b), &out, &|s| u.get(s).clone())?;
-        laws::membership(t, ya, yb, &out, &pts)
-    });
+    let result = par(&items, |t, &(a, b)| u.binary(t, a, b));
     conclude(
         "B: binary laws, ∧ ∨ ∖ ⊕ ' = bitwise (Lemma 4.9, Def. 4.10, Thm 4.11)",
         universe,
@@ -246,11 +386,9 @@ fn theorem_binary(u: &Universe, items: Vec<(Cells, Cells)>, universe: &str) {
 /// **Theorem T (ternary laws; seed 000 Thm 4.11).** For every ordered triple (a, b, c) of the
 /// universe: (a∧b)∧c = a∧(b∧c), (a∨b)∨c = a∨(b∨c), a∧(b∨c) = (a∧b)∨(a∧c) and
 /// a∨(b∧c) = (a∨b)∧(a∨c), every side computed by the kernel and validated.
-fn theorem_ternary(u: &Universe, items: Vec<(Cells, Cells, Cells)>, universe: &str) {
+fn theorem_ternary(u: &impl Universe, items: Vec<(Cells, Cells, Cells)>, universe: &str) {
     let start = Clock::start();
-    let result = par(&items, |t, &(a, b, c)| {
-        laws::ternary(t, u.get(a), u.get(b), u.get(c))
-    });
+    let result = par(&items, |t, &(a, b, c)| u.ternary(t, a, b, c));
     conclude(
         "T: associativity, distributivity (Thm 4.11)",
         universe,
@@ -265,83 +403,222 @@ fn theorem_ternary(u: &Universe, items: Vec<(Cells, Cells, Cells)>, universe: &s
 
 #[test]
 fn unary_on_3x3_grid() {
-    theorem_unary(&Universe::new(Complex::grid(3, 3)));
+    theorem_unary(&Planar::new(Complex::grid(3, 3)));
 }
 
 #[test]
 fn unary_on_pinwheel() {
-    theorem_unary(&Universe::new(Complex::pinwheel()));
+    theorem_unary(&Planar::new(Complex::pinwheel()));
 }
 
-/// Theorem B on the bounded sets of a binary universe: every ordered pair in the full run, every
-/// set against a fixed spread of 7 in the quick subset.
-fn binary_on(cx: Complex) {
-    let u = Universe::new(cx);
-    let bounded = u.sets(false);
+/// Theorem B on the bounded sets of a binary universe: every ordered pair in the full run
+/// (with the unbounded sets too if `unbounded_in_full`), every bounded set against a fixed
+/// spread of `quick` in the quick subset.
+fn binary_on(u: &impl Universe, quick: usize, unbounded_in_full: bool) {
     if full() {
-        let name = format!(
-            "{}, all {}² ordered pairs of bounded sets",
-            u.cx.name,
-            bounded.len()
-        );
-        theorem_binary(&u, pairs(&bounded), &name);
+        let sets = u.sets(unbounded_in_full);
+        let kind = if unbounded_in_full {
+            "(bounded and unbounded)"
+        } else {
+            "of bounded sets"
+        };
+        let name = format!("{}, all {}² ordered pairs {kind}", u.name(), sets.len());
+        theorem_binary(u, pairs(&sets), &name);
     } else {
-        let few = sample(&bounded, 6);
+        let bounded = u.sets(false);
+        let few = sample(&bounded, quick);
         let items: Vec<_> = bounded
             .iter()
             .flat_map(|&a| few.iter().map(move |&b| (a, b)))
             .collect();
         let name = format!(
             "{}, all {} bounded sets × {} fixed ones",
-            u.cx.name,
+            u.name(),
             bounded.len(),
             few.len()
         );
-        theorem_binary(&u, items, &name);
+        theorem_binary(u, items, &name);
     }
+}
+
+/// Theorem B on every ordered pair of a small universe, bounded and unbounded sets alike.
+fn binary_closed(u: &impl Universe) {
+    let all = u.sets(true);
+    let name = format!(
+        "{}, all {}² ordered pairs (bounded and unbounded)",
+        u.name(),
+        all.len()
+    );
+    theorem_binary(u, pairs(&all), &name);
+}
+
+/// Theorem T on every ordered triple of a small universe: bounded and unbounded sets in the
+/// full run, the bounded ones in the quick subset.
+fn ternary_on(u: &impl Universe) {
+    let unbounded = full();
+    let sets = u.sets(unbounded);
+    let kind = if unbounded {
+        "bounded and unbounded"
+    } else {
+        "bounded"
+    };
+    let name = format!("{}, all {}³ ordered triples ({kind})", u.name(), sets.len());
+    theorem_ternary(u, triples(&sets), &name);
 }
 
 #[test]
 fn binary_on_3x3_grid() {
-    binary_on(Complex::grid(3, 3));
+    binary_on(&Planar::new(Complex::grid(3, 3)), 6, false);
 }
 
 #[test]
 fn binary_on_pinwheel() {
-    binary_on(Complex::pinwheel());
+    binary_on(&Planar::new(Complex::pinwheel()), 6, false);
 }
 
 #[test]
 fn binary_on_closed_small_universes() {
     for cx in [Complex::grid(2, 2), Complex::cross()] {
-        let u = Universe::new(cx);
-        let all = u.sets(true);
-        let name = format!(
-            "{}, all {}² ordered pairs (bounded and unbounded)",
-            u.cx.name,
-            all.len()
-        );
-        theorem_binary(&u, pairs(&all), &name);
+        binary_closed(&Planar::new(cx));
     }
 }
 
 #[test]
 fn ternary_on_small_universes() {
     for cx in [Complex::grid(2, 2), Complex::cross()] {
-        let u = Universe::new(cx);
-        let sets = if full() { u.sets(true) } else { u.sets(false) };
-        let kind = if full() {
-            "bounded and unbounded"
-        } else {
-            "bounded"
-        };
+        ternary_on(&Planar::new(cx));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3D: unions of unit cells (proofs/cells3.rs), axis-aligned and in general position
+
+/// The rotation of the general-position universes: the unit quaternion (4 + i + 2j + 3k)/√30,
+/// about the oblique axis (1, 2, 3) with cos θ = 1/15. Every entry of its matrix is non-zero
+/// (4, −20, 22; 28, 10, 4; −10, 20, 20, over 30), so no face, edge or normal of a rotated
+/// cell is parallel to a coordinate plane or axis.
+const ROTATION: [i64; 4] = [4, 1, 2, 3];
+
+// Test names contain `_3d_`: `cargo test --test proofs _3d_` runs the 3D proofs only.
+
+#[test]
+fn unary_3d_on_2x2x2() {
+    theorem_unary(&Spatial::new(Grid3::grid(2, 2, 2)));
+}
+
+/// Theorem U in general position: every set of the rotated 2×2×2 universe in the full run, of
+/// the rotated 2×2×1 universe in the quick subset.
+#[test]
+fn unary_3d_on_rotated() {
+    let g = if full() {
+        Grid3::grid(2, 2, 2)
+    } else {
+        Grid3::grid(2, 2, 1)
+    };
+    theorem_unary(&Spatial::new(g.rotated(ROTATION)));
+}
+
+/// Theorem B on the 2×2×2 universe: every ordered pair of its 256 bounded sets in the full run
+/// (of all 512 sets with `YINSET_PROOFS_3D_UNBOUNDED=1`); in the quick subset, every bounded
+/// set a against one partner b spread over the universe (a fixed permutation).
+///
+/// The full run takes hours: `YINSET_PROOFS_SLICE=k/n` runs only the pairs whose first
+/// operand is in the k-th of n equal blocks of the sets (k = 0..n), so that it can be run, and
+/// rerun, in pieces; the n slices together are every pair.
+#[test]
+fn binary_3d_on_2x2x2() {
+    let u = Spatial::new(Grid3::grid(2, 2, 2));
+    if full() {
+        match slice() {
+            None => binary_on(&u, 0, full_3d_unbounded()),
+            Some((k, n)) => {
+                let sets = u.sets(full_3d_unbounded());
+                let m = sets.len();
+                let firsts = &sets[k * m / n..(k + 1) * m / n];
+                let items: Vec<_> = firsts
+                    .iter()
+                    .flat_map(|&a| sets.iter().map(move |&b| (a, b)))
+                    .collect();
+                let name = format!(
+                    "{}, the ordered pairs of its {m} {} sets with a in slice {k} of {n} ({} × {m})",
+                    u.name(),
+                    if full_3d_unbounded() { "" } else { "bounded" },
+                    firsts.len()
+                );
+                theorem_binary(&u, items, &name);
+            }
+        }
+    } else {
+        let bounded = u.sets(false);
+        let n = bounded.len();
+        let items: Vec<_> = (0..n)
+            .map(|k| (bounded[k], bounded[(k * 167 + 89) % n]))
+            .collect();
+        let name = format!("{}, all {n} bounded sets × one partner each", u.name());
+        theorem_binary(&u, items, &name);
+    }
+}
+
+/// Theorem B on every ordered pair of a small universe with its unbounded sets: 2×2×1 cells
+/// in the full run, 2×1×1 in the quick subset.
+#[test]
+fn binary_3d_on_small() {
+    binary_closed(&Spatial::new(small_3d()));
+}
+
+/// Theorem B in general position: every ordered pair of the rotated small universe (2×2×1
+/// in the full run, 2×1×1 in the quick subset), bounded and unbounded.
+#[test]
+fn binary_3d_on_rotated() {
+    binary_closed(&Spatial::new(small_3d().rotated(ROTATION)));
+}
+
+/// Theorem T on every ordered triple of the 2×1×1 universe with its unbounded sets (the
+/// bounded ones in the quick subset), and in the full run also of the 2×2×1 bounded sets.
+#[test]
+fn ternary_3d_on_small() {
+    ternary_on(&Spatial::new(Grid3::grid(2, 1, 1)));
+    if full() {
+        let u = Spatial::new(Grid3::grid(2, 2, 1));
+        let sets = u.sets(false);
         let name = format!(
-            "{}, all {}³ ordered triples ({kind})",
-            u.cx.name,
+            "{}, all {}³ ordered triples (bounded)",
+            u.name(),
             sets.len()
         );
         theorem_ternary(&u, triples(&sets), &name);
     }
+}
+
+/// Theorem T in general position: every ordered triple of the rotated 2×1×1 universe with its
+/// unbounded sets (the bounded ones in the quick subset).
+#[test]
+fn ternary_3d_on_rotated() {
+    ternary_on(&Spatial::new(Grid3::grid(2, 1, 1).rotated(ROTATION)));
+}
+
+/// The small closed 3D universe: 2×2×1 cells in the full run, 2×1×1 in the quick subset.
+fn small_3d() -> Grid3 {
+    if full() {
+        Grid3::grid(2, 2, 1)
+    } else {
+        Grid3::grid(2, 1, 1)
+    }
+}
+
+/// `YINSET_PROOFS_SLICE=k/n` (k < n), if set.
+fn slice() -> Option<(usize, usize)> {
+    let v = std::env::var("YINSET_PROOFS_SLICE").ok()?;
+    let (k, n) = v.split_once('/')?;
+    let (k, n) = (k.parse().ok()?, n.parse().ok()?);
+    assert!(k < n, "YINSET_PROOFS_SLICE={v}: need k < n");
+    Some((k, n))
+}
+
+/// In the full run, whether the 2×2×2 binary proof takes the unbounded sets too (all 512²
+/// pairs instead of 256²): `YINSET_PROOFS_3D_UNBOUNDED=1`.
+fn full_3d_unbounded() -> bool {
+    std::env::var("YINSET_PROOFS_3D_UNBOUNDED").is_ok_and(|v| v == "1")
 }
 
 /// How often the universes' pairs are degenerate (measured on every 37th ordered pair of the
@@ -362,7 +639,7 @@ fn degenerate_cases_in_universes() {
             [0.9, 0.9, 0.05, 0.8, 0.1, 0.0, 0.0, 0.8, 0.0, 0.0, 0.0, 0.9],
         ),
     ] {
-        let u = Universe::new(cx);
+        let u = Planar::new(cx);
         let all = pairs(&u.sets(false));
         let mut stats = FeatureStats::default();
         for &(a, b) in all.iter().step_by(37) {
@@ -376,14 +653,125 @@ fn degenerate_cases_in_universes() {
     }
 }
 
+/// How often the 3D universe's bounded pairs are degenerate, counted from the masks over every
+/// ordered pair of the 2×2×2 universe's bounded sets, both empty (the rotated universe has
+/// the same combinatorics). See [`cells3::FEATURES3`].
+#[test]
+fn degenerate_cases_in_3d_universe() {
+    let g = Grid3::grid(2, 2, 2);
+    let sets: Vec<Cells> = g.all(false).into_iter().filter(|s| s.mask != 0).collect();
+    let bettis: Vec<_> = g.all(false).into_iter().map(|s| g.betti(s)).collect();
+    let betti = |s: Cells| bettis[s.mask as usize];
+    let mut counts = [0usize; 8];
+    let mut total = 0;
+    for &a in &sets {
+        for &b in &sets {
+            total += 1;
+            for (k, &x) in g.features(a, b, &betti).iter().enumerate() {
+                counts[k] += usize::from(x);
+            }
+        }
+    }
+    let shares: Vec<f64> = counts.iter().map(|&c| c as f64 / total as f64).collect();
+    eprintln!(
+        "degenerate features in the {total} ordered pairs of non-empty bounded sets of {}:",
+        g.name
+    );
+    for (k, name) in cells3::FEATURES3.iter().enumerate() {
+        eprintln!("  {:5.1} %  {name}", 100.0 * shares[k]);
+    }
+    let min = [0.85, 0.6, 0.6, 0.05, 0.5, 0.02, 0.3, 0.03];
+    for k in 0..8 {
+        assert!(
+            shares[k] >= min[k],
+            "{}: {:.3} < {}",
+            cells3::FEATURES3[k],
+            shares[k],
+            min[k]
+        );
+    }
+}
+
 #[test]
 fn universes_are_what_they_claim() {
     // Sanity of the universes themselves: sizes, piece counts and the oracle's closure.
     assert_eq!(Complex::grid(3, 3).len(), 9);
     assert_eq!(Complex::pinwheel().len(), 8);
     assert_eq!(Complex::cross().len(), 4);
-    let u = Universe::new(Complex::grid(2, 2));
+    let u = Planar::new(Complex::grid(2, 2));
     assert_eq!(u.expected.len(), 32);
     assert!(u.get(Cells::new(0, false)).is_empty());
     assert!(u.get(Cells::new(full_mask(4), true)).is_full());
+}
+
+#[test]
+fn universes_3d_are_what_they_claim() {
+    // Sizes, the extremes, and the cell oracle's Betti numbers on hand-computed sets of the
+    // 2×2×2 grid (cell bit i + 2j + 4k for [i,i+1]×[j,j+1]×[k,k+1]).
+    let g = Grid3::grid(2, 2, 2);
+    assert_eq!((g.len(), g.all(true).len()), (8, 512));
+    let bit = |c: [u64; 3]| 1u64 << (c[0] + 2 * c[1] + 4 * c[2]);
+    let mask = |cs: &[[u64; 3]]| cs.iter().map(|&c| bit(c)).fold(0, |m, b| m | b);
+    let b = |s: Cells| {
+        let e = g.betti(s);
+        (e.b0, e.b1, e.b2)
+    };
+    let bounded = |cs: &[[u64; 3]]| Cells::new(mask(cs), false);
+    let unbounded = |cs: &[[u64; 3]]| Cells::new(mask(cs), true);
+    assert_eq!(b(bounded(&[])), (0, 0, 0));
+    assert_eq!(b(unbounded(&[])), (1, 0, 1), "ℝ³ minus a closed cube ≃ S²");
+    assert_eq!(b(Cells::new(255, true)), (1, 0, 0), "ℝ³");
+    assert_eq!(b(bounded(&[[0, 0, 0]])), (1, 0, 0));
+    assert_eq!(b(Cells::new(255, false)), (1, 0, 0));
+    assert_eq!(b(Cells::new(255 & !1, false)), (1, 0, 0), "7 cells");
+    assert_eq!(
+        b(bounded(&[[0, 0, 0], [1, 1, 0]])),
+        (2, 0, 0),
+        "sharing an edge"
+    );
+    assert_eq!(
+        b(bounded(&[[0, 0, 0], [1, 1, 1]])),
+        (2, 0, 0),
+        "sharing a vertex"
+    );
+    // Six cells around the centre, face to face in a cycle, missing 010 and 101: a solid torus.
+    let ring = [
+        [0, 0, 0],
+        [1, 0, 0],
+        [1, 1, 0],
+        [1, 1, 1],
+        [0, 1, 1],
+        [0, 0, 1],
+    ];
+    assert_eq!(b(bounded(&ring)), (1, 1, 0), "a ring of six cells");
+    // Every closed cell of the 2×2×2 grid contains the centre, so a union of closed cells is
+    // star-shaped about it, hence contractible: an unbounded set has b1 = 0 by Alexander
+    // duality (the ring's complement and the exterior with two edge-sharing cells included),
+    // and b2 = 1 unless it is ℝ³.
+    assert_eq!(b(Cells::new(!mask(&ring) & 255, true)), (1, 0, 1));
+    assert_eq!(b(unbounded(&[[0, 0, 0], [1, 1, 0]])), (1, 0, 1));
+    assert_eq!(b(unbounded(&[[0, 0, 0]])), (1, 0, 1));
+    // The expected sets of the extremes, and the rotation: orthogonal, determinant 1, no zero
+    // entry (general position).
+    let u = Spatial::new(Grid3::grid(2, 1, 1).rotated(ROTATION));
+    assert!(u.get(Cells::new(0, false)).is_empty());
+    assert!(u.get(Cells::new(3, true)).is_full());
+    assert_eq!(
+        u.get(Cells::new(3, false)).volume(),
+        Some(Rational::from_i64(2))
+    );
+    let r = u.g.rotation().expect("rotated");
+    let zero = Rational::from_i64(0);
+    for i in 0..3 {
+        for j in 0..3 {
+            let dot = (0..3).fold(zero.clone(), |s, k| s + r[i][k].clone() * r[j][k].clone());
+            assert_eq!(dot, Rational::from_i64(i64::from(i == j)), "R Rᵀ = I");
+            assert_ne!(r[i][j], zero, "no entry of the rotation is 0");
+        }
+    }
+    let det = r[0][0].clone()
+        * (r[1][1].clone() * r[2][2].clone() - r[1][2].clone() * r[2][1].clone())
+        - r[0][1].clone() * (r[1][0].clone() * r[2][2].clone() - r[1][2].clone() * r[2][0].clone())
+        + r[0][2].clone() * (r[1][0].clone() * r[2][1].clone() - r[1][1].clone() * r[2][0].clone());
+    assert_eq!(det, Rational::from_i64(1));
 }

@@ -6,6 +6,7 @@
 mod common;
 use common::gen::{FeatureStats, Features, QPair, QTriple, Shape};
 use common::laws::{self, Tally};
+use common::runner::verdict;
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
 use std::sync::Mutex;
 
@@ -21,20 +22,6 @@ fn qc(n: u64) -> QuickCheck {
         .tests(n)
         .max_tests(4 * n)
         .rng(Gen::new(16))
-}
-
-/// Turn a law check into a quickcheck result, counting into `tally`.
-fn verdict(
-    tally: &Mutex<Tally>,
-    check: impl FnOnce(&mut Tally) -> Result<(), String>,
-) -> TestResult {
-    let mut t = Tally::default();
-    let r = check(&mut t);
-    tally.lock().unwrap().merge(&t);
-    match r {
-        Ok(()) => TestResult::passed(),
-        Err(e) => TestResult::error(e),
-    }
 }
 
 static UNARY: Mutex<Tally> = Mutex::new(Tally::new());

@@ -10,23 +10,35 @@
 //! * `construct`: each figure configuration as one curve list (valid and invalid ones).
 //! * `parse_yin2`, `parse_wkt`, `parse_geojson`: small texts in each format, the figures
 //!   written by the crate's writers, a panda curve, JTS WKT, small Martinez/GIS GeoJSON files.
+//! * `ops3` (target `ops3_exact`): the degenerate configurations of DESIGN-3D §3
+//!   (tests/yin3_degenerate.rs) as operand pairs on the lattice, axis-aligned and rotated.
+//! * `construct3`: those solids' meshes alone and two in one face list, invalid meshes (an open
+//!   box, a flipped face, crossing boxes, nested boxes of one orientation, bad faces), and the
+//!   small shared meshes of `../shared/data/3d` rounded onto the lattice.
+//! * `parse_obj`: the shared OBJ files of at most 8 KiB, the configurations written by
+//!   `write_obj`, and hand-written samples (every index form, n-gons, exact fractions, errors).
 //!
-//! The data is read in place from `../shared/data/2d` beside the repository.
+//! The data is read in place from `../shared/data/2d` and `../shared/data/3d` beside the
+//! repository.
 //! With `--check`, every seed is also run through its target's check (without libFuzzer), and
 //! the generator exits non-zero if any check fails.
 
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
-use yinset::io::{geojson, wkt, yin2_text, Polygon};
-use yinset::kernel::Point;
+use yinset::io::{geojson, obj, wkt, yin2_text, Polygon};
+use yinset::kernel::{Point, Point3};
 use yinset::num::{Float, Rational};
-use yinset_fuzz::check;
 use yinset_fuzz::input::{
     ConstructInput, OpsInput, Probe, Shape, COMPLEMENT, FILL_ONLY, GRID, MAX_CURVES, MAX_POINTS,
     NONZERO,
 };
+use yinset_fuzz::input3::{
+    Combine, Construct3Input, LatticePoint, Operand, Ops3Input, Probe3, Solid, LATTICE, MAX_FACES3,
+    MAX_VERTICES3, ROTATE,
+};
 use yinset_fuzz::text;
+use yinset_fuzz::{check, check3};
 
 type Ring = Vec<(u8, u8)>;
 
@@ -440,7 +452,405 @@ fn generate() -> Seeds {
             geojson::write_multipolygon(&polys),
         );
     }
+    generate3(&mut seeds);
     seeds
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3D: the degenerate configurations of DESIGN-3D §3 (tests/yin3_degenerate.rs) on the lattice,
+// and the small shared meshes of ../shared/data/3d
+
+fn lp(x: u8, y: u8, z: u8) -> LatticePoint {
+    LatticePoint::new(x, y, z)
+}
+
+fn cuboid(lo: [u8; 3], hi: [u8; 3]) -> Solid {
+    Solid::cuboid(lo, hi)
+}
+
+fn tetra(a: [u8; 3], b: [u8; 3], c: [u8; 3], d: [u8; 3]) -> Solid {
+    Solid::Tetra([a, b, c, d].map(|[x, y, z]| lp(x, y, z)))
+}
+
+/// The 2×2×2 cells (bit i + 2j + 4k) of a list, at the lattice origin moved by `offset`.
+fn cells(offset: [u8; 3], list: &[[u8; 3]]) -> Solid {
+    let mask = list
+        .iter()
+        .fold(0u8, |m, c| m | 1 << (c[0] + 2 * c[1] + 4 * c[2]));
+    Solid::Cells { offset, mask }
+}
+
+/// The box [0,4]³.
+fn big() -> Solid {
+    cuboid([0, 0, 0], [4, 4, 4])
+}
+
+/// Named 3D operand pairs: each degenerate configuration of DESIGN-3D §3.
+fn figure_pairs3() -> Vec<(&'static str, Operand, Operand)> {
+    let one = Operand::solid;
+    let c = || cuboid([0, 0, 0], [2, 2, 2]);
+    // A six-cell ring around the centre edge-free vertex (a solid torus), and four cubes meeting
+    // at one vertex pairwise along edges (the star vertex).
+    let ring = || {
+        cells(
+            [1, 1, 1],
+            &[
+                [0, 0, 0],
+                [1, 0, 0],
+                [1, 1, 0],
+                [1, 1, 1],
+                [0, 1, 1],
+                [0, 0, 1],
+            ],
+        )
+    };
+    let star = || cells([1, 1, 1], &[[0, 0, 0], [1, 1, 0], [1, 0, 1], [0, 1, 1]]);
+    vec![
+        (
+            "cubes_sharing_a_face",
+            one(c()),
+            one(cuboid([2, 0, 0], [4, 2, 2])),
+        ),
+        (
+            "cubes_sharing_an_edge",
+            one(c()),
+            one(cuboid([2, 2, 0], [4, 4, 2])),
+        ),
+        (
+            "cubes_sharing_a_vertex",
+            one(c()),
+            one(cuboid([2, 2, 2], [4, 4, 4])),
+        ),
+        (
+            "coplanar_overlap_same_orientation",
+            one(c()),
+            one(cuboid([1, 1, 0], [3, 3, 2])),
+        ),
+        (
+            "coplanar_overlap_opposite_orientation",
+            one(c()),
+            one(cuboid([1, 1, 2], [3, 3, 4])),
+        ),
+        (
+            "tetrahedron_base_in_face_outside",
+            one(cuboid([0, 0, 0], [4, 4, 2])),
+            one(tetra([1, 1, 2], [3, 1, 2], [1, 3, 2], [2, 2, 4])),
+        ),
+        (
+            "tetrahedron_base_in_face_inside",
+            one(cuboid([0, 0, 0], [4, 4, 2])),
+            one(tetra([1, 1, 2], [3, 1, 2], [1, 3, 2], [2, 2, 1])),
+        ),
+        (
+            "cavity_touching_wall_at_a_point",
+            Operand::two(
+                Combine::Minus,
+                big(),
+                tetra([1, 1, 2], [3, 1, 2], [1, 3, 2], [2, 2, 0]),
+            ),
+            one(cuboid([1, 1, 0], [3, 3, 1])),
+        ),
+        (
+            "cavity_edge_on_wall",
+            Operand::two(
+                Combine::Minus,
+                big(),
+                tetra([1, 0, 1], [3, 0, 1], [2, 2, 2], [2, 1, 3]),
+            ),
+            one(tetra([1, 0, 1], [3, 0, 1], [2, 2, 2], [2, 1, 0])),
+        ),
+        (
+            "dent_from_box_on_floor",
+            Operand::two(
+                Combine::Minus,
+                cuboid([0, 0, 0], [4, 4, 2]),
+                cuboid([1, 1, 1], [3, 3, 2]),
+            ),
+            one(cuboid([1, 1, 1], [3, 3, 3])),
+        ),
+        (
+            "ring_vs_centre_bar",
+            one(ring()),
+            one(cuboid([0, 2, 2], [4, 3, 3])),
+        ),
+        (
+            "ring_vs_its_complement",
+            one(ring()),
+            one(ring()).complemented(),
+        ),
+        (
+            "star_vertex_vs_box",
+            one(star()),
+            one(cuboid([2, 2, 2], [3, 3, 4])),
+        ),
+        ("star_vertex_vs_ring", one(star()), one(ring())),
+        (
+            "prism_edge_on_cube_face",
+            one(c()),
+            one(tetra([0, 1, 2], [2, 1, 2], [1, 0, 4], [1, 3, 4])),
+        ),
+        (
+            "vertex_on_face",
+            one(c()),
+            one(tetra([1, 1, 2], [0, 0, 4], [4, 0, 4], [0, 4, 4])),
+        ),
+        (
+            "unbounded_operands",
+            one(c()).complemented(),
+            one(cuboid([1, 1, 1], [3, 3, 3])).complemented(),
+        ),
+        ("identical", one(ring()), one(ring())),
+        ("set_and_complement", one(c()), one(c()).complemented()),
+        ("empty_vs_box", one(Solid::None), one(c())),
+        ("full_vs_box", one(Solid::None).complemented(), one(c())),
+        (
+            "nested_boxes",
+            Operand::two(Combine::Minus, big(), cuboid([1, 1, 1], [3, 3, 3])),
+            one(cuboid([1, 1, 1], [3, 3, 3])),
+        ),
+        (
+            "tetrahedra_sharing_an_edge",
+            one(tetra([0, 0, 0], [4, 0, 0], [2, 4, 0], [2, 2, 4])),
+            one(tetra([0, 0, 0], [4, 0, 0], [2, 0, 4], [2, 4, 2])),
+        ),
+    ]
+}
+
+/// Probes spread over the lattice.
+fn probes3() -> Vec<Probe3> {
+    [
+        [1, 1, 1],
+        [2, 2, 2],
+        [2, 3, 1],
+        [3, 3, 3],
+        [4, 1, 2],
+        [1, 4, 4],
+        [0, 0, 0],
+        [3, 2, 4],
+    ]
+    .into_iter()
+    .map(Probe3)
+    .collect()
+}
+
+/// A mesh on the lattice: points and faces.
+type LatticeMesh = (Vec<[u8; 3]>, Vec<Vec<usize>>);
+
+/// A solid's mesh on the lattice (its doubled coordinates halved).
+fn lattice_mesh(s: &Solid) -> Option<LatticeMesh> {
+    let (pts, faces) = check3::solid_mesh(s)?;
+    let pts = pts.iter().map(|p| p.map(|c| (c / 2) as u8)).collect();
+    Some((pts, faces))
+}
+
+/// Several meshes as one face list.
+fn combine3(parts: &[LatticeMesh]) -> Construct3Input {
+    let mut input = Construct3Input::default();
+    for (pts, faces) in parts {
+        let off = input.vertices.len();
+        input
+            .vertices
+            .extend(pts.iter().map(|&[x, y, z]| lp(x, y, z)));
+        input.faces.extend(
+            faces
+                .iter()
+                .map(|f| f.iter().map(|&i| (i + off) as u8).collect()),
+        );
+    }
+    input
+}
+
+/// The shared 3D meshes small enough for the parser's and the constructor's seeds.
+fn small_meshes3() -> Vec<(String, String)> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/3d");
+    let mut names: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))
+        .map(|e| e.expect("directory entry").path())
+        .filter(|p| {
+            std::fs::metadata(p)
+                .map(|m| m.len() <= 8192)
+                .unwrap_or(false)
+        })
+        .collect();
+    names.sort();
+    names
+        .into_iter()
+        .map(|p| {
+            (
+                p.file_stem().unwrap().to_string_lossy().into_owned(),
+                read(&p),
+            )
+        })
+        .collect()
+}
+
+/// A mesh read from OBJ, scaled into the lattice and rounded (the topology may change: any
+/// lattice mesh is a good seed); `None` if too large for the input format.
+fn to_lattice(text: &str) -> Option<Construct3Input> {
+    let m = obj::read_obj::<Float>(text).expect("shared mesh reads");
+    if m.vertices.len() > MAX_VERTICES3 || m.faces.len() > MAX_FACES3 {
+        return None;
+    }
+    let f: Vec<[f64; 3]> = m.vertices.iter().map(|p| p.to_f64()).collect();
+    let lo = [0, 1, 2].map(|k| f.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min));
+    let hi = [0, 1, 2].map(|k| f.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max));
+    let span = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+    let top = f64::from(LATTICE - 1);
+    let map = |p: &[f64; 3]| {
+        let c = [0, 1, 2].map(|k| ((p[k] - lo[k]) * top / span).round().clamp(0.0, top) as u8);
+        lp(c[0], c[1], c[2])
+    };
+    let faces: Vec<Vec<u8>> = m
+        .faces
+        .iter()
+        .filter(|f| f.len() <= 6)
+        .map(|f| f.iter().map(|&i| i as u8).collect())
+        .collect();
+    Some(Construct3Input {
+        vertices: f.iter().map(map).collect(),
+        faces,
+    })
+}
+
+/// OBJ text of a solid: its faces fanned into triangles.
+fn solid_obj(name: &str, s: &Solid, rotate: bool) -> Option<String> {
+    let (pts, faces) = check3::solid_mesh(s)?;
+    let v: Vec<Point3<Rational>> = pts
+        .iter()
+        .map(|p| {
+            let h = |c: i64| Rational::new(c.into(), 2.into());
+            let q = Point3::new(h(p[0]), h(p[1]), h(p[2]));
+            if rotate {
+                // A rational rotation about z by the Pythagorean angle cos = 3/5 (exact p/q
+                // coordinates in the text).
+                let f = |a: i64, b: i64| Rational::new(a.into(), b.into());
+                Point3::new(
+                    f(3, 5) * q.x.clone() - f(4, 5) * q.y.clone(),
+                    f(4, 5) * q.x.clone() + f(3, 5) * q.y.clone(),
+                    q.z.clone(),
+                )
+            } else {
+                q
+            }
+        })
+        .collect();
+    let tris: Vec<[usize; 3]> = faces
+        .iter()
+        .flat_map(|f| (1..f.len() - 1).map(move |k| [f[0], f[k], f[k + 1]]))
+        .collect();
+    Some(obj::write_obj(&v, &[(name.to_string(), tris)]))
+}
+
+fn generate3(seeds: &mut Seeds) {
+    for (name, a, b) in figure_pairs3() {
+        for flags in [0, ROTATE] {
+            let input = Ops3Input {
+                flags,
+                a: a.clone(),
+                b: b.clone(),
+                probes: probes3(),
+            };
+            let suffix = if flags == ROTATE { "_rotated" } else { "" };
+            seeds.add("ops3", format!("fig_{name}{suffix}"), input.encode());
+        }
+        // The constructor: each operand's solids, and both first solids as one face list.
+        let meshes: Vec<_> = [&a.first, &a.second, &b.first]
+            .into_iter()
+            .filter_map(lattice_mesh)
+            .collect();
+        if let Some(m) = meshes.first() {
+            seeds.add(
+                "construct3",
+                format!("fig_{name}_a"),
+                combine3(std::slice::from_ref(m)).encode(),
+            );
+        }
+        if meshes.len() >= 2 {
+            let both = combine3(&meshes[..2]);
+            if both.vertices.len() <= MAX_VERTICES3 && both.faces.len() <= MAX_FACES3 {
+                seeds.add("construct3", format!("fig_{name}_together"), both.encode());
+            }
+        }
+        if let Some(text) = solid_obj(name, &a.first, false) {
+            seeds.add("parse_obj", format!("fig_{name}"), text);
+        }
+    }
+    // Invalid meshes the constructor must reject (tests/yin3_degenerate.rs, errors).
+    let cube = lattice_mesh(&cuboid([0, 0, 0], [2, 2, 2])).expect("a cube");
+    let mut open = cube.clone();
+    open.1.pop();
+    let mut flipped = cube.clone();
+    flipped.1[0].reverse();
+    let inner = lattice_mesh(&cuboid([1, 1, 1], [3, 3, 3])).expect("a cube");
+    let outer = lattice_mesh(&big()).expect("a cube");
+    let mut bad_face = cube.clone();
+    bad_face.1.push(vec![0, 1, 1]);
+    for (name, input) in [
+        ("open_box", combine3(&[open])),
+        ("flipped_face", combine3(&[flipped])),
+        ("crossing_boxes", combine3(&[cube.clone(), inner.clone()])),
+        (
+            "nested_same_orientation",
+            combine3(&[outer, lattice_mesh(&cuboid([1, 1, 1], [2, 2, 2])).unwrap()]),
+        ),
+        ("repeated_vertex", combine3(&[bad_face])),
+        (
+            "out_of_range",
+            Construct3Input {
+                vertices: vec![lp(0, 0, 0), lp(1, 0, 0), lp(0, 1, 0)],
+                faces: vec![vec![0, 1, 3]],
+            },
+        ),
+        (
+            "non_planar_quad",
+            Construct3Input {
+                vertices: vec![lp(0, 0, 0), lp(2, 0, 0), lp(2, 2, 0), lp(0, 2, 1)],
+                faces: vec![vec![0, 1, 2, 3], vec![3, 2, 1, 0]],
+            },
+        ),
+    ] {
+        seeds.add("construct3", format!("err_{name}"), input.encode());
+    }
+    // The reversed cube (an unbounded set) and a hexagonal face.
+    let mut reversed = cube;
+    for f in &mut reversed.1 {
+        f.reverse();
+    }
+    seeds.add(
+        "construct3",
+        "reversed_cube",
+        combine3(&[reversed]).encode(),
+    );
+    // Shared meshes: read as text by the parser, and on the lattice for the constructor.
+    for (name, text) in small_meshes3() {
+        if let Some(input) = to_lattice(&text) {
+            seeds.add("construct3", format!("data_{name}"), input.encode());
+        }
+        seeds.add("parse_obj", format!("data_{name}"), text);
+    }
+    seeds.add(
+        "parse_obj",
+        "sample",
+        "# a tetrahedron with exact coordinates\r\nv 0 0 0\nv 1 0 0 1\nv 0 1 0\nv 0 0 1/3\n\
+         vt 0 0\nvn 0 0 1\no tetrahedron\ng g\ns off\nf 1 3 2\nf 1/1 2/1 4/1\nf -3//1 -2//1 -1//1\n\
+         f 3/1/1 1/1/1 4/1/1\nusemtl x\n",
+    );
+    seeds.add(
+        "parse_obj",
+        "rotated_box",
+        solid_obj("rotated", &cuboid([0, 0, 0], [1, 2, 3]), true).expect("a box"),
+    );
+    seeds.add(
+        "parse_obj",
+        "quads_and_pentagon",
+        "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 3 0\nv 0 2 0\nv 0 0 2\nv 2 0 2\nv 2 2 2\nv 1 3 2\nv 0 2 2\n\
+         f 1 5 4 3 2\nf 6 7 8 9 10\nf 1 2 7 6\nf 2 3 8 7\nf 3 4 9 8\nf 4 5 10 9\nf 5 1 6 10\n",
+    );
+    seeds.add(
+        "parse_obj",
+        "errors",
+        "v 0 0 0\nv 1 x 0\nv 1 2 3 4\nv 1 2 3 1 9\nf 1 2\nf 1 2 0\nf 1 2 7\nf 1/0 2 3\nf 1/2/3/4 2 3\nv 1e99999 0 0\n",
+    );
 }
 
 /// Run one seed through its target's check; the panic message if it fails.
@@ -457,6 +867,9 @@ fn replay(corpus: &str, bytes: &[u8]) -> Result<(), String> {
         "parse_yin2" => text::yin2(&text::text_of(bytes)),
         "parse_wkt" => text::wkt(&text::text_of(bytes)),
         "parse_geojson" => text::geojson(&text::text_of(bytes)),
+        "ops3" => check3::ops3_exact(&yinset_fuzz::input::decode(bytes).expect("decodes")),
+        "construct3" => check3::construct3(&yinset_fuzz::input::decode(bytes).expect("decodes")),
+        "parse_obj" => check3::obj(&text::text_of(bytes)),
         other => panic!("unknown corpus {other}"),
     }));
     result.map_err(|e| {

@@ -5,7 +5,8 @@
 //! cargo run --manifest-path fuzz/Cargo.toml --example replay -- TARGET FILE...
 //! ```
 use yinset_fuzz::input::{decode, ConstructInput, OpsInput};
-use yinset_fuzz::{check, text};
+use yinset_fuzz::input3::{Construct3Input, Ops3Input};
+use yinset_fuzz::{check, check3, text};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -34,6 +35,17 @@ fn main() {
             "parse_yin2" => text::yin2(&text::text_of(&data)),
             "parse_wkt" => text::wkt(&text::text_of(&data)),
             "parse_geojson" => text::geojson(&text::text_of(&data)),
+            "ops3_exact" => {
+                let input: Ops3Input = decode(&data).expect("decodes");
+                eprintln!("{input:?}");
+                check3::ops3_exact(&input);
+            }
+            "construct3" => {
+                let input: Construct3Input = decode(&data).expect("decodes");
+                eprintln!("{input:?}");
+                check3::construct3(&input);
+            }
+            "parse_obj" => check3::obj(&text::text_of(&data)),
             other => panic!("unknown target {other}"),
         }
         eprintln!("ok");

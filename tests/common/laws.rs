@@ -1,6 +1,7 @@
 //! The Boolean-algebra laws, checked exactly with `==` on Yin sets (seed 000 Thm 4.11), with
 //! every kernel output passed through the exact validator. Shared by the proptest and
-//! quickcheck suites and by proofs/.
+//! quickcheck suites (2D and 3D) and by proofs/: the laws are written once, generically over
+//! [`Algebra`], which both `YinSet2` and `YinSet3` implement.
 //!
 //! Each check counts itself in a [`Tally`] under the law's name, so that suites can report how
 //! many cases of each law they checked.
@@ -8,9 +9,161 @@
 use super::cells::{Cells, Complex};
 use super::Y;
 use std::collections::BTreeMap;
-use yinset::kernel::Point;
+use std::fmt::{Debug, Display};
+use yinset::kernel::{Point, Point3};
 use yinset::num::Rational;
 use yinset::yin2::{Location, YinSet2};
+use yinset::yin3::YinSet3;
+
+/// What the laws need of a Yin space: the Boolean operations, the exact validator, the measure
+/// (area or volume) and point location.
+pub trait Algebra: Clone + PartialEq + Debug {
+    /// A point of the space.
+    type Pt: Clone + Display;
+    /// The names of the two measure identities checked by [`binary`].
+    const MEASURE_LAWS: [&'static str; 2];
+    fn zero() -> Self;
+    fn one() -> Self;
+    fn meet(&self, o: &Self) -> Self;
+    fn join(&self, o: &Self) -> Self;
+    fn complement(&self) -> Self;
+    fn difference(&self, o: &Self) -> Self;
+    fn symmetric_difference(&self, o: &Self) -> Self;
+    /// The order, decided otherwise than by `a∧b == a` where the space allows it;
+    /// `difference` is `self ∖ o`, already computed and validated.
+    fn is_subset(&self, o: &Self, difference: &Self) -> bool;
+    /// The public exact validator.
+    fn check(&self) -> Result<(), String>;
+    /// Area or volume; `None` if unbounded.
+    fn measure(&self) -> Option<Rational>;
+    fn locate(&self, pts: &[Self::Pt]) -> Vec<Location>;
+    /// A readable description for failure messages.
+    fn show(&self) -> String;
+}
+
+impl Algebra for Y {
+    type Pt = Point<Rational>;
+    const MEASURE_LAWS: [&'static str; 2] = [
+        "area: |a∧b| + |a∨b| = |a| + |b|",
+        "area: |a∖b| = |a| − |a∧b|",
+    ];
+    fn zero() -> Y {
+        YinSet2::empty()
+    }
+    fn one() -> Y {
+        YinSet2::full()
+    }
+    fn meet(&self, o: &Y) -> Y {
+        YinSet2::meet(self, o)
+    }
+    fn join(&self, o: &Y) -> Y {
+        YinSet2::join(self, o)
+    }
+    fn complement(&self) -> Y {
+        YinSet2::complement(self)
+    }
+    fn difference(&self, o: &Y) -> Y {
+        YinSet2::difference(self, o)
+    }
+    fn symmetric_difference(&self, o: &Y) -> Y {
+        YinSet2::symmetric_difference(self, o)
+    }
+    fn is_subset(&self, o: &Y, _difference: &Y) -> bool {
+        YinSet2::is_subset(self, o)
+    }
+    fn check(&self) -> Result<(), String> {
+        self.validate().map_err(|e| e.to_string())
+    }
+    fn measure(&self) -> Option<Rational> {
+        self.area()
+    }
+    fn locate(&self, pts: &[Point<Rational>]) -> Vec<Location> {
+        YinSet2::locate(self, pts)
+    }
+    fn show(&self) -> String {
+        if self.is_empty() {
+            return "0̂".into();
+        }
+        if self.is_full() {
+            return "1̂".into();
+        }
+        let curves: Vec<String> = self
+            .curves()
+            .iter()
+            .map(|c| {
+                let v: Vec<String> = c.vertices().iter().map(|p| p.to_string()).collect();
+                format!("[{}]", v.join(" "))
+            })
+            .collect();
+        format!("{{{}}}", curves.join(", "))
+    }
+}
+
+type Y3 = YinSet3<Rational>;
+
+impl Algebra for Y3 {
+    type Pt = Point3<Rational>;
+    const MEASURE_LAWS: [&'static str; 2] = [
+        "volume: |a∧b| + |a∨b| = |a| + |b|",
+        "volume: |a∖b| = |a| − |a∧b|",
+    ];
+    fn zero() -> Y3 {
+        YinSet3::empty()
+    }
+    fn one() -> Y3 {
+        YinSet3::full()
+    }
+    fn meet(&self, o: &Y3) -> Y3 {
+        YinSet3::meet(self, o)
+    }
+    fn join(&self, o: &Y3) -> Y3 {
+        YinSet3::join(self, o)
+    }
+    fn complement(&self) -> Y3 {
+        YinSet3::complement(self)
+    }
+    fn difference(&self, o: &Y3) -> Y3 {
+        YinSet3::difference(self, o)
+    }
+    fn symmetric_difference(&self, o: &Y3) -> Y3 {
+        YinSet3::symmetric_difference(self, o)
+    }
+    /// a ≤ b iff a∖b = a∧b' = 0̂ (the kernel's `is_subset` is `a∧b == a`, which the order
+    /// law compares against already).
+    fn is_subset(&self, _o: &Y3, difference: &Y3) -> bool {
+        difference.is_empty()
+    }
+    fn check(&self) -> Result<(), String> {
+        self.validate().map_err(|e| e.to_string())
+    }
+    fn measure(&self) -> Option<Rational> {
+        self.volume()
+    }
+    fn locate(&self, pts: &[Point3<Rational>]) -> Vec<Location> {
+        YinSet3::locate(self, pts)
+    }
+    /// 0̂, 1̂, or the boundary's triangles (outward normals) and whether it is bounded.
+    fn show(&self) -> String {
+        if self.is_empty() {
+            return "0̂".into();
+        }
+        if self.is_full() {
+            return "1̂".into();
+        }
+        let v = self.vertices();
+        let tris: Vec<String> = self
+            .triangles()
+            .iter()
+            .map(|t| format!("[{} {} {}]", v[t[0]], v[t[1]], v[t[2]]))
+            .collect();
+        let kind = if self.is_bounded() {
+            "bounded"
+        } else {
+            "unbounded"
+        };
+        format!("{{{kind}; {}}}", tris.join(", "))
+    }
+}
 
 /// The first failure, described.
 pub type Res = Result<(), String>;
@@ -48,15 +201,15 @@ impl Tally {
 }
 
 /// Validate a kernel output (seed 000 Def. 3.17, Thm 3.21) and pass it on.
-pub fn ok(y: Y, what: &str) -> Result<Y, String> {
-    y.validate()
+pub fn ok<A: Algebra>(y: A, what: &str) -> Result<A, String> {
+    y.check()
         .map_err(|e| format!("the validator rejects {what}: {e}\n{y:?}"))?;
     Ok(y)
 }
 
 /// Validate an input (e.g. a generated set, itself a kernel output).
-pub fn valid_input(y: &Y, what: &str) -> Res {
-    y.validate()
+pub fn valid_input<A: Algebra>(y: &A, what: &str) -> Res {
+    y.check()
         .map_err(|e| format!("the validator rejects the input {what}: {e}\n{y:?}"))
 }
 
@@ -70,25 +223,11 @@ pub fn law(t: &mut Tally, name: &'static str, holds: bool, detail: impl FnOnce()
     }
 }
 
-fn show(y: &Y) -> String {
-    if y.is_empty() {
-        return "0̂".into();
-    }
-    if y.is_full() {
-        return "1̂".into();
-    }
-    let curves: Vec<String> = y
-        .curves()
-        .iter()
-        .map(|c| {
-            let v: Vec<String> = c.vertices().iter().map(|p| p.to_string()).collect();
-            format!("[{}]", v.join(" "))
-        })
-        .collect();
-    format!("{{{}}}", curves.join(", "))
+fn show<A: Algebra>(y: &A) -> String {
+    y.show()
 }
 
-fn neq(l: &Y, r: &Y) -> String {
+fn neq<A: Algebra>(l: &A, r: &A) -> String {
     format!("\n  left  = {}\n  right = {}", show(l), show(r))
 }
 
@@ -105,11 +244,11 @@ pub const UNARY_LAWS: [&str; 9] = [
 ];
 
 /// Idempotence, identity, annihilator, complement and involution laws for one set.
-pub fn unary(t: &mut Tally, a: &Y) -> Res {
+pub fn unary<A: Algebra>(t: &mut Tally, a: &A) -> Res {
     valid_input(a, "a")?;
-    let (zero, one): (Y, Y) = (YinSet2::empty(), YinSet2::full());
+    let (zero, one) = (A::zero(), A::one());
     let na = ok(a.complement(), "a'")?;
-    let cases: [(usize, Y, &Y); 9] = [
+    let cases: [(usize, A, &A); 9] = [
         (0, ok(a.meet(a), "a∧a")?, a),
         (1, ok(a.join(a), "a∨a")?, a),
         (2, ok(a.meet(&one), "a∧1̂")?, a),
@@ -128,7 +267,9 @@ pub fn unary(t: &mut Tally, a: &Y) -> Res {
     Ok(())
 }
 
-pub const BINARY_LAWS: [&str; 9] = [
+/// The binary laws; [`binary`] also checks the two measure identities
+/// [`Algebra::MEASURE_LAWS`].
+pub const BINARY_LAWS: [&str; 7] = [
     "commutativity: a∧b = b∧a",
     "commutativity: a∨b = b∨a",
     "absorption: a∧(a∨b) = a",
@@ -136,29 +277,27 @@ pub const BINARY_LAWS: [&str; 9] = [
     "De Morgan: (a∧b)' = a'∨b'",
     "De Morgan: (a∨b)' = a'∧b'",
     "order: a∧b = a ⇔ a∨b = b",
-    "area: |a∧b| + |a∨b| = |a| + |b|",
-    "area: |a∖b| = |a| − |a∧b|",
 ];
 
 /// The results of one binary case, for further oracles.
-pub struct BinaryOut {
-    pub meet: Y,
-    pub join: Y,
-    pub difference: Y,
-    pub symmetric_difference: Y,
-    pub complement_a: Y,
+pub struct BinaryOut<A> {
+    pub meet: A,
+    pub join: A,
+    pub difference: A,
+    pub symmetric_difference: A,
+    pub complement_a: A,
 }
 
-/// Commutativity, absorption, De Morgan, the order, and the exact area identities (for bounded
-/// a and b) for one ordered pair.
-pub fn binary(t: &mut Tally, a: &Y, b: &Y) -> Result<BinaryOut, String> {
+/// Commutativity, absorption, De Morgan, the order, and the exact measure identities (for
+/// bounded a and b) for one ordered pair.
+pub fn binary<A: Algebra>(t: &mut Tally, a: &A, b: &A) -> Result<BinaryOut<A>, String> {
     let ab = || format!("a = {}, b = {}", show(a), show(b));
     valid_input(a, "a")?;
     valid_input(b, "b")?;
     let m = ok(a.meet(b), "a∧b")?;
     let j = ok(a.join(b), "a∨b")?;
     let (na, nb) = (ok(a.complement(), "a'")?, ok(b.complement(), "b'")?);
-    let cases: [(usize, Y, Y); 6] = [
+    let cases: [(usize, A, A); 6] = [
         (0, m.clone(), ok(b.meet(a), "b∧a")?),
         (1, j.clone(), ok(b.join(a), "b∨a")?),
         (2, ok(a.meet(&j), "a∧(a∨b)")?, a.clone()),
@@ -171,25 +310,25 @@ pub fn binary(t: &mut Tally, a: &Y, b: &Y) -> Result<BinaryOut, String> {
             format!("{}{}", ab(), neq(l, r))
         })?;
     }
+    let d = ok(a.difference(b), "a∖b")?;
     let le_meet = m == *a;
     law(
         t,
         BINARY_LAWS[6],
-        le_meet == (j == *b) && le_meet == a.is_subset(b),
+        le_meet == (j == *b) && le_meet == a.is_subset(b, &d),
         || format!("{}: a∧b = a is {le_meet}, a∨b = b is {}", ab(), j == *b),
     )?;
-    let d = ok(a.difference(b), "a∖b")?;
-    if let (Some(x), Some(y)) = (a.area(), b.area()) {
-        let (am, aj, ad) = (m.area(), j.area(), d.area());
+    if let (Some(x), Some(y)) = (a.measure(), b.measure()) {
+        let (am, aj, ad) = (m.measure(), j.measure(), d.measure());
         law(
             t,
-            BINARY_LAWS[7],
+            A::MEASURE_LAWS[0],
             matches!((&am, &aj), (Some(p), Some(q)) if p.clone() + q.clone() == x.clone() + y),
             || format!("{}: |a∧b| = {am:?}, |a∨b| = {aj:?}", ab()),
         )?;
         law(
             t,
-            BINARY_LAWS[8],
+            A::MEASURE_LAWS[1],
             matches!((&ad, &am), (Some(p), Some(q)) if p.clone() == x - q.clone()),
             || format!("{}: |a∖b| = {ad:?}, |a∧b| = {am:?}", ab()),
         )?;
@@ -212,7 +351,7 @@ pub const TERNARY_LAWS: [&str; 4] = [
 ];
 
 /// Associativity and both distributive laws for one ordered triple.
-pub fn ternary(t: &mut Tally, a: &Y, b: &Y, c: &Y) -> Res {
+pub fn ternary<A: Algebra>(t: &mut Tally, a: &A, b: &A, c: &A) -> Res {
     let abc = || format!("a = {}, b = {}, c = {}", show(a), show(b), show(c));
     for (y, what) in [(a, "a"), (b, "b"), (c, "c")] {
         valid_input(y, what)?;
@@ -220,7 +359,7 @@ pub fn ternary(t: &mut Tally, a: &Y, b: &Y, c: &Y) -> Res {
     let (ab_m, ab_j) = (ok(a.meet(b), "a∧b")?, ok(a.join(b), "a∨b")?);
     let (bc_m, bc_j) = (ok(b.meet(c), "b∧c")?, ok(b.join(c), "b∨c")?);
     let (ac_m, ac_j) = (ok(a.meet(c), "a∧c")?, ok(a.join(c), "a∨c")?);
-    let cases: [(usize, Y, Y); 4] = [
+    let cases: [(usize, A, A); 4] = [
         (
             0,
             ok(ab_m.meet(c), "(a∧b)∧c")?,
@@ -270,10 +409,16 @@ pub const MEMBERSHIP: &str = "membership: locate(p, a op b) = locate(p, a) op lo
 /// The point-membership oracle: for every point off ∂a and ∂b, the location in a∧b, a∨b,
 /// a∖b, a⊕b and a' is the Boolean combination of the locations in a and b, and never on the
 /// boundary. Counts one case per point and operation.
-pub fn membership(t: &mut Tally, a: &Y, b: &Y, out: &BinaryOut, pts: &[Point<Rational>]) -> Res {
+pub fn membership<A: Algebra>(
+    t: &mut Tally,
+    a: &A,
+    b: &A,
+    out: &BinaryOut<A>,
+    pts: &[A::Pt],
+) -> Res {
     let (la, lb) = (a.locate(pts), b.locate(pts));
     type Op = fn(bool, bool) -> bool;
-    let ops: [(&str, &Y, Op); 5] = [
+    let ops: [(&str, &A, Op); 5] = [
         ("∧", &out.meet, |p, q| p && q),
         ("∨", &out.join, |p, q| p || q),
         ("∖", &out.difference, |p, q| p && !q),
@@ -360,7 +505,7 @@ pub fn cells_binary(
     t: &mut Tally,
     cx: &Complex,
     (a, b): (Cells, Cells),
-    out: &BinaryOut,
+    out: &BinaryOut<Y>,
     expected: &dyn Fn(Cells) -> Y,
 ) -> Res {
     let n = cx.len();

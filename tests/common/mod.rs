@@ -72,6 +72,8 @@ pub fn valid(y: &Y) -> &Y {
 }
 
 pub mod cells;
+pub mod cells3;
 pub mod gen;
+pub mod gen3;
 pub mod laws;
 pub mod runner;
