@@ -1,5 +1,5 @@
-//! The default exact backend: `num-rational`'s big rationals, compared through a
-//! floating-point filter.
+//! The default exact backend: rationals stored inline as two machine integers while they fit,
+//! as `num-rational`'s big rationals otherwise, compared through a floating-point filter.
 
 use super::{
     exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError,
@@ -8,66 +8,147 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// Exact rational coordinates (the default backend): a `num-rational` big rational, always in
-/// lowest terms with a positive denominator. Its order is decided from `f64` approximations
-/// when they are far enough apart, exactly (by cross-multiplying) otherwise; `num-rational`'s
-/// own order expands continued fractions, and dominated exact-mode profiles.
-#[derive(Clone, PartialEq, Eq, Hash, Default)]
-pub struct Rational(BigRational);
+/// Exact rational coordinates (the default backend), always in lowest terms with a positive
+/// denominator. A value whose numerator and denominator are below 2⁶² in magnitude is stored
+/// as two `i64` and computed in `i128` without allocating (lattice coordinates, decimals of a
+/// few digits and most of what is computed from them); any other value is a `num-rational`
+/// big rational. The choice is canonical (a value is small iff it fits), so the derived `==`
+/// and `Hash` are those of the value. Two small values are ordered exactly in `i128`; big
+/// ones from `f64` approximations when they are far enough apart, exactly (by
+/// cross-multiplying) otherwise (`num-rational`'s own order expands continued fractions and
+/// dominated exact-mode profiles).
+#[derive(Clone, PartialEq, Eq, Hash)]
+pub struct Rational(Repr);
+
+/// The two representations of a [`Rational`].
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum Repr {
+    /// `n / d` with |n| < 2⁶² and 0 < d < 2⁶², in lowest terms.
+    Small(i64, i64),
+    /// Any other value, in lowest terms.
+    Big(BigRational),
+}
+
+/// Exclusive bound on |numerator| and denominator of a small value: a sum of two products of
+/// small values stays below 2¹²⁵, inside `i128`.
+const LIMIT: i128 = 1 << 62;
+
+/// `n / d`, already in lowest terms with `d > 0`: small if it fits.
+fn lowest(n: i128, d: i128) -> Rational {
+    if -LIMIT < n && n < LIMIT && d < LIMIT {
+        Rational(Repr::Small(n as i64, d as i64))
+    } else {
+        Rational(Repr::Big(BigRational::new_raw(n.into(), d.into())))
+    }
+}
+
+/// `n / d` for `d > 0`, reduced to lowest terms.
+fn reduce(n: i128, d: i128) -> Rational {
+    if d == 1 {
+        return lowest(n, 1);
+    }
+    let g = n.unsigned_abs().gcd(&d.unsigned_abs()) as i128;
+    lowest(n / g, d / g)
+}
+
+/// A big rational in lowest terms, stored small if it fits.
+fn from_big(r: BigRational) -> Rational {
+    match (r.numer().to_i128(), r.denom().to_i128()) {
+        (Some(n), Some(d)) => lowest(n, d),
+        _ => Rational(Repr::Big(r)),
+    }
+}
 
 impl Rational {
     /// `numer / denom` in lowest terms (panics if `denom` is zero, like `num-rational`).
     pub fn new(numer: BigInt, denom: BigInt) -> Rational {
-        Rational(BigRational::new(numer, denom))
+        from_big(BigRational::new(numer, denom))
     }
 
     /// The integer `n`.
     pub fn from_integer(n: BigInt) -> Rational {
-        Rational(BigRational::from_integer(n))
+        from_big(BigRational::from_integer(n))
     }
 
     /// The exact value of a finite `f64` (`None` for NaN and infinities).
     pub fn from_float(v: f64) -> Option<Rational> {
-        BigRational::from_float(v).map(Rational)
+        BigRational::from_float(v).map(from_big)
     }
 
     /// The numerator (lowest terms; carries the sign).
-    pub fn numer(&self) -> &BigInt {
-        self.0.numer()
+    pub fn numer(&self) -> BigInt {
+        match &self.0 {
+            Repr::Small(n, _) => BigInt::from(*n),
+            Repr::Big(r) => r.numer().clone(),
+        }
     }
 
     /// The denominator (lowest terms; positive).
-    pub fn denom(&self) -> &BigInt {
-        self.0.denom()
+    pub fn denom(&self) -> BigInt {
+        match &self.0 {
+            Repr::Small(_, d) => BigInt::from(*d),
+            Repr::Big(r) => r.denom().clone(),
+        }
+    }
+
+    /// The value as a `num-rational` big rational (borrowed when it is one).
+    fn big(&self) -> Cow<'_, BigRational> {
+        match &self.0 {
+            Repr::Small(n, d) => Cow::Owned(BigRational::new_raw((*n).into(), (*d).into())),
+            Repr::Big(r) => Cow::Borrowed(r),
+        }
+    }
+
+    /// The value as a `num-rational` big rational, consuming `self`.
+    fn into_big(self) -> BigRational {
+        match self.0 {
+            Repr::Big(r) => r,
+            Repr::Small(n, d) => BigRational::new_raw(n.into(), d.into()),
+        }
+    }
+}
+
+impl Default for Rational {
+    fn default() -> Rational {
+        Rational(Repr::Small(0, 1))
     }
 }
 
 impl From<BigRational> for Rational {
     fn from(v: BigRational) -> Rational {
-        Rational(v)
+        from_big(v)
     }
 }
 
 impl fmt::Display for Rational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fmt::Display::fmt(&self.0, f)
+        match &self.0 {
+            Repr::Small(n, 1) => write!(f, "{n}"),
+            Repr::Small(n, d) => write!(f, "{n}/{d}"),
+            Repr::Big(r) => fmt::Display::fmt(r, f),
+        }
     }
 }
 
 impl fmt::Debug for Rational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fmt::Display::fmt(&self.0, f)
+        fmt::Display::fmt(self, f)
     }
 }
 
 impl Ord for Rational {
     fn cmp(&self, other: &Self) -> Ordering {
-        if self.denom() == other.denom() {
-            return self.numer().cmp(other.numer());
+        if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &other.0) {
+            return (*a as i128 * *d as i128).cmp(&(*c as i128 * *b as i128));
+        }
+        let (x, y) = (self.big(), other.big());
+        if x.denom() == y.denom() {
+            return x.numer().cmp(y.numer());
         }
         // Each approximation is within 3 ulps of its value (when neither over- nor underflows):
         // 8 ulps of the larger magnitude apart decides.
@@ -80,7 +161,7 @@ impl Ord for Rational {
                 Ordering::Greater
             };
         }
-        (self.numer() * other.denom()).cmp(&(other.numer() * self.denom()))
+        (x.numer() * y.denom()).cmp(&(y.numer() * x.denom()))
     }
 }
 
@@ -90,29 +171,82 @@ impl PartialOrd for Rational {
     }
 }
 
-/// The arithmetic operators, by value, from `num-rational`'s.
-macro_rules! binary_op {
-    ($($tr:ident $m:ident),*) => {$(
-        impl $tr for Rational {
-            type Output = Rational;
-            fn $m(self, o: Rational) -> Rational {
-                Rational(self.0.$m(o.0))
+impl Add for Rational {
+    type Output = Rational;
+    fn add(self, o: Rational) -> Rational {
+        match (&self.0, &o.0) {
+            (Repr::Small(a, b), Repr::Small(c, d)) => {
+                let (a, b, c, d) = (*a as i128, *b as i128, *c as i128, *d as i128);
+                if b == d {
+                    reduce(a + c, b)
+                } else {
+                    reduce(a * d + c * b, b * d)
+                }
             }
+            _ => from_big(self.into_big() + o.into_big()),
         }
-    )*};
+    }
 }
-binary_op!(Add add, Sub sub, Mul mul, Div div);
+
+impl Sub for Rational {
+    type Output = Rational;
+    fn sub(self, o: Rational) -> Rational {
+        self + -o
+    }
+}
+
+impl Mul for Rational {
+    type Output = Rational;
+    fn mul(self, o: Rational) -> Rational {
+        match (&self.0, &o.0) {
+            (Repr::Small(a, b), Repr::Small(c, d)) => mul_small(*a, *b, *c, *d),
+            _ => from_big(self.into_big() * o.into_big()),
+        }
+    }
+}
+
+/// (a/b)·(c/d) for small values in lowest terms: cancelling across first keeps the product in
+/// lowest terms without a gcd of the products.
+fn mul_small(a: i64, b: i64, c: i64, d: i64) -> Rational {
+    if a == 0 || c == 0 {
+        return Rational::default();
+    }
+    let (a, b, c, d) = (a as i128, b as i128, c as i128, d as i128);
+    if b == 1 && d == 1 {
+        return lowest(a * c, 1);
+    }
+    let g = a.unsigned_abs().gcd(&d.unsigned_abs()) as i128;
+    let h = c.unsigned_abs().gcd(&b.unsigned_abs()) as i128;
+    lowest((a / g) * (c / h), (b / h) * (d / g))
+}
+
+impl Div for Rational {
+    type Output = Rational;
+    /// Panics on division by zero, like `num-rational`.
+    fn div(self, o: Rational) -> Rational {
+        match (&self.0, &o.0) {
+            (Repr::Small(a, b), Repr::Small(c, d)) => {
+                assert!(*c != 0, "division by zero");
+                mul_small(*a, *b, d * c.signum(), c.abs())
+            }
+            _ => from_big(self.into_big() / o.into_big()),
+        }
+    }
+}
 
 impl std::iter::Sum for Rational {
     fn sum<I: Iterator<Item = Rational>>(iter: I) -> Rational {
-        Rational(iter.map(|r| r.0).sum())
+        iter.fold(Rational::default(), |s, v| s + v)
     }
 }
 
 impl Neg for Rational {
     type Output = Rational;
     fn neg(self) -> Rational {
-        Rational(-self.0)
+        match self.0 {
+            Repr::Small(n, d) => Rational(Repr::Small(-n, d)),
+            Repr::Big(r) => Rational(Repr::Big(-r)),
+        }
     }
 }
 
@@ -126,8 +260,13 @@ fn digits(s: &str) -> BigInt {
 /// range, which the filters reject. (A finite numerator over an overflowing denominator would
 /// read as 0 and decide orders wrongly: found by fuzzing, pinned in tests/fuzz_regressions.rs.)
 fn approx(v: &Rational) -> f64 {
-    let n = ToPrimitive::to_f64(v.numer()).unwrap_or(f64::NAN);
-    let d = ToPrimitive::to_f64(v.denom()).unwrap_or(f64::NAN);
+    let r = match &v.0 {
+        Repr::Small(n, 1) => return *n as f64,
+        Repr::Small(n, d) => return *n as f64 / *d as f64,
+        Repr::Big(r) => r,
+    };
+    let n = ToPrimitive::to_f64(r.numer()).unwrap_or(f64::NAN);
+    let d = ToPrimitive::to_f64(r.denom()).unwrap_or(f64::NAN);
     if n.is_finite() && d.is_finite() {
         n / d
     } else {
@@ -135,22 +274,42 @@ fn approx(v: &Rational) -> f64 {
     }
 }
 
+/// The coordinates of a point as `i128` if they are integers of magnitude below `bound`: the
+/// orientation determinants of such points are computed exactly in `i128` (below 2⁶¹ in 2D,
+/// 2⁴⁰ in 3D, their determinants stay below 2¹²⁷).
+fn integers<const K: usize>(p: [&Rational; K], bound: i64) -> Option<[i128; K]> {
+    let mut out = [0i128; K];
+    for (o, v) in out.iter_mut().zip(p) {
+        match v.0 {
+            Repr::Small(n, 1) if n.abs() < bound => *o = n.into(),
+            _ => return None,
+        }
+    }
+    Some(out)
+}
+
 impl Num for Rational {
     type Ctx = ();
     const EXACT: bool = true;
 
     fn from_i64(v: i64) -> Self {
-        Rational::from_integer(BigInt::from(v))
+        lowest(v.into(), 1)
     }
 
     fn half(&self) -> Self {
         // Lowest terms without a gcd: halve an even numerator, else double the denominator.
-        let (n, d) = (self.numer(), self.denom());
-        Rational(if n.is_even() {
-            BigRational::new_raw(n / 2, d.clone())
-        } else {
-            BigRational::new_raw(n.clone(), d * 2)
-        })
+        match &self.0 {
+            Repr::Small(n, d) if n % 2 == 0 => lowest((n / 2).into(), (*d).into()),
+            Repr::Small(n, d) => lowest((*n).into(), 2 * *d as i128),
+            Repr::Big(r) => {
+                let (n, d) = (r.numer(), r.denom());
+                from_big(if n.is_even() {
+                    BigRational::new_raw(n / 2, d.clone())
+                } else {
+                    BigRational::new_raw(n.clone(), d * 2)
+                })
+            }
+        }
     }
 
     fn from_f64(v: f64) -> Result<Self, NumError> {
@@ -163,27 +322,47 @@ impl Num for Rational {
     }
 
     fn to_f64(&self) -> f64 {
-        ToPrimitive::to_f64(&self.0).unwrap_or(f64::NAN)
+        const EXACT: i64 = 1 << 53;
+        match &self.0 {
+            // Both operands exact in f64: one correctly rounded division.
+            Repr::Small(n, d) if n.abs() <= EXACT && *d <= EXACT => *n as f64 / *d as f64,
+            _ => ToPrimitive::to_f64(self.big().as_ref()).unwrap_or(f64::NAN),
+        }
     }
 
     fn sign(&self) -> Ordering {
-        if self.0.is_zero() {
-            Ordering::Equal
-        } else if self.0.is_positive() {
-            Ordering::Greater
-        } else {
-            Ordering::Less
+        match &self.0 {
+            Repr::Small(n, _) => n.cmp(&0),
+            Repr::Big(r) if r.is_zero() => Ordering::Equal,
+            Repr::Big(r) if r.is_positive() => Ordering::Greater,
+            Repr::Big(_) => Ordering::Less,
         }
     }
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
         let f = |p: [&Self; 2]| [approx(p[0]), approx(p[1])];
-        filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| exact_orient(a, b, c))
+        filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| {
+            let i = |p: [&Self; 2]| integers(p, 1 << 61);
+            match (i(a), i(b), i(c)) {
+                (Some(a), Some(b), Some(c)) => {
+                    exact_orient(a.each_ref(), b.each_ref(), c.each_ref())
+                }
+                _ => exact_orient(a, b, c),
+            }
+        })
     }
 
     fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], _ctx: &()) -> Ordering {
         let f = |p: [&Self; 3]| p.map(approx);
-        filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| exact_orient3d(a, b, c, d))
+        filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| {
+            let i = |p: [&Self; 3]| integers(p, 1 << 40);
+            match (i(a), i(b), i(c), i(d)) {
+                (Some(a), Some(b), Some(c), Some(d)) => {
+                    exact_orient3d(a.each_ref(), b.each_ref(), c.each_ref(), d.each_ref())
+                }
+                _ => exact_orient3d(a, b, c, d),
+            }
+        })
     }
 }
 
@@ -237,10 +416,56 @@ mod tests {
                 (q(n.clone(), d.clone()), BigRational::new(&n * &scale * 3, d * 3)),
             ];
             for (x, y) in cases {
-                let (a, b) = (Rational(x.clone()), Rational(y.clone()));
+                let (a, b) = (Rational::from(x.clone()), Rational::from(y.clone()));
                 proptest::prop_assert_eq!(a.cmp(&b), x.cmp(&y));
                 proptest::prop_assert_eq!(b.cmp(&a), y.cmp(&x));
             }
+        }
+    }
+
+    /// A value near the small/big boundary: ±(2⁶² + k) / (m or 2⁶¹ + m), so that sums,
+    /// products and quotients leave the small representation and come back.
+    fn edge_value() -> impl proptest::strategy::Strategy<Value = BigRational> {
+        use proptest::prelude::*;
+        let part = prop_oneof![
+            -20i128..20,
+            (-5i128..5).prop_map(|k| (1i128 << 62) + k),
+            (-5i128..5).prop_map(|k| -(1i128 << 62) + k),
+            (-5i128..5).prop_map(|k| (1i128 << 61) + k),
+            any::<i64>().prop_map(i128::from),
+            any::<i32>().prop_map(i128::from),
+        ];
+        (part.clone(), part).prop_filter_map("zero denominator", |(n, d)| {
+            (d != 0).then(|| BigRational::new(n.into(), d.into()))
+        })
+    }
+
+    proptest::proptest! {
+        /// Arithmetic, order, sign, halving and conversions of the inline representation equal
+        /// `num-rational`'s on values across the small/big boundary, and the representation
+        /// stays canonical (equal values compare and hash equal however they were computed).
+        #[test]
+        fn inline_arithmetic_is_num_rationals(x in edge_value(), y in edge_value()) {
+            use std::hash::{BuildHasher, RandomState};
+            let (a, b) = (Rational::from(x.clone()), Rational::from(y.clone()));
+            let same = |r: Rational, e: BigRational| {
+                let canonical = Rational::from(e.clone());
+                let h = RandomState::new();
+                r.big().as_ref() == &e && r == canonical && h.hash_one(&r) == h.hash_one(&canonical)
+            };
+            proptest::prop_assert!(same(a.clone() + b.clone(), &x + &y));
+            proptest::prop_assert!(same(a.clone() - b.clone(), &x - &y));
+            proptest::prop_assert!(same(a.clone() * b.clone(), &x * &y));
+            if !y.is_zero() {
+                proptest::prop_assert!(same(a.clone() / b.clone(), &x / &y));
+            }
+            proptest::prop_assert!(same(-a.clone(), -x.clone()));
+            proptest::prop_assert!(same(a.half(), &x / BigRational::from_integer(2.into())));
+            proptest::prop_assert_eq!(a.cmp(&b), x.cmp(&y));
+            proptest::prop_assert_eq!(a.sign(), x.cmp(&BigRational::zero()));
+            proptest::prop_assert_eq!(Num::to_f64(&a), ToPrimitive::to_f64(&x).unwrap());
+            proptest::prop_assert_eq!(a.to_string(), x.to_string());
+            proptest::prop_assert_eq!((a.numer(), a.denom()), (x.numer().clone(), x.denom().clone()));
         }
     }
 

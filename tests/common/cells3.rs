@@ -393,7 +393,7 @@ pub fn common_den<'a>(pts: impl IntoIterator<Item = &'a P3>) -> BigInt {
     let mut d = BigInt::one();
     for p in pts {
         for c in p.coords() {
-            d = d.lcm(c.denom());
+            d = d.lcm(&c.denom());
         }
     }
     d
@@ -401,7 +401,7 @@ pub fn common_den<'a>(pts: impl IntoIterator<Item = &'a P3>) -> BigInt {
 
 /// `p · den` as integers (`den` must be a multiple of every coordinate's denominator).
 pub fn scale(p: &P3, den: &BigInt) -> V {
-    p.coords().map(|c| c.numer() * (den / c.denom()))
+    p.coords().map(|c| c.numer() * (den / &c.denom()))
 }
 
 impl IntGeom {

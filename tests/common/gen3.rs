@@ -746,7 +746,7 @@ pub fn features3(a: &Y3, b: &Y3) -> [bool; 12] {
         f[11] |= y
             .vertices()
             .iter()
-            .any(|p| p.coords().iter().any(|c| !(&d % c.denom()).is_zero()));
+            .any(|p| p.coords().iter().any(|c| !(&d % &c.denom()).is_zero()));
     }
     f
 }
