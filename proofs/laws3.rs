@@ -19,9 +19,8 @@ pub const CELL_ORACLE3: [&str; 4] = [
 ];
 
 /// The cell oracle for one kernel result `y` that should be the union `s`: `y == expected`
-/// (built from the mask's faces by `from_triangles` only), its Betti numbers equal the cell
-/// complex's, its volume the number of cells, and the centre of every open cell of the grid
-/// (cube, face, edge, vertex) and a point outside are located as the mask says.
+/// (built from the mask's faces by `from_triangles` only), and the invariants of
+/// [`cells_invariants`].
 pub fn cells_check(
     t: &mut Tally,
     g: &Grid3,
@@ -34,6 +33,21 @@ pub fn cells_check(
     law(t, CELL_ORACLE3[0], y == expected, || {
         format!("{what} on {} ({s:?}){}", g.name, neq(y, expected))
     })?;
+    cells_invariants(t, g, probes, s, y, what)
+}
+
+/// The invariants of a set `y` that should be the union `s`, read off the mask: its Betti
+/// numbers equal the cell complex's, its volume the number of cells, and the centre of every
+/// open cell of the grid (cube, face, edge, vertex) and a point outside are located as the
+/// mask says.
+pub fn cells_invariants(
+    t: &mut Tally,
+    g: &Grid3,
+    probes: &[Point3<Rational>],
+    s: Cells,
+    y: &Y3,
+    what: &str,
+) -> Res {
     let want = g.betti(s);
     let got = y.betti();
     law(

@@ -172,7 +172,7 @@ impl Universe for Spatial {
         let (g, p) = (&self.g, &self.probes[..]);
         let ya = self.get(a);
         let r = (|| {
-            laws3::cells_check(t, g, p, a, ya, ya, "a (oracle input)")?;
+            laws3::cells_invariants(t, g, p, a, ya, "a (oracle input)")?;
             laws::unary(t, ya)?;
             let c = laws::ok(ya.complement(), "a'")?;
             let na = a.not(g.len());
