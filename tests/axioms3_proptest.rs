@@ -13,7 +13,7 @@ use std::sync::Mutex;
 fn unary_laws_3d() {
     run(
         "proptest 3D unary laws",
-        cases3(48),
+        cases3(64),
         strategies::shape(),
         |t, s| laws::unary(t, &s.build()),
     );
@@ -27,7 +27,7 @@ fn binary_laws_and_membership_3d() {
     let shares = Mutex::new(Shares3::default());
     run_split(
         "proptest 3D binary laws",
-        cases3(300),
+        cases3(512),
         2,
         strategies::pair(),
         |t, (a, b)| {
@@ -46,7 +46,7 @@ fn binary_laws_and_membership_3d() {
 fn ternary_laws_3d() {
     run_split(
         "proptest 3D ternary laws",
-        cases3(56),
+        cases3(64),
         2,
         strategies::triple(),
         |t, (a, b, c)| laws::ternary(t, &a.build(), &b.build(), &c.build()),

@@ -67,7 +67,7 @@ fn report(tally: &Mutex<Tally>, what: &str, n: u64) {
 
 #[test]
 fn unary_laws_3d() {
-    let n = cases3(48) as u64;
+    let n = cases3(64) as u64;
     qc(n).quickcheck(unary_prop as fn(Shape3) -> TestResult);
     report(&UNARY, "unary", n);
 }
@@ -76,7 +76,7 @@ fn unary_laws_3d() {
 /// features measured, printed and bounded from below.
 #[test]
 fn binary_laws_and_membership_3d() {
-    let n = cases3(300) as u64;
+    let n = cases3(512) as u64;
     qc_split(n, binary_prop as fn(QPair3) -> TestResult);
     report(&BINARY, "binary", n);
     let shares = SHARES.lock().unwrap();
@@ -86,7 +86,7 @@ fn binary_laws_and_membership_3d() {
 
 #[test]
 fn ternary_laws_3d() {
-    let n = cases3(56) as u64;
+    let n = cases3(64) as u64;
     qc_split(n, ternary_prop as fn(QTriple3) -> TestResult);
     report(&TERNARY, "ternary", n);
 }
