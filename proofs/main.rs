@@ -97,7 +97,7 @@ impl Universe for Planar {
 
     fn unary(&self, t: &mut Tally, a: Cells) -> Res {
         let ya = self.get(a);
-        laws::cells_check(t, &self.cx, a, ya, ya, "a (oracle input)")?;
+        laws::cells_invariants(t, &self.cx, a, ya, "a (oracle input)")?;
         laws::unary(t, ya)?;
         let c = laws::ok(ya.complement(), "a'")?;
         let n = self.cx.len();

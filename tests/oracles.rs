@@ -69,7 +69,7 @@ fn grid_cell_oracle() {
             (cells_strategy(n), cells_strategy(n)),
             |t, (a, b)| {
                 let (ya, yb) = (cx.yin(a), cx.yin(b));
-                laws::cells_check(t, &cx, a, &ya, &ya, "a")?;
+                laws::cells_invariants(t, &cx, a, &ya, "a")?;
                 let out = laws::binary(t, &ya, &yb)?;
                 laws::cells_binary(t, &cx, (a, b), &out, &|s| cx.yin(s))
             },

@@ -459,12 +459,18 @@ pub const CELL_ORACLE: [&str; 4] = [
 
 /// The grid-cell oracle for one kernel result `y` that should be the union of pieces `s`:
 /// `y == expected` (the set traced from the mask independently of the kernel's operations),
-/// its Betti numbers equal the flood-fill counts, its area the sum of the pieces, and each
-/// piece centroid (and a point outside the window) is located as the mask says.
+/// and the invariants of [`cells_invariants`].
 pub fn cells_check(t: &mut Tally, cx: &Complex, s: Cells, y: &Y, expected: &Y, what: &str) -> Res {
     law(t, CELL_ORACLE[0], y == expected, || {
         format!("{what} on {} ({s:?}){}", cx.name, neq(y, expected))
     })?;
+    cells_invariants(t, cx, s, y, what)
+}
+
+/// The invariants of a set `y` that should be the union of pieces `s`, read off the mask: its
+/// Betti numbers equal the flood-fill counts, its area the sum of the pieces, and each piece
+/// centroid (and a point outside the window) is located as the mask says.
+pub fn cells_invariants(t: &mut Tally, cx: &Complex, s: Cells, y: &Y, what: &str) -> Res {
     let want = cx.betti(s);
     let got = y.betti();
     let mut holes = got.holes.clone();
