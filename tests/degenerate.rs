@@ -4,7 +4,7 @@
 mod common;
 use common::*;
 use yinset::kernel::Point;
-use yinset::yin2::{Location, YinError, YinSet2};
+use yinset::yin2::{Homology, Location, YinError, YinSet2};
 
 #[test]
 fn two_components_touching_at_one_point() {
@@ -20,6 +20,10 @@ fn two_components_touching_at_one_point() {
     assert_eq!(c.betti().components, 1);
     assert_eq!(c.betti().total_holes, 2);
     assert_eq!(c.complement(), a);
+    // Homologically the two touching holes are one: ℝ² minus two closed squares sharing a
+    // corner has one independent loop (around both).
+    assert_eq!(a.homology(), Homology { b0: 2, b1: 0 });
+    assert_eq!(c.homology(), Homology { b0: 1, b1: 1 });
 }
 
 #[test]
@@ -55,9 +59,14 @@ fn hole_touching_its_outer_curve() {
         .curves()
         .iter()
         .all(|c| c.vertices().contains(&Point::int(2, 0))));
+    // The pinched hole counts for the seed, not for homology: a loop around the triangle
+    // must pass through (2,0), which is not in the set.
+    assert_eq!(a.homology(), Homology { b0: 1, b1: 0 });
     let c = valid(&a.complement()).clone();
     assert_eq!(c.complement(), a);
     assert_eq!(c.betti().components, 2, "unbounded part + the triangle");
+    // The outside of the square (a loop around it) and the open triangle (none).
+    assert_eq!(c.homology(), Homology { b0: 2, b1: 1 });
 }
 
 #[test]
@@ -148,9 +157,20 @@ fn unbounded_yin_sets() {
     assert!(!outside.is_bounded());
     assert_eq!(outside.area(), None);
     assert_eq!(outside.betti().holes, vec![1]);
+    // ℝ² minus a closed square: a punctured plane, one loop.
+    assert_eq!(outside.homology(), Homology { b0: 1, b1: 1 });
+    assert_eq!(
+        YinSet2::<yinset::num::Rational>::full().homology(),
+        Homology { b0: 1, b1: 0 }
+    );
+    assert_eq!(
+        YinSet2::<yinset::num::Rational>::empty().homology(),
+        Homology::default()
+    );
     let annulus = valid(&outside.meet(&yin(vec![rect(0, 0, 3, 3)]))).clone();
     assert_eq!(area(&annulus), q(8, 1));
     assert_eq!(annulus.betti().holes, vec![1]);
+    assert_eq!(annulus.homology(), Homology { b0: 1, b1: 1 });
     // Join of two unbounded sets with overlapping holes: the hole is the intersection.
     let other = yin(vec![rev(rect(0, 0, 2, 2))]);
     let j = valid(&outside.join(&other)).clone();
@@ -168,6 +188,7 @@ fn island_inside_a_hole() {
     ]);
     assert_eq!(a.betti().components, 2);
     assert_eq!(a.betti().total_holes, 1);
+    assert_eq!(a.homology(), Homology { b0: 2, b1: 1 });
     assert_eq!(a.parents().iter().filter(|p| p.is_some()).count(), 2);
     assert_eq!(area(&a), q(100 - 36 + 4, 1));
     assert_eq!(valid(&a.complement()).complement(), a);

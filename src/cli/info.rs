@@ -10,6 +10,7 @@ use serde_json::{json, Value};
 /// and as the nearest `f64`.
 pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
     let betti = set.betti();
+    let homology = set.homology();
     let kind = kind(set.is_empty(), set.is_full(), "spadjor");
     let curves: Vec<Value> = set
         .curves()
@@ -40,6 +41,9 @@ pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
             "holes": betti.holes,
             "total_holes": betti.total_holes,
         },
+        // Homological b0, b1 (YinSet2::homology): differ from the seed's count where holes
+        // touch.
+        "homology": { "b0": homology.b0, "b1": homology.b1 },
         "curves": set.curves().len(),
         "vertices": set.curves().iter().map(|c| c.len()).sum::<usize>(),
         "hasse": curves,
@@ -132,6 +136,7 @@ mod tests {
             r["betti"],
             json!({"components": 1, "holes": [1], "total_holes": 1})
         );
+        assert_eq!(r["homology"], json!({"b0": 1, "b1": 1}));
         assert_eq!(r["area"]["exact"], "35/2");
         assert_eq!(r["area"]["float"], 17.5);
         assert_eq!(r["hasse"][1]["parent"], 0);

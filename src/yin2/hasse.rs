@@ -16,14 +16,16 @@ pub struct Atom {
     pub holes: Vec<usize>,
 }
 
-/// Betti numbers of a Yin set (seed 000 Cor. 3.14): connected components and the holes of each.
+/// Betti numbers of a Yin set as seed 000 Cor. 3.14 counts them: connected components and the
+/// negatively oriented curves (holes) of each. A hole pinched to its outer curve at a point
+/// counts, unlike in homology: [`super::YinSet2::homology`] gives the homological b₀, b₁.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct Betti {
     /// b₀: the number of connected components.
     pub components: usize,
-    /// b₁ of each component, in the order of [`super::YinSet2::atoms`].
+    /// The holes of each component (seed b₁), in the order of [`super::YinSet2::atoms`].
     pub holes: Vec<usize>,
-    /// b₁ of the whole set: the total number of holes.
+    /// The total number of holes (seed b₁; not homological where holes touch).
     pub total_holes: usize,
 }
 
