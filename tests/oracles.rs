@@ -255,8 +255,9 @@ fn cell_homology(cx: &Complex, s: Cells) -> (usize, usize) {
     let inside = |p: Option<usize>| p.map_or(s.outside, |p| s.mask >> p & 1 == 1);
     // Each undirected edge with the pieces on its sides (one piece: the other is the exterior),
     // and each vertex with the pieces around it.
-    let mut sides: HashMap<((i64, i64), (i64, i64)), Vec<usize>> = HashMap::new();
-    let mut around: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    type V = (i64, i64);
+    let mut sides: HashMap<(V, V), Vec<usize>> = HashMap::new();
+    let mut around: HashMap<V, Vec<usize>> = HashMap::new();
     for (p, v) in cx.pieces.iter().enumerate() {
         for k in 0..v.len() {
             let (a, b) = (v[k], v[(k + 1) % v.len()]);
@@ -264,7 +265,7 @@ fn cell_homology(cx: &Complex, s: Cells) -> (usize, usize) {
             around.entry(a).or_default().push(p);
         }
     }
-    let on_border: std::collections::HashSet<(i64, i64)> = sides
+    let on_border: std::collections::HashSet<V> = sides
         .iter()
         .filter(|(_, ps)| ps.len() == 1)
         .flat_map(|(&(a, b), _)| [a, b])
