@@ -13,7 +13,7 @@ pub const POSITIVE: [u8; 3] = [40, 100, 230];
 /// Colour of negatively oriented glued surfaces (cavities; an unbounded set's surface).
 pub const NEGATIVE: [u8; 3] = [240, 110, 20];
 /// Opacity of positively oriented surfaces.
-pub const OPACITY: f32 = 0.45;
+pub const OPACITY: f32 = 0.4;
 /// Samples per pixel along each axis.
 const SUPERSAMPLE: usize = 2;
 /// Blank border, as a fraction of the picture's side.
