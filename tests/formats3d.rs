@@ -133,7 +133,11 @@ fn sets_round_trip_through_every_format() {
         for (format, write, read) in codecs() {
             let back = set(read(&write(y.vertices(), y.triangles())));
             assert_eq!(back, y, "{label} through {format}");
-            assert_eq!(back.is_bounded(), y.is_bounded(), "{label} through {format}");
+            assert_eq!(
+                back.is_bounded(),
+                y.is_bounded(),
+                "{label} through {format}"
+            );
         }
     }
     // Integer coordinates are 32-bit floats: binary STL holds the hollow cube exactly.

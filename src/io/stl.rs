@@ -281,9 +281,9 @@ pub fn write_stl_ascii<N: Num>(vertices: &[Point3<N>], triangles: &[[usize; 3]])
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("binary STL holds 32-bit floats, and the coordinate {coordinate} of vertex {vertex} is not one: write ASCII STL, which is exact")]
 pub struct NotF32 {
-    /// The coordinate, exactly.
+    /// The coordinate, exactly (a decimal where one is exact).
     pub coordinate: String,
-    /// The vertex, exactly.
+    /// The vertex, exactly (decimals where exact).
     pub vertex: String,
 }
 
@@ -304,9 +304,10 @@ pub fn write_stl_binary<N: Num>(
             for (x, n) in c.iter_mut().zip(p.coords()) {
                 *x = n.to_f64() as f32;
                 if N::from_f64(f64::from(*x)).ok().as_ref() != Some(n) {
+                    let [x, y, z] = p.coords().map(exact_text);
                     return Err(NotF32 {
-                        coordinate: n.to_string(),
-                        vertex: format!("({}, {}, {})", p.x, p.y, p.z),
+                        coordinate: exact_text(n),
+                        vertex: format!("({x}, {y}, {z})"),
                     });
                 }
             }
