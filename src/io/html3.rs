@@ -8,6 +8,7 @@
 
 use super::png3::{NEGATIVE, OPACITY, POSITIVE};
 use super::scene3::{Facet, View};
+use super::svg::escape;
 use std::fmt::Write;
 
 /// The viewer: draws `DATA` (flat corner coordinates `p`, orientation flags `s`) from the view
@@ -125,14 +126,6 @@ fn json_number(x: f64) -> String {
     } else {
         "0".to_string()
     }
-}
-
-/// `text` with the HTML special characters escaped.
-fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 #[cfg(test)]

@@ -2,10 +2,12 @@
 //! the polygon mesh they read, the error of a malformed file, exact coordinates, and the
 //! vertex bookkeeping of their writers.
 
+use super::decimal::exact_text;
 use super::ParseError;
 use crate::kernel::Point3;
 use crate::num::Num;
 use std::collections::HashMap;
+use std::fmt::Write;
 
 /// A polygon mesh as a file gives it: vertices and faces (0-based vertex indices, any number
 /// ≥ 3 of them), and where each face is in the file.
@@ -124,6 +126,40 @@ pub(crate) fn used<'a, N>(
         })
         .collect();
     (kept, renumbered)
+}
+
+/// The text shared by OFF and ASCII PLY: `header(vertex count, triangle count)`, then one
+/// `x y z` line per vertex that `triangles` use (coordinates exact, see [`used`]), then one
+/// `3 a b c` line per triangle (0-based).
+///
+/// # Panics
+/// If a triangle index is out of range of `vertices`.
+pub(crate) fn indexed_text<N: Num>(
+    vertices: &[Point3<N>],
+    triangles: &[[usize; 3]],
+    header: impl FnOnce(usize, usize) -> String,
+) -> String {
+    let (kept, renumbered) = used(vertices, triangles);
+    let mut out = header(kept.len(), renumbered.len());
+    for p in kept {
+        let [x, y, z] = p.coords().map(exact_text);
+        let _ = writeln!(out, "{x} {y} {z}");
+    }
+    for [a, b, c] in renumbered {
+        let _ = writeln!(out, "3 {a} {b} {c}");
+    }
+    out
+}
+
+/// `(line, column, message)` of a reader's text error (a test helper).
+#[cfg(test)]
+pub(crate) fn text_error<N: std::fmt::Debug>(
+    read: Result<Mesh<N>, MeshError>,
+) -> (usize, usize, String) {
+    match read {
+        Err(MeshError::Text(e)) => (e.line, e.column, e.message),
+        other => panic!("not a text error: {other:?}"),
+    }
 }
 
 #[cfg(test)]

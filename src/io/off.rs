@@ -31,12 +31,10 @@
 //! Writing ([`write_off`]) gives triangles with coordinates exact: a decimal when the expansion
 //! terminates, `p/q` otherwise (read back by [`read_off`] but not by other OFF tools).
 
-use super::decimal::exact_text;
-use super::mesh::{coordinate, used, Mesh};
+use super::mesh::{coordinate, indexed_text, Mesh};
 use super::ParseError;
 use crate::kernel::Point3;
 use crate::num::Num;
-use std::fmt::Write;
 
 /// A non-blank line of the file without its comment: its 1-based number and tokens.
 struct Line<'a> {
@@ -177,20 +175,9 @@ fn face(text: &str, tokens: &[&str], nv: usize) -> Result<Vec<usize>, ParseError
 /// # Panics
 /// If a triangle index is out of range of `vertices`.
 pub fn write_off<N: Num>(vertices: &[Point3<N>], triangles: &[[usize; 3]]) -> String {
-    let (kept, renumbered) = used(vertices, triangles);
-    let mut out = format!(
-        "OFF\n# yinset: coordinates exact (p/q where no decimal is)\n{} {} 0\n",
-        kept.len(),
-        renumbered.len()
-    );
-    for p in kept {
-        let [x, y, z] = p.coords().map(exact_text);
-        let _ = writeln!(out, "{x} {y} {z}");
-    }
-    for [a, b, c] in renumbered {
-        let _ = writeln!(out, "3 {a} {b} {c}");
-    }
-    out
+    indexed_text(vertices, triangles, |nv, nt| {
+        format!("OFF\n# yinset: coordinates exact (p/q where no decimal is)\n{nv} {nt} 0\n")
+    })
 }
 
 #[cfg(test)]

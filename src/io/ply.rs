@@ -38,12 +38,10 @@
 //! Writing ([`write_ply`]) gives ASCII triangles with coordinates exact: a decimal when the
 //! expansion terminates, `p/q` otherwise (read back by [`read_ply`], not by other PLY tools).
 
-use super::decimal::exact_text;
-use super::mesh::{binary_coordinate, coordinate, used, Mesh, MeshError};
+use super::mesh::{binary_coordinate, coordinate, indexed_text, Mesh, MeshError};
 use super::ParseError;
 use crate::kernel::Point3;
 use crate::num::Num;
-use std::fmt::Write;
 
 /// A scalar type of the format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -494,31 +492,14 @@ impl<'a> Body<'a> for BinaryBody<'a> {
             word[..raw.len()].reverse();
         }
         let bits = u64::from_le_bytes(word);
+        let int = |value: i64| Number::Int { value, offset };
         Ok(match ty {
-            Scalar::I8 => Number::Int {
-                value: i64::from(bits as u8 as i8),
-                offset,
-            },
-            Scalar::U8 => Number::Int {
-                value: i64::from(bits as u8),
-                offset,
-            },
-            Scalar::I16 => Number::Int {
-                value: i64::from(bits as u16 as i16),
-                offset,
-            },
-            Scalar::U16 => Number::Int {
-                value: i64::from(bits as u16),
-                offset,
-            },
-            Scalar::I32 => Number::Int {
-                value: i64::from(bits as u32 as i32),
-                offset,
-            },
-            Scalar::U32 => Number::Int {
-                value: i64::from(bits as u32),
-                offset,
-            },
+            Scalar::I8 => int(i64::from(bits as u8 as i8)),
+            Scalar::U8 => int(i64::from(bits as u8)),
+            Scalar::I16 => int(i64::from(bits as u16 as i16)),
+            Scalar::U16 => int(i64::from(bits as u16)),
+            Scalar::I32 => int(i64::from(bits as u32 as i32)),
+            Scalar::U32 => int(i64::from(bits as u32)),
             Scalar::F32 => Number::Float {
                 value: f64::from(f32::from_bits(bits as u32)),
                 offset,
@@ -561,22 +542,13 @@ impl<'a> Body<'a> for BinaryBody<'a> {
 /// # Panics
 /// If a triangle index is out of range of `vertices`.
 pub fn write_ply<N: Num>(vertices: &[Point3<N>], triangles: &[[usize; 3]]) -> String {
-    let (kept, renumbered) = used(vertices, triangles);
-    let mut out = format!(
-        "ply\nformat ascii 1.0\ncomment yinset: coordinates exact (p/q where no decimal is)\n\
-         element vertex {}\nproperty double x\nproperty double y\nproperty double z\n\
-         element face {}\nproperty list uchar int vertex_indices\nend_header\n",
-        kept.len(),
-        renumbered.len()
-    );
-    for p in kept {
-        let [x, y, z] = p.coords().map(exact_text);
-        let _ = writeln!(out, "{x} {y} {z}");
-    }
-    for [a, b, c] in renumbered {
-        let _ = writeln!(out, "3 {a} {b} {c}");
-    }
-    out
+    indexed_text(vertices, triangles, |nv, nt| {
+        format!(
+            "ply\nformat ascii 1.0\ncomment yinset: coordinates exact (p/q where no decimal is)\n\
+             element vertex {nv}\nproperty double x\nproperty double y\nproperty double z\n\
+             element face {nt}\nproperty list uchar int vertex_indices\nend_header\n"
+        )
+    })
 }
 
 #[cfg(test)]
@@ -605,10 +577,7 @@ mod tests {
 
     /// `(line, column, message)` of the error reading `text`.
     fn error(text: &str) -> (usize, usize, String) {
-        match read_ply::<Rational>(text.as_bytes()).unwrap_err() {
-            MeshError::Text(e) => (e.line, e.column, e.message),
-            other => panic!("not a text error: {other}"),
-        }
+        crate::io::mesh::text_error(read_ply::<Rational>(text.as_bytes()))
     }
 
     #[test]

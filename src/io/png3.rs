@@ -178,8 +178,8 @@ impl Canvas {
                     for dx in 0..SUPERSAMPLE {
                         let s = &self.samples
                             [(y * SUPERSAMPLE + dy) * self.side + x * SUPERSAMPLE + dx];
-                        for k in 0..3 {
-                            sum[k] += s.colour[k];
+                        for (total, c) in sum.iter_mut().zip(s.colour) {
+                            *total += c;
                         }
                     }
                 }

@@ -352,10 +352,16 @@ mod tests {
 
     /// `(line, column, message)` of the error reading `text`.
     fn error(text: &str) -> (usize, usize, String) {
-        match read_stl::<Rational>(text.as_bytes()).unwrap_err() {
-            MeshError::Text(e) => (e.line, e.column, e.message),
-            other => panic!("not a text error: {other}"),
-        }
+        crate::io::mesh::text_error(read_stl::<Rational>(text.as_bytes()))
+    }
+
+    /// The corners of the unit right triangle in the xy plane.
+    fn unit_triangle() -> Vec<Point3<Rational>> {
+        vec![
+            Point3::int(0, 0, 0),
+            Point3::int(1, 0, 0),
+            Point3::int(0, 1, 0),
+        ]
     }
 
     #[test]
@@ -394,29 +400,21 @@ mod tests {
         assert_eq!(mesh.faces, vec![vec![0, 1, 2], vec![2, 1, 0]]);
         assert_eq!(mesh.vertices[..3], v[..3]);
         assert!(mesh.face_lines.is_empty());
-        let third = vec![
-            Point3::new(q("1/3"), q("0"), q("0")),
-            v[1].clone(),
-            v[2].clone(),
-        ];
-        let e = write_stl_binary(&third, &[[0, 1, 2]]).unwrap_err();
-        assert_eq!(e.coordinate, "1/3");
-        let big = vec![
-            Point3::new(q("1e20"), q("0"), q("0")),
-            v[1].clone(),
-            v[2].clone(),
-        ];
-        let e = write_stl_binary(&big, &[[0, 1, 2]]).unwrap_err();
-        assert_eq!(e.coordinate, "100000000000000000000");
+        for (x, shown) in [
+            ("1/3", "1/3"),
+            ("1e20", "100000000000000000000"),
+            ("0.1", "0.1"),
+        ] {
+            let mut w = v.clone();
+            w[1].x = q(x);
+            let e = write_stl_binary(&w, &[[0, 1, 2]]).unwrap_err();
+            assert_eq!(e.coordinate, shown);
+        }
     }
 
     #[test]
     fn binary_with_a_solid_header_is_binary() {
-        let v = vec![
-            Point3::int(0, 0, 0),
-            Point3::int(1, 0, 0),
-            Point3::int(0, 1, 0),
-        ];
+        let v = unit_triangle();
         let mut bytes = write_stl_binary::<Rational>(&v, &[[0, 1, 2]]).unwrap();
         bytes[..6].copy_from_slice(b"solid ");
         let mesh = read_stl::<Rational>(&bytes).unwrap();
@@ -425,11 +423,7 @@ mod tests {
 
     #[test]
     fn truncated_or_padded_binary_names_the_facet() {
-        let v = vec![
-            Point3::int(0, 0, 0),
-            Point3::int(1, 0, 0),
-            Point3::int(0, 1, 0),
-        ];
+        let v = unit_triangle();
         let bytes = write_stl_binary::<Rational>(&v, &[[0, 1, 2], [0, 2, 1], [1, 0, 2]]).unwrap();
         let e = read_stl::<Rational>(&bytes[..HEADER + FACET + 7]).unwrap_err();
         assert_eq!(
