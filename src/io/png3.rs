@@ -235,15 +235,34 @@ mod tests {
         let (w, h, rgb) = decode(&write_png(&[front, back], view, 40).unwrap());
         assert_eq!((w, h), (40, 40));
         let pixel = |x: usize, y: usize| &rgb[(y * 40 + x) * 3..][..3];
-        // Lower left: both triangles; the orange one shows through the blue one.
+        // Both triangles face the camera; the light comes from (1, −0.3, 0.5) in world terms
+        // (toward + up/2 − right·0.3), so the brightness is 0.3 + 0.7 / √1.34.
+        let shade = 0.3 + 0.7 / 1.34f64.sqrt();
+        let near = |got: &[u8], want: [f64; 3]| {
+            got.iter()
+                .zip(want)
+                .all(|(&g, w)| (f64::from(g) - w * shade).abs() <= 1.0)
+        };
+        // Lower left: both; the orange one shows through the blue one at 40 % opacity:
+        // 0.4 · (40, 100, 230) + 0.6 · (240, 110, 20).
         let both = pixel(8, 30);
-        assert!(both[0] > both[2] / 2 && both[2] > both[1], "{both:?}");
+        assert!(near(both, [160.0, 106.0, 104.0]), "{both:?}");
         // Upper right: outside both, white.
         assert_eq!(pixel(36, 4), &[255, 255, 255]);
-        // Drawn alone, the opaque triangle is pure shaded orange.
+        // Drawn alone, the opaque triangle is shaded orange.
         let (_, _, alone) = decode(&write_png(&[back], view, 40).unwrap());
         let p = &alone[(30 * 40 + 8) * 3..][..3];
-        assert!(p[0] > 150 && p[2] < 30, "{p:?}");
+        assert!(near(p, [240.0, 110.0, 20.0]), "{p:?}");
+        // The translucent one alone, over white: 0.4 · blue · shade + 0.6 · white.
+        let (_, _, blue) = decode(&write_png(&[front], view, 40).unwrap());
+        let p = &blue[(30 * 40 + 8) * 3..][..3];
+        let over_white = [40.0, 100.0, 230.0].map(|c| 0.4 * c * shade + 0.6 * 255.0);
+        assert!(
+            p.iter()
+                .zip(over_white)
+                .all(|(&g, w)| (f64::from(g) - w).abs() <= 1.0),
+            "{p:?}"
+        );
     }
 
     #[test]
