@@ -150,3 +150,63 @@ fn sets_round_trip_through_every_format() {
     // Not so the torus's decimals.
     assert!(write_stl_binary(cavity.vertices(), cavity.triangles()).is_err());
 }
+
+/// Small files of every reader: ASCII and binary STL, OFF, ASCII and binary PLY, OBJ.
+fn small_files() -> Vec<(&'static str, Vec<u8>)> {
+    let hollow = &cube(0, 3) - &cube(1, 2);
+    let (v, t) = (hollow.vertices(), hollow.triangles());
+    let mut files: Vec<(&'static str, Vec<u8>)> = codecs()
+        .into_iter()
+        .map(|(format, write, _)| (format, write(v, t)))
+        .collect();
+    files.push(("stl-binary", write_stl_binary(v, t).unwrap()));
+    let mut ply = b"ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\n\
+        property float y\nproperty float z\nelement face 1\nproperty list uchar ushort vertex_index\n\
+        end_header\n"
+        .to_vec();
+    for x in [0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
+        ply.extend(x.to_be_bytes());
+    }
+    ply.push(3);
+    for i in [0u16, 1, 2] {
+        ply.extend(i.to_be_bytes());
+    }
+    files.push(("ply-binary", ply));
+    files
+}
+
+/// Every reader on `bytes`; none may panic (errors are fine).
+fn read_all(bytes: &[u8]) {
+    let _ = read_stl::<Rational>(bytes);
+    let _ = read_ply::<Rational>(bytes);
+    if let Ok(text) = std::str::from_utf8(bytes) {
+        let _ = read_off::<Rational>(text);
+        let _ = read_obj::<Rational>(text);
+    }
+}
+
+#[test]
+fn damaged_files_are_errors_not_panics() {
+    for (format, bytes) in small_files() {
+        // The undamaged file reads in its own format.
+        let mesh: Mesh<Rational> = match format {
+            "stl" | "stl-binary" => read_stl(&bytes).unwrap(),
+            "ply" | "ply-binary" => read_ply(&bytes).unwrap(),
+            "off" => read_off(std::str::from_utf8(&bytes).unwrap()).unwrap(),
+            _ => read_obj(std::str::from_utf8(&bytes).unwrap()).unwrap(),
+        };
+        assert!(!mesh.faces.is_empty(), "{format}");
+        // Every truncation, and every byte replaced by a few others (in steps, to stay fast).
+        let step = (bytes.len() / 400).max(1);
+        for cut in (0..bytes.len()).step_by(step) {
+            read_all(&bytes[..cut]);
+        }
+        for at in (0..bytes.len()).step_by(step) {
+            for b in [0u8, b' ', b'\n', b'9', b'-', b'/', 0xff] {
+                let mut damaged = bytes.clone();
+                damaged[at] = b;
+                read_all(&damaged);
+            }
+        }
+    }
+}

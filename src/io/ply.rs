@@ -285,9 +285,16 @@ fn property<'a>(text: &str, tokens: &[&'a str]) -> Result<(&'a str, Kind), Parse
     }
 }
 
-/// An error unless the `vertex` element has scalar `x y z` and the `face` element a vertex
-/// index list.
+/// An error unless the `vertex` element has scalar `x y z`, the `face` element a vertex index
+/// list, and an element with records some property (a record of nothing would take no bytes).
 fn check_element(text: &str, element: &Element) -> Result<(), ParseError> {
+    if element.count > 0 && element.properties.is_empty() {
+        let message = format!(
+            "the element `{}` has {} records but no properties",
+            element.name, element.count
+        );
+        return Err(ParseError::at_token(text, element.name, message));
+    }
     let has = |wanted: &[&str], list: bool| {
         wanted.iter().all(|w| {
             element
@@ -617,6 +624,15 @@ mod tests {
             .2
             .contains("unknown PLY format"));
         assert!(error("ply\nend_header\n").2.contains("no `format` line"));
+        let empty = "ply\nformat binary_little_endian 1.0\nelement x 4000000000\nend_header\n";
+        assert_eq!(
+            error(empty),
+            (
+                3,
+                9,
+                "the element `x` has 4000000000 records but no properties".to_string()
+            )
+        );
         assert!(read_ply::<Rational>(b"solid")
             .unwrap_err()
             .to_string()
