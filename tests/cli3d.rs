@@ -600,6 +600,13 @@ fn render_draws_cavities_in_their_own_colour() {
     assert_eq!(flags.split(',').filter(|f| *f == "0").count(), 12);
     assert!(page.contains("const VIEW = [30, 20];") && page.contains("hollow.obj"));
     assert!(!page.contains("http"), "the page loads nothing");
+    // The whole space has no surface to draw.
+    fails(
+        &["render", "--from", "obj", "-", "-o", s(&png)],
+        "# yinset: the whole space (no boundary)\n",
+        2,
+        &["standard input is the whole space"],
+    );
     // With -o, nothing goes to standard output.
     assert!(ok_bytes(&["render", s(&h), "-o", s(&png)]).is_empty());
 }

@@ -139,7 +139,8 @@ pub struct LocateArgs {
 /// Sets to draw and where.
 #[derive(Args, Debug)]
 pub struct RenderArgs {
-    /// The sets, drawn in order, later ones on top (`-`: standard input).
+    /// The sets (`-`: standard input): 2D sets drawn in order, later ones on top; 3D sets drawn
+    /// together.
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
     /// The picture: FILE.svg (2D sets; `-` or absent: SVG on standard output), FILE.png or

@@ -65,11 +65,16 @@ pub fn render2<N: Num>(
 }
 
 /// The PNG or HTML picture of the 3D `layers` (all drawn together), as the output's extension
-/// says; a usage error for SVG or no output file.
+/// says; a usage error for SVG, no output file, or the whole space (nothing to draw).
 pub fn render3<N: Num>(
     layers: &[(&str, &YinSet3<N>)],
     args: &RenderArgs,
 ) -> Result<Vec<u8>, CliError> {
+    if let Some((label, _)) = layers.iter().find(|(_, s)| s.is_full()) {
+        return Err(CliError::Usage(format!(
+            "{label} is the whole space, which has no boundary surface to draw"
+        )));
+    }
     let sets: Vec<&YinSet3<N>> = layers.iter().map(|(_, s)| *s).collect();
     let view = args.view.unwrap_or_default();
     let vertices = sets.iter().map(|s| s.vertices().len()).sum();
