@@ -177,10 +177,14 @@ fn read_ascii<N: Num>(text: &str) -> Result<Mesh<N>, ParseError> {
             Err(ParseError::at_token(text, t, message))
         }
     };
-    // Skip the rest of the line of token `at - 1` (a solid's name).
+    // Skip a solid's name: the rest of the line of token `at - 1`, up to a keyword that may
+    // follow on the same line (`facet`, `endsolid`, `solid`).
     let skip_line = |at: &mut usize| {
         let line = tokens[*at - 1].1;
-        while tokens.get(*at).is_some_and(|t| t.1 == line) {
+        while tokens
+            .get(*at)
+            .is_some_and(|t| t.1 == line && !matches!(t.0, "facet" | "endsolid" | "solid"))
+        {
             *at += 1;
         }
     };
@@ -362,6 +366,14 @@ mod tests {
             Point3::int(1, 0, 0),
             Point3::int(0, 1, 0),
         ]
+    }
+
+    #[test]
+    fn ascii_on_one_line_keeps_every_facet() {
+        let one_line = TETRA.replace('\n', " ").replace("solid t", "solid my part");
+        let mesh = read_stl::<Rational>(one_line.as_bytes()).unwrap();
+        assert_eq!(mesh.faces.len(), 2);
+        assert_eq!(mesh.face_lines, vec![1, 1]);
     }
 
     #[test]
