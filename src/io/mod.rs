@@ -4,8 +4,9 @@
 //! ([`png3`]) and interactive HTML ([`html3`]) of 3D sets, from a [`scene3`].
 //!
 //! Readers parse every coordinate with [`crate::num::Num::parse`], so exact backends get the
-//! decimal text's value without rounding; they never panic, and report malformed input as a
-//! [`ParseError`] with its line and column. Rings are returned open (a closing repetition of
+//! decimal text's value without rounding (binary floats of STL and PLY are exact rationals);
+//! they never panic, and report malformed input as a [`ParseError`] with its line and column
+//! (a [`mesh::MeshError`] with its byte offset for binary files). Rings are returned open (a closing repetition of
 //! the first point is stripped); validity (enough distinct points, simplicity) is the kernel's
 //! business, not the readers'.
 
