@@ -1,6 +1,7 @@
-//! The `yinset` binary on 3D sets (OBJ files): the Boolean operations, `info`, `validate` and
-//! `locate`, pipelines through standard input, 0̂ and 1̂, invalid meshes named by their OBJ
-//! lines, usage errors (float mode, mixed dimensions), and the shared 3D data.
+//! The `yinset` binary on 3D sets (OBJ, STL, OFF, PLY files): the Boolean operations, `info`,
+//! `validate`, `locate`, `convert` between the formats and `render` (PNG, HTML), pipelines
+//! through standard input, 0̂ and 1̂, invalid meshes named by their lines, faces or bytes, usage
+//! errors (float mode, mixed dimensions), and the shared 3D data.
 
 use assert_cmd::Command;
 use predicates::prelude::*;
@@ -70,6 +71,12 @@ fn fails(args: &[&str], stdin: &str, code: i32, needles: &[&str]) {
 /// The `info` JSON of `args`.
 fn info(args: &[&str], stdin: &str) -> Value {
     serde_json::from_str(&ok(args, stdin)).expect("info prints JSON")
+}
+
+/// Run with `args`, expect success; standard output as bytes.
+fn ok_bytes(args: &[&str]) -> Vec<u8> {
+    let out = yinset().args(args).assert().success();
+    out.get_output().stdout.clone()
 }
 
 /// The 3D Yin set in an OBJ text (the command's output), read by the library.
@@ -302,7 +309,29 @@ fn usage_errors_of_3d_input() {
     fails(&["meet", s(&a), s(&b), "--to", "wkt"], "", 2, &["obj"]);
     fails(&["complement", s(&a), "-o", "x.txt"], "", 2, &["3D"]);
     fails(&["convert", s(&t), "--to", "obj"], "", 2, &["2D"]);
-    fails(&["render", s(&a)], "", 2, &["render", "2D"]);
+    fails(&["render", s(&a)], "", 2, &["-o FILE.png"]);
+    fails(&["render", s(&a), "-o", "a.svg"], "", 2, &["PNG", "HTML"]);
+    fails(&["render", s(&a), "-o", "a.gif"], "", 2, &["a.gif", ".png"]);
+    fails(
+        &["render", s(&a), "-o", "a.png", "--view", "1"],
+        "",
+        2,
+        &["AZIMUTH,ELEVATION"],
+    );
+    fails(
+        &["render", s(&a), "-o", "a.html", "--size", "99"],
+        "",
+        2,
+        &["--size"],
+    );
+    let t2 = file(&dir, "t2.txt", "0 0\n1 0\n0 1\n");
+    fails(
+        &["render", s(&t2), "-o", "t.png"],
+        "",
+        2,
+        &["2D sets are drawn as SVG"],
+    );
+    fails(&["render", s(&t2), "--view", "0,0"], "", 2, &["--view"]);
     fails(&["info", s(&a), "--fill", "nonzero"], "", 2, &["--fill"]);
 }
 
@@ -342,4 +371,242 @@ fn shared_teddy_is_rejected_naming_crossing_faces_and_lines() {
             "is on line",
         ],
     );
+}
+
+/// The hollow cube [0, 3]³ − [1, 2]³ as `hollow.obj` in `dir`.
+fn hollow_cube(dir: &TempDir) -> PathBuf {
+    let hollow = cuboid(["0", "0", "0"], ["3", "3", "3"], false)
+        + &cuboid(["1", "1", "1"], ["2", "2", "2"], true);
+    file(dir, "hollow.obj", &hollow)
+}
+
+#[test]
+fn convert_between_all_3d_formats() {
+    let dir = scratch();
+    let h = hollow_cube(&dir);
+    let want = parse(&ok(&["convert", s(&h)], ""));
+    for (name, to) in [
+        ("h.stl", None),
+        ("h.off", None),
+        ("h.ply", None),
+        ("hb.stl", Some("stl-binary")),
+        ("h.dat", Some("ply")),
+    ] {
+        let out = dir.path().join(name);
+        let mut args = vec!["convert", s(&h), "-o", s(&out)];
+        args.extend(to.iter().flat_map(|t| ["--to", *t]));
+        ok(&args, "");
+        // Back to OBJ by extension (or --from for the unknown extension), equal as sets.
+        let from: Vec<&str> = to
+            .filter(|_| name.ends_with(".dat"))
+            .map_or(vec![], |t| vec!["--from", t]);
+        let back = ok(&[&["convert", s(&out)][..], &from].concat(), "");
+        assert_eq!(parse(&back), want, "{name}");
+        let r = info(&[&["info", s(&out)][..], &from].concat(), "");
+        assert_eq!(r["volume"]["exact"], "26", "{name}");
+        assert_eq!(r["b2"], 1, "{name}");
+    }
+    let bin = std::fs::read(dir.path().join("hb.stl")).unwrap();
+    assert_eq!(bin.len(), 84 + 50 * 24, "binary STL of 24 triangles");
+    // Standard input in another format, and operands of different 3D formats.
+    let off = std::fs::read_to_string(dir.path().join("h.off")).unwrap();
+    let r = info(&["info", "--from", "off", "-"], &off);
+    assert_eq!(r["volume"]["exact"], "26");
+    let (a, b) = two_boxes(&dir);
+    let b_ply = dir.path().join("b.ply");
+    ok(&["convert", s(&b), "-o", s(&b_ply)], "");
+    let m = ok(&["meet", s(&a), s(&b_ply)], "");
+    assert_eq!(
+        parse(&m).volume().map(|v| v.to_string()),
+        Some("19/10".into())
+    );
+}
+
+#[test]
+fn conversions_that_cannot_be_exact_or_complete_are_refused() {
+    let dir = scratch();
+    let (_, b) = two_boxes(&dir);
+    let out = dir.path().join("b.stl");
+    fails(
+        &["convert", s(&b), "-o", s(&out), "--to", "stl-binary"],
+        "",
+        1,
+        &["binary STL holds 32-bit floats", "0.1", "write ASCII STL"],
+    );
+    let full = format!("{}\n", "# yinset: the whole space (no boundary)");
+    fails(
+        &["convert", "--from", "obj", "-", "--to", "off"],
+        &full,
+        2,
+        &["whole space", "--to obj"],
+    );
+    fails(
+        &["convert", s(&b), "--to", "wkt"],
+        "",
+        2,
+        &["obj, stl, stl-binary, off or ply"],
+    );
+    fails(
+        &["convert", s(&b), "-o", "x.obj", "--to", "stl"],
+        "",
+        2,
+        &["conflicting"],
+    );
+}
+
+#[test]
+fn malformed_mesh_files_are_named_with_line_face_or_byte() {
+    let dir = scratch();
+    let off = file(
+        &dir,
+        "bad.off",
+        "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 7\n3 2 0 3\n",
+    );
+    fails(
+        &["info", s(&off)],
+        "",
+        1,
+        &[
+            "bad.off",
+            "line 9, column 7",
+            "vertex index 7 is out of range",
+        ],
+    );
+    let ply = file(
+        &dir,
+        "bad.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+         property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\
+         0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n",
+    );
+    fails(
+        &["validate", s(&ply)],
+        "",
+        1,
+        &["bad.ply", "line 11, column 3", "`zero` is not a number"],
+    );
+    let stl = file(
+        &dir,
+        "bad.stl",
+        "solid s\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n\
+         endloop\n endfacet\nendsolid s\n",
+    );
+    fails(
+        &["info", s(&stl)],
+        "",
+        1,
+        &["bad.stl", "line 6", "a facet needs at least 3 vertices"],
+    );
+    // A binary STL cut inside its second facet.
+    let h = hollow_cube(&dir);
+    let bin = dir.path().join("h.stl");
+    ok(&["convert", s(&h), "-o", s(&bin), "--to", "stl-binary"], "");
+    let bytes = std::fs::read(&bin).unwrap();
+    let cut = dir.path().join("cut.stl");
+    std::fs::write(&cut, &bytes[..84 + 50 + 20]).unwrap();
+    fails(
+        &["info", s(&cut)],
+        "",
+        1,
+        &[
+            "cut.stl",
+            "byte 154",
+            "truncated binary STL",
+            "24 facets",
+            "inside facet 1",
+        ],
+    );
+    // Well-formed files whose faces do not bound a Yin set: the face and its line.
+    let open = file(
+        &dir,
+        "open.off",
+        "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n",
+    );
+    fails(
+        &["validate", s(&open)],
+        "",
+        1,
+        &["open.off` is not a Yin set", "is on line"],
+    );
+}
+
+/// The decoded `(width, height, rgb)` of PNG `bytes`.
+fn decode_png(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
+    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .expect("a valid PNG");
+    let mut rgb = vec![0; reader.output_buffer_size().expect("a buffer size")];
+    let info = reader.next_frame(&mut rgb).expect("a PNG frame");
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    (info.width, info.height, rgb)
+}
+
+/// The numbers of warm (orange: a cavity) and cool (blue: an outer surface) pixels of `rgb`.
+fn warm_and_cool(rgb: &[u8]) -> (usize, usize) {
+    let px = || rgb.chunks(3).map(|p| (i32::from(p[0]), i32::from(p[2])));
+    (
+        px().filter(|(r, b)| r > &(b + 15)).count(),
+        px().filter(|(r, b)| b > &(r + 15)).count(),
+    )
+}
+
+#[test]
+fn render_draws_cavities_in_their_own_colour() {
+    let dir = scratch();
+    let h = hollow_cube(&dir);
+    let png = dir.path().join("h.png");
+    ok(&["render", s(&h), "-o", s(&png), "--size", "120"], "");
+    let (w, ht, rgb) = decode_png(&std::fs::read(&png).unwrap());
+    assert_eq!((w, ht), (120, 120));
+    let (warm, cool) = warm_and_cool(&rgb);
+    assert!(warm > 100 && cool > 100, "warm {warm}, cool {cool}");
+    // A box without a cavity has no warm pixel; from another view the picture differs.
+    let (a, _) = two_boxes(&dir);
+    let pa = dir.path().join("a.png");
+    ok(&["render", s(&a), "-o", s(&pa), "--size", "64"], "");
+    let (_, _, box_rgb) = decode_png(&std::fs::read(&pa).unwrap());
+    let (warm, cool) = warm_and_cool(&box_rgb);
+    assert!(warm == 0 && cool > 100, "warm {warm}, cool {cool}");
+    ok(
+        &[
+            "render",
+            s(&a),
+            "-o",
+            s(&pa),
+            "--size",
+            "64",
+            "--view",
+            "10,-40",
+        ],
+        "",
+    );
+    let (_, _, turned) = decode_png(&std::fs::read(&pa).unwrap());
+    assert_ne!(turned, box_rgb);
+    // The complement (unbounded) is drawn by its one negatively oriented surface: warm only.
+    let out = file(&dir, "out.obj", &ok(&["complement", s(&a)], ""));
+    ok(&["render", s(&out), "-o", s(&pa), "--size", "64"], "");
+    let (warm, cool) = warm_and_cool(&decode_png(&std::fs::read(&pa).unwrap()).2);
+    assert!(warm > 100 && cool == 0, "warm {warm}, cool {cool}");
+    // The HTML page holds every triangle with its orientation, and loads nothing.
+    let html = dir.path().join("h.html");
+    ok(&["render", s(&h), "-o", s(&html), "--view", "30,20"], "");
+    let page = std::fs::read_to_string(&html).unwrap();
+    let flags = page
+        .split("\"s\": [")
+        .nth(1)
+        .and_then(|t| t.split(']').next())
+        .unwrap();
+    assert_eq!(flags.split(',').filter(|f| *f == "1").count(), 12);
+    assert_eq!(flags.split(',').filter(|f| *f == "0").count(), 12);
+    assert!(page.contains("const VIEW = [30, 20];") && page.contains("hollow.obj"));
+    assert!(!page.contains("http"), "the page loads nothing");
+    // The whole space has no surface to draw.
+    fails(
+        &["render", "--from", "obj", "-", "-o", s(&png)],
+        "# yinset: the whole space (no boundary)\n",
+        2,
+        &["standard input is the whole space"],
+    );
+    // With -o, nothing goes to standard output.
+    assert!(ok_bytes(&["render", s(&h), "-o", s(&png)]).is_empty());
 }

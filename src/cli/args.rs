@@ -1,6 +1,7 @@
 //! The command line's grammar: subcommands and their options (clap derive).
 
 use super::format::Format;
+use crate::io::scene3::View;
 use crate::yin2::FillRule;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::{Path, PathBuf};
@@ -12,9 +13,9 @@ use std::path::{Path, PathBuf};
     version,
     about,
     after_help = "With no subcommand, runs the built-in demonstration.\n\
-                  Inputs are yin2 text, WKT or GeoJSON (2D sets) or OBJ (3D sets), chosen by \
-                  --from or the file extension (.txt/.yin2, .wkt, .geojson/.json, .obj); \
-                  `-` is standard input or output.\n\
+                  Inputs are yin2 text, WKT or GeoJSON (2D sets) or OBJ, STL, OFF or PLY (3D \
+                  sets), chosen by --from or the file extension (.txt/.yin2, .wkt, \
+                  .geojson/.json; .obj, .stl, .off, .ply); `-` is standard input or output.\n\
                   Exit status: 0 success, 1 bad input or failed checks, 2 wrong usage."
 )]
 pub struct Cli {
@@ -44,7 +45,7 @@ pub enum Command {
     /// Print Betti numbers, curves (surfaces), Hasse diagram, area (volume) and bounding box as
     /// JSON.
     Info(Single),
-    /// Draw one or more sets as SVG.
+    /// Draw one or more sets: 2D sets as SVG; 3D sets as PNG or an interactive HTML page.
     Render(RenderArgs),
     /// Check that the input is a Yin set's boundary, explaining why not.
     Validate(Single),
@@ -57,8 +58,8 @@ pub enum Command {
 /// How inputs are read.
 #[derive(Args, Debug, Clone, Default)]
 pub struct ReadOpts {
-    /// Input format (default: from the file extension; for standard input, that of the other
-    /// inputs if they are OBJ, else yin2).
+    /// Input format (default: from the file extension; for standard input, yin2, or OBJ if
+    /// the other inputs are 3D).
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub from: Option<Format>,
     /// Read the rings as polygon soup and take the region they cover under this rule.
@@ -75,7 +76,8 @@ pub struct WriteOpts {
     /// Output file (`-` or absent: standard output); its extension picks the format.
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
-    /// Output format (default: from the --output extension, else yin2 for 2D sets, obj for 3D).
+    /// Output format (default: from the --output extension, else yin2 for 2D sets, obj for 3D;
+    /// stl-binary writes binary STL).
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub to: Option<Format>,
 }
@@ -137,12 +139,21 @@ pub struct LocateArgs {
 /// Sets to draw and where.
 #[derive(Args, Debug)]
 pub struct RenderArgs {
-    /// The sets, drawn in order, later ones on top (`-`: standard input).
+    /// The sets (`-`: standard input): 2D sets drawn in order, later ones on top; 3D sets drawn
+    /// together.
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
-    /// The SVG file (`-` or absent: standard output).
+    /// The picture: FILE.svg (2D sets; `-` or absent: SVG on standard output), FILE.png or
+    /// FILE.html (3D sets).
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// 3D only: the view direction, azimuth (about the z axis, from the x axis) and elevation
+    /// in degrees [default: -60,25].
+    #[arg(long, value_name = "AZIMUTH,ELEVATION", allow_hyphen_values = true)]
+    pub view: Option<View>,
+    /// 3D PNG only: the width and height of the picture in pixels [default: 800].
+    #[arg(long, value_name = "PIXELS", value_parser = clap::value_parser!(u32).range(16..=8192))]
+    pub size: Option<u32>,
     #[command(flatten)]
     pub read: ReadOpts,
 }

@@ -1,9 +1,11 @@
-//! Text of any format → oriented rings (2D) or faces (3D, OBJ), remembering where each ring or
-//! face came from for messages.
+//! Text of any format → oriented rings (2D) or faces (3D: OBJ, STL, OFF, PLY), remembering where
+//! each ring or face came from for messages.
 
 use super::format::Format;
-use crate::io::obj::{read_obj, ObjMesh};
+use crate::io::mesh::{Mesh, MeshError};
+use crate::io::obj::read_obj;
 use crate::io::{geojson, wkt, yin2_text, ParseError, Polygon};
+use crate::io::{off::read_off, ply::read_ply, stl::read_stl};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinError;
@@ -21,7 +23,7 @@ pub enum Decoded<B> {
     /// The whole plane or space (a text without boundary but with the [`FULL_PLANE`] or
     /// [`WHOLE_SPACE`] line).
     Full,
-    /// The boundary: [`Rings`] or an [`ObjMesh`] (none: the empty set).
+    /// The boundary: [`Rings`] or a [`Mesh`] (none: the empty set).
     Boundary(B),
 }
 
@@ -61,17 +63,45 @@ pub fn decode<N: Num>(text: &str, format: Format) -> Result<Decoded<Rings<N>>, P
         }
         Format::Wkt => wkt::read_polygons(text)?,
         Format::Geojson => geojson::read_polygons(text)?,
-        Format::Obj => return Err(obj_is_3d()),
+        Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply => {
+            return Err(mesh_is_3d(format))
+        }
     };
     Ok(Decoded::Boundary(Rings::of_polygons(polygons)))
 }
 
-/// Decode an OBJ text: its mesh (no faces: the empty set), or the whole space.
-pub fn decode_obj<N: Num>(text: &str) -> Result<Decoded<ObjMesh<N>>, ParseError> {
-    let mesh = read_obj(text)?;
-    if mesh.faces.is_empty() && has_line(text, WHOLE_SPACE) {
-        return Ok(Decoded::Full);
-    }
+/// Decode the file `bytes` in `format`, a format of 3D sets: its mesh (no faces: the empty set),
+/// or the whole space (OBJ only).
+pub fn decode_mesh<N: Num>(bytes: &[u8], format: Format) -> Result<Decoded<Mesh<N>>, MeshError> {
+    let text = || {
+        std::str::from_utf8(bytes).map_err(|e| MeshError::Binary {
+            offset: e.valid_up_to(),
+            message: format!(
+                "{} is a text format, and this byte is not UTF-8 text",
+                format.name()
+            ),
+        })
+    };
+    let mesh = match format {
+        Format::Obj => {
+            let text = text()?;
+            let mesh = read_obj(text)?;
+            if mesh.faces.is_empty() && has_line(text, WHOLE_SPACE) {
+                return Ok(Decoded::Full);
+            }
+            mesh
+        }
+        Format::Stl | Format::StlBinary => read_stl(bytes)?,
+        Format::Off => read_off(text()?)?,
+        Format::Ply => read_ply(bytes)?,
+        Format::Yin2 | Format::Wkt | Format::Geojson => {
+            return Err(MeshError::Text(ParseError {
+                line: 1,
+                column: 1,
+                message: format!("{} holds 2D rings, not 3D faces", format.name()),
+            }))
+        }
+    };
     Ok(Decoded::Boundary(mesh))
 }
 
@@ -80,17 +110,17 @@ fn has_line(text: &str, line: &str) -> bool {
     text.lines().any(|l| l.trim() == line)
 }
 
-/// The error of decoding OBJ as a 2D format (the command line never asks for it).
-fn obj_is_3d() -> ParseError {
+/// The error of decoding a 3D `format` as a 2D one (the command line never asks for it).
+fn mesh_is_3d(format: Format) -> ParseError {
     ParseError {
         line: 1,
         column: 1,
-        message: "OBJ holds 3D sets, not 2D rings".to_string(),
+        message: format!("{} holds 3D sets, not 2D rings", format.name()),
     }
 }
 
-/// Where the faces named by `e` are in an OBJ text whose `f` lines are `face_lines`, as a
-/// sentence to append to it.
+/// Where the faces named by `e` are in a mesh text whose faces are on `face_lines`, as a
+/// sentence to append to it (nothing for binary files, whose faces have no lines).
 pub fn locate_faces(e: &Yin3Error, face_lines: &[usize]) -> String {
     let faces = match e {
         Yin3Error::IndexOutOfRange { face, .. }
@@ -284,7 +314,8 @@ mod tests {
 
     #[test]
     fn obj_without_faces_is_empty_or_the_whole_space() {
-        let mesh = |text: &str| match decode_obj::<Rational>(text).unwrap() {
+        let mesh = |text: &str| match decode_mesh::<Rational>(text.as_bytes(), Format::Obj).unwrap()
+        {
             Decoded::Boundary(m) => Some(m),
             Decoded::Full => None,
         };
@@ -294,6 +325,20 @@ mod tests {
         let text = format!("{WHOLE_SPACE}\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert_eq!(mesh(&text).unwrap().faces.len(), 1);
         assert!(decode::<Rational>("v 0 0 0", Format::Obj).is_err());
+        assert!(decode_mesh::<Rational>(b"0 0\n1 0\n0 1\n", Format::Yin2).is_err());
+        // The whole-space line stands for 1̂ in OBJ only.
+        let off = format!("{WHOLE_SPACE}\nOFF\n0 0 0\n");
+        assert!(matches!(
+            decode_mesh::<Rational>(off.as_bytes(), Format::Off),
+            Ok(Decoded::Boundary(m)) if m.faces.is_empty()
+        ));
+        let Err(e) = decode_mesh::<Rational>(b"OFF\n\xff", Format::Off) else {
+            panic!("not UTF-8, yet read")
+        };
+        assert_eq!(
+            e.to_string(),
+            "byte 4: off is a text format, and this byte is not UTF-8 text"
+        );
     }
 
     #[test]

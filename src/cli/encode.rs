@@ -1,10 +1,13 @@
-//! A Yin set → text of any format (yin2 exactly; OGC polygons only for bounded sets; OBJ for
-//! 3D sets, one object per glued surface).
+//! A Yin set → a file of any format (yin2 exactly; OGC polygons only for bounded sets; OBJ, one
+//! object per glued surface, STL, OFF and PLY for 3D sets).
 
 use super::decode::{FULL_PLANE, WHOLE_SPACE};
 use super::error::CliError;
 use super::format::{Dimension, Format};
 use crate::io::obj::write_obj;
+use crate::io::off::write_off;
+use crate::io::ply::write_ply;
+use crate::io::stl::{write_stl_ascii, write_stl_binary};
 use crate::io::{geojson, wkt, yin2_text, Polygon};
 use crate::kernel::Point;
 use crate::num::Num;
@@ -17,15 +20,34 @@ pub fn encode<N: Num>(set: &YinSet2<N>, format: Format) -> Result<String, CliErr
         Format::Yin2 => Ok(yin2(set)),
         Format::Wkt => Ok(wkt::write_multipolygon(&polygons(set, "WKT")?) + "\n"),
         Format::Geojson => Ok(geojson::write_multipolygon(&polygons(set, "GeoJSON")?) + "\n"),
-        Format::Obj => Err(wrong_dimension(format, Dimension::Two)),
+        Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply => {
+            Err(wrong_dimension(format, Dimension::Two))
+        }
     }
 }
 
-/// The text of the 3D `set` in `format` (OBJ, the one 3D format).
-pub fn encode3<N: Num>(set: &YinSet3<N>, format: Format) -> Result<String, CliError> {
+/// The file of the 3D `set` in `format`. Only OBJ can hold 1̂, by its whole-space comment
+/// line; the triangles of STL, OFF and PLY bound unbounded sets as they bound bounded ones
+/// (normals out of the set).
+pub fn encode3<N: Num>(set: &YinSet3<N>, format: Format) -> Result<Vec<u8>, CliError> {
+    let (v, t) = (set.vertices(), set.triangles());
+    let no_whole_space = || {
+        CliError::Usage(format!(
+            "the whole space has no boundary triangles, and {} has no way to say it: \
+             write obj instead (--to obj)",
+            format.name()
+        ))
+    };
     match format {
-        Format::Obj => Ok(obj(set)),
-        _ => Err(wrong_dimension(format, Dimension::Three)),
+        Format::Obj => Ok(obj(set).into_bytes()),
+        _ if set.is_full() => Err(no_whole_space()),
+        Format::Stl => Ok(write_stl_ascii(v, t).into_bytes()),
+        Format::StlBinary => Ok(write_stl_binary(v, t)?),
+        Format::Off => Ok(write_off(v, t).into_bytes()),
+        Format::Ply => Ok(write_ply(v, t).into_bytes()),
+        Format::Yin2 | Format::Wkt | Format::Geojson => {
+            Err(wrong_dimension(format, Dimension::Three))
+        }
     }
 }
 
@@ -156,22 +178,23 @@ mod tests {
     #[test]
     fn obj_has_one_object_per_glued_surface() {
         let hollow = &cube(0, 3) - &cube(1, 2);
-        let text = encode3(&hollow, Format::Obj).unwrap();
+        let text = String::from_utf8(encode3(&hollow, Format::Obj).unwrap()).unwrap();
         assert!(text.contains("o surface_0_positive\n"), "{text}");
         assert!(text.contains("o surface_1_negative\n"), "{text}");
         assert_eq!(text.matches("\no ").count(), 2);
-        let outside = encode3(&hollow.complement(), Format::Obj).unwrap();
+        let outside =
+            String::from_utf8(encode3(&hollow.complement(), Format::Obj).unwrap()).unwrap();
         assert!(
             outside.starts_with("# yinset: the set is unbounded"),
             "{outside}"
         );
         assert_eq!(
             encode3(&YinSet3::<Rational>::full(), Format::Obj).unwrap(),
-            format!("{WHOLE_SPACE}\n")
+            format!("{WHOLE_SPACE}\n").into_bytes()
         );
         assert_eq!(
             encode3(&YinSet3::<Rational>::empty(), Format::Obj).unwrap(),
-            ""
+            b""
         );
         assert!(encode3(&hollow, Format::Wkt).is_err());
         assert!(encode(&square_with_hole(), Format::Obj).is_err());

@@ -1,5 +1,7 @@
 //! What can go wrong on the command line, each naming what and where, and its exit status.
 
+use crate::io::mesh::MeshError;
+use crate::io::stl::NotF32;
 use crate::io::ParseError;
 use std::process::ExitCode;
 
@@ -27,6 +29,12 @@ pub enum CliError {
     /// Malformed text.
     #[error("{name}: {source}")]
     Parse { name: String, source: ParseError },
+    /// A malformed mesh file (text or binary).
+    #[error("{name}: {source}")]
+    Mesh { name: String, source: MeshError },
+    /// A set that the output format cannot hold exactly.
+    #[error(transparent)]
+    NotF32(#[from] NotF32),
     /// Well-formed text whose curves (or faces) do not bound a Yin set.
     #[error("{name} is not a Yin set: {source}{note}")]
     Invalid {

@@ -1,4 +1,4 @@
-//! The file formats — three of 2D sets, OBJ of 3D sets — and how a file's format is chosen: by
+//! The file formats — three of 2D sets, four of 3D sets — and how a file's format is chosen: by
 //! option, else by extension.
 
 use super::error::CliError;
@@ -14,16 +14,30 @@ pub enum Format {
     Wkt,
     /// GeoJSON: Polygon, MultiPolygon, Feature, FeatureCollection.
     Geojson,
-    /// Wavefront OBJ: the triangles bounding a 3D set.
+    /// Wavefront OBJ: the triangles bounding a 3D set, one object per glued surface.
     Obj,
+    /// STL, ASCII or binary when read; ASCII (exact) when written.
+    Stl,
+    /// Binary STL when written (32-bit float coordinates: only sets whose coordinates are such
+    /// floats); read as `stl`.
+    StlBinary,
+    /// OFF (Object File Format), ASCII.
+    Off,
+    /// PLY (Stanford polygon file), ASCII or binary when read; ASCII when written.
+    Ply,
 }
+
+/// The extensions of the formats, for messages.
+pub const EXTENSIONS: &str = ".txt/.yin2, .wkt, .geojson/.json (2D); .obj, .stl, .off, .ply (3D)";
+/// The format names, for messages.
+pub const NAMES: &str = "yin2|wkt|geojson|obj|stl|stl-binary|off|ply";
 
 /// The dimension of the sets a format holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Dimension {
     /// Plane sets: yin2, WKT, GeoJSON.
     Two,
-    /// Sets in space: OBJ.
+    /// Sets in space: OBJ, STL, OFF, PLY.
     Three,
 }
 
@@ -60,6 +74,9 @@ impl Format {
             "wkt" => Some(Format::Wkt),
             "geojson" | "json" => Some(Format::Geojson),
             "obj" => Some(Format::Obj),
+            "stl" => Some(Format::Stl),
+            "off" => Some(Format::Off),
+            "ply" => Some(Format::Ply),
             _ => None,
         }
     }
@@ -81,8 +98,8 @@ impl Format {
             None if is_std(path) => dimension.default_format(),
             None => Format::of_extension(path).ok_or_else(|| {
                 CliError::Usage(format!(
-                    "cannot tell the format of `{}` from its extension \
-                     (.txt/.yin2, .wkt, .geojson/.json, .obj): give --from yin2|wkt|geojson|obj",
+                    "cannot tell the format of `{}` from its extension ({EXTENSIONS}): \
+                     give --from {NAMES}",
                     path.display()
                 ))
             })?,
@@ -94,8 +111,10 @@ impl Format {
     /// The dimension of the sets this format holds.
     pub fn dimension(self) -> Dimension {
         match self {
-            Format::Obj => Dimension::Three,
-            _ => Dimension::Two,
+            Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply => {
+                Dimension::Three
+            }
+            Format::Yin2 | Format::Wkt | Format::Geojson => Dimension::Two,
         }
     }
 
@@ -106,7 +125,7 @@ impl Format {
         }
         let instead = match dimension {
             Dimension::Two => "yin2, wkt or geojson",
-            Dimension::Three => "obj",
+            Dimension::Three => "obj, stl, stl-binary, off or ply",
         };
         Err(CliError::Usage(format!(
             "{} holds {} sets, but these are {} sets: use {instead}",
@@ -139,21 +158,29 @@ impl Format {
             .filter(|p| !is_std(p))
             .map(|p| (p, Format::of_extension(p)));
         match (to, by_ext) {
-            (Some(t), Some((p, Some(e)))) if t != e => Err(CliError::Usage(format!(
-                "conflicting options: --to {} but --output `{}` has the extension of {}",
-                t.name(),
-                p.display(),
-                e.name()
-            ))),
+            (Some(t), Some((p, Some(e)))) if !t.writes_extension_of(e) => {
+                Err(CliError::Usage(format!(
+                    "conflicting options: --to {} but --output `{}` has the extension of {}",
+                    t.name(),
+                    p.display(),
+                    e.name()
+                )))
+            }
             (Some(t), _) => Ok(t),
             (None, Some((_, Some(e)))) => Ok(e),
             (None, Some((p, None))) => Err(CliError::Usage(format!(
-                "cannot tell the output format from `{}`: give --to yin2|wkt|geojson|obj or use \
-                 the extension .txt/.yin2, .wkt, .geojson/.json or .obj",
+                "cannot tell the output format from `{}`: give --to {NAMES} or use \
+                 one of the extensions {EXTENSIONS}",
                 p.display()
             ))),
             (None, None) => Ok(default),
         }
+    }
+
+    /// True if output in this format may have the extension of format `ext` (binary STL is
+    /// `.stl` too).
+    fn writes_extension_of(self, ext: Format) -> bool {
+        self == ext || (self, ext) == (Format::StlBinary, Format::Stl)
     }
 
     /// The name used on the command line.
@@ -163,6 +190,10 @@ impl Format {
             Format::Wkt => "wkt",
             Format::Geojson => "geojson",
             Format::Obj => "obj",
+            Format::Stl => "stl",
+            Format::StlBinary => "stl-binary",
+            Format::Off => "off",
+            Format::Ply => "ply",
         }
     }
 }

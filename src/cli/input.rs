@@ -1,12 +1,12 @@
 //! Files and standard input → Yin sets: read, decode, validate (or fill), with located errors;
-//! 2D sets from yin2, WKT and GeoJSON, 3D sets from OBJ.
+//! 2D sets from yin2, WKT and GeoJSON, 3D sets from OBJ, STL, OFF and PLY.
 
 use super::args::{FillArg, ReadOpts};
-use super::decode::{decode, decode_obj, locate_faces, Decoded, Rings};
+use super::decode::{decode, decode_mesh, locate_faces, Decoded, Rings};
 use super::error::CliError;
 use super::format::{is_std, Dimension, Format};
 use super::progress;
-use crate::io::obj::ObjMesh;
+use crate::io::mesh::Mesh;
 use crate::io::ParseError;
 use crate::num::Num;
 use crate::yin2::YinSet2;
@@ -35,13 +35,21 @@ pub fn one_stdin<'a>(paths: impl IntoIterator<Item = &'a Path>) -> Result<(), Cl
 
 /// The text of `path` (`-`: standard input).
 pub fn read_text(path: &Path) -> Result<String, CliError> {
-    let mut text = String::new();
+    String::from_utf8(read_bytes(path)?).map_err(|e| CliError::Read {
+        name: name(path),
+        source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
+    })
+}
+
+/// The bytes of `path` (`-`: standard input).
+pub fn read_bytes(path: &Path) -> Result<Vec<u8>, CliError> {
+    let mut bytes = Vec::new();
     let read = if is_std(path) {
-        std::io::stdin().read_to_string(&mut text).map(|_| ())
+        std::io::stdin().read_to_end(&mut bytes).map(|_| ())
     } else {
-        std::fs::File::open(path).and_then(|mut f| f.read_to_string(&mut text).map(|_| ()))
+        std::fs::File::open(path).and_then(|mut f| f.read_to_end(&mut bytes).map(|_| ()))
     };
-    read.map(|()| text).map_err(|source| CliError::Read {
+    read.map(|()| bytes).map_err(|source| CliError::Read {
         name: name(path),
         source,
     })
@@ -70,17 +78,22 @@ pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2
     })
 }
 
-/// The 3D Yin set in the OBJ file `path`, with number context `ctx`: 0̂ if it has no faces,
-/// 1̂ if it is the whole-space comment line.
+/// The 3D Yin set in the mesh file `path`, with number context `ctx`: 0̂ if it has no faces,
+/// 1̂ if it is OBJ's whole-space comment line.
 pub fn load3<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet3<N>, CliError> {
-    Format::of_input(path, opts.from, Dimension::Three)?;
-    let text = read_text(path)?;
-    let mesh = match decode_obj::<N>(&text) {
+    let format = Format::of_input(path, opts.from, Dimension::Three)?;
+    let bytes = read_bytes(path)?;
+    let mesh = match decode_mesh::<N>(&bytes, format) {
         Ok(Decoded::Full) => return Ok(YinSet3::full()),
         Ok(Decoded::Boundary(mesh)) => mesh,
-        Err(source) => return Err(parse_error(path, source)),
+        Err(source) => {
+            return Err(CliError::Mesh {
+                name: name(path),
+                source,
+            })
+        }
     };
-    let ObjMesh {
+    let Mesh {
         vertices,
         faces,
         face_lines,

@@ -1,6 +1,6 @@
 //! The `yinset` command line (issue 6): Boolean operations, queries, pictures and format
 //! conversion over yin2 text, WKT and GeoJSON files, exact by default, float mode with `--eps`;
-//! and the same operations and queries on 3D sets from OBJ files, exactly (issue 16).
+//! and the same on 3D sets from OBJ, STL, OFF and PLY files, exactly (issues 16, 18).
 
 mod args;
 mod axioms;
@@ -13,6 +13,7 @@ mod input;
 mod locate;
 mod ops;
 mod output;
+mod picture;
 mod progress;
 mod set;
 
@@ -27,7 +28,7 @@ use clap::Parser;
 use format::{Dimension, Format};
 use input::{name, one_stdin, read_text};
 use ops::{operate, Op};
-use output::write_text;
+use output::{write_bytes, write_text};
 use set::Set;
 use std::path::Path;
 use std::process::ExitCode;
@@ -67,8 +68,8 @@ pub fn run(command: &Command) -> Result<(), CliError> {
         (Dimension::Two, Some(eps)) => run_in::<YinSet2<Float>>(command, Tolerance::new(eps)),
         (Dimension::Three, None) => run_in::<YinSet3<Exact>>(command, ()),
         (Dimension::Three, Some(_)) => Err(CliError::Usage(
-            "--eps: 3D float mode is not available yet; 3D sets (OBJ) are computed exactly, \
-             without --eps"
+            "--eps: 3D float mode is not available yet; 3D sets (OBJ, STL, OFF, PLY) are \
+             computed exactly, without --eps"
                 .to_string(),
         )),
     }
@@ -94,12 +95,10 @@ fn dimension(command: &Command, read: &ReadOpts) -> Result<Dimension, CliError> 
             fb.name()
         ))),
         (_, Some(_)) if read.fill.is_some() => Err(CliError::Usage(
-            "--fill takes 2D rings as polygon soup; OBJ faces must bound a 3D set as given"
+            "--fill takes 2D rings as polygon soup; the faces of a 3D mesh must bound a 3D set \
+             as given"
                 .to_string(),
         )),
-        (_, Some(_)) if matches!(command, Command::Render(_)) => {
-            Err(CliError::Usage(set::NO_3D_RENDER.to_string()))
-        }
         (_, Some(_)) => Ok(Dimension::Three),
         (_, None) => Ok(Dimension::Two),
     }
@@ -155,7 +154,7 @@ fn run_in<S: Set>(command: &Command, ctx: S::Ctx) -> Result<(), CliError> {
                 .collect::<Result<Vec<_>, _>>()?;
             let labels: Vec<String> = r.inputs.iter().map(|p| label(p)).collect();
             let layers: Vec<(&str, _)> = labels.iter().map(String::as_str).zip(&sets).collect();
-            write_text(r.output.as_deref(), &S::svg(&layers)?)
+            write_bytes(r.output.as_deref(), &S::render(&layers, r)?)
         }
         Command::Axioms(a) => axioms::run::<Exact>(a.n, a.seed),
     }

@@ -5,7 +5,7 @@ use super::args::{ReadOpts, WriteOpts};
 use super::error::CliError;
 use super::format::Format;
 use super::input::one_stdin;
-use super::output::write_text;
+use super::output::write_bytes;
 use super::progress;
 use super::set::Set;
 use std::path::Path;
@@ -67,7 +67,7 @@ pub fn operate<S: Set>(
         )
     };
     let result = progress::while_working(message, vertices, || op.apply(first, rest));
-    write_text(write.output.as_deref(), &result.encode(format)?)
+    write_bytes(write.output.as_deref(), &result.encode(format)?)
 }
 
 #[cfg(test)]

@@ -1,13 +1,13 @@
 //! The two kinds of sets the command works on, 2D (`YinSet2`: yin2, WKT, GeoJSON) and 3D
-//! (`YinSet3`: OBJ), behind one interface, so that each subcommand has one generic path.
+//! (`YinSet3`: OBJ, STL, OFF, PLY), behind one interface, so that each subcommand has one
+//! generic path.
 
-use super::args::ReadOpts;
+use super::args::{ReadOpts, RenderArgs};
 use super::encode::{encode, encode3};
 use super::error::CliError;
 use super::format::{Dimension, Format};
 use super::input::{load, load3};
-use super::{info, locate};
-use crate::io::svg::write_svg;
+use super::{info, locate, picture};
 use crate::io::ParseError;
 use crate::num::Num;
 use crate::yin2::YinSet2;
@@ -24,8 +24,8 @@ pub trait Set: Clone {
     const DIMENSION: Dimension;
     /// The set in `path`, read as `opts` say, with number context `ctx`.
     fn load(path: &Path, opts: &ReadOpts, ctx: Self::Ctx) -> Result<Self, CliError>;
-    /// The text of the set in `format`.
-    fn encode(&self, format: Format) -> Result<String, CliError>;
+    /// The file of the set in `format`.
+    fn encode(&self, format: Format) -> Result<Vec<u8>, CliError>;
     /// A ∧ B.
     fn meet(&self, other: &Self) -> Self;
     /// A ∨ B.
@@ -44,8 +44,8 @@ pub trait Set: Clone {
     fn describe(&self) -> String;
     /// The answer of `locate` for the points in `text`, one word per line.
     fn locate_text(&self, text: &str) -> Result<String, ParseError>;
-    /// An SVG picture of labelled sets (2D only).
-    fn svg(layers: &[(&str, &Self)]) -> Result<String, CliError>;
+    /// The picture of labelled sets that `render` asks for.
+    fn render(layers: &[(&str, &Self)], args: &RenderArgs) -> Result<Vec<u8>, CliError>;
 }
 
 /// The Boolean algebra of a `Set` impl: the kernel's operations of the same names.
@@ -77,8 +77,8 @@ impl<N: Num> Set for YinSet2<N> {
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load(path, opts, ctx)
     }
-    fn encode(&self, format: Format) -> Result<String, CliError> {
-        encode(self, format)
+    fn encode(&self, format: Format) -> Result<Vec<u8>, CliError> {
+        encode(self, format).map(String::into_bytes)
     }
     fn size(&self) -> usize {
         self.curves().iter().map(|c| c.len()).sum()
@@ -92,8 +92,8 @@ impl<N: Num> Set for YinSet2<N> {
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
         Ok(locate::classify(self.locate(&locate::read_points(text)?)))
     }
-    fn svg(layers: &[(&str, &Self)]) -> Result<String, CliError> {
-        Ok(write_svg(layers))
+    fn render(layers: &[(&str, &Self)], args: &RenderArgs) -> Result<Vec<u8>, CliError> {
+        picture::render2(layers, args)
     }
 }
 
@@ -105,7 +105,7 @@ impl<N: Num> Set for YinSet3<N> {
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load3(path, opts, ctx)
     }
-    fn encode(&self, format: Format) -> Result<String, CliError> {
+    fn encode(&self, format: Format) -> Result<Vec<u8>, CliError> {
         encode3(self, format)
     }
     fn size(&self) -> usize {
@@ -120,10 +120,7 @@ impl<N: Num> Set for YinSet3<N> {
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
         Ok(locate::classify(self.locate(&locate::read_points3(text)?)))
     }
-    fn svg(_: &[(&str, &Self)]) -> Result<String, CliError> {
-        Err(CliError::Usage(NO_3D_RENDER.to_string()))
+    fn render(layers: &[(&str, &Self)], args: &RenderArgs) -> Result<Vec<u8>, CliError> {
+        picture::render3(layers, args)
     }
 }
-
-/// Why `render` refuses 3D sets.
-pub const NO_3D_RENDER: &str = "render draws 2D sets only: 3D sets (OBJ) cannot be drawn yet";

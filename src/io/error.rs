@@ -23,6 +23,12 @@ impl ParseError {
             message: message.into(),
         }
     }
+
+    /// The error `message` at `token`, a subslice of `text`.
+    pub(crate) fn at_token(text: &str, token: &str, message: impl Into<String>) -> ParseError {
+        let offset = (token.as_ptr() as usize).saturating_sub(text.as_ptr() as usize);
+        ParseError::at(text, offset, message)
+    }
 }
 
 /// The 1-based line and column (in characters) of byte `offset` of `text`, clamped to its end.

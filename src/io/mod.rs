@@ -1,16 +1,26 @@
-//! Text formats read and written exactly: the `yin2` curve lists ([`yin2_text`]), WKT
-//! ([`wkt`]), GeoJSON ([`geojson`]) and Wavefront OBJ meshes in 3D ([`obj`]).
+//! Formats read and written exactly: the `yin2` curve lists ([`yin2_text`]), WKT ([`wkt`]) and
+//! GeoJSON ([`geojson`]) in 2D; the meshes ([`mesh`]) of Wavefront OBJ ([`obj`]), STL
+//! ([`stl`]), OFF ([`off`]) and PLY ([`ply`]) in 3D. Pictures: SVG of 2D sets ([`svg`]); PNG
+//! ([`png3`]) and interactive HTML ([`html3`]) of 3D sets, from a [`scene3`].
 //!
 //! Readers parse every coordinate with [`crate::num::Num::parse`], so exact backends get the
-//! decimal text's value without rounding; they never panic, and report malformed input as a
-//! [`ParseError`] with its line and column. Rings are returned open (a closing repetition of
+//! decimal text's value without rounding (binary floats of STL and PLY are exact rationals);
+//! they never panic, and report malformed input as a [`ParseError`] with its line and column
+//! (a [`mesh::MeshError`] with its byte offset for binary files). Rings are returned open (a closing repetition of
 //! the first point is stripped); validity (enough distinct points, simplicity) is the kernel's
 //! business, not the readers'.
 
 mod decimal;
 mod error;
 pub mod geojson;
+pub mod html3;
+pub mod mesh;
 pub mod obj;
+pub mod off;
+pub mod ply;
+pub mod png3;
+pub mod scene3;
+pub mod stl;
 pub mod svg;
 #[cfg(test)]
 mod testdata;

@@ -1,5 +1,9 @@
 //! Wavefront OBJ polygon meshes, read and written exactly.
 //!
+//! The reader is this crate's own rather than the `tobj` crate's: `tobj` parses coordinates
+//! into `f32` or `f64`, rounding decimals such as `0.1`, so it cannot give exact mode the
+//! values the file says.
+//!
 //! ```text
 //! # yinset
 //! v 0 0 0
@@ -41,31 +45,16 @@
 //! OBJ: [`read_obj`] reads it back exactly, other OBJ tools do not.
 
 use super::decimal::exact_text;
+use super::mesh::{coordinate, used, Mesh};
 use super::ParseError;
 use crate::kernel::Point3;
 use crate::num::Num;
 use std::fmt::Write;
 
-/// A polygon mesh as an OBJ file gives it: vertices and faces (0-based vertex indices, any
-/// number ≥ 3 of them).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ObjMesh<N> {
-    /// The vertices, in the order of their `v` lines.
-    pub vertices: Vec<Point3<N>>,
-    /// The faces, in the order of their `f` lines: 0-based indices into `vertices`, at least 3.
-    pub faces: Vec<Vec<usize>>,
-    /// 1-based line number of each face's `f` line, for error messages that name the face.
-    pub face_lines: Vec<usize>,
-}
-
 /// Read the vertices and faces of an OBJ text (see the [module documentation](self) for what
 /// is accepted).
-pub fn read_obj<N: Num>(text: &str) -> Result<ObjMesh<N>, ParseError> {
-    let mut mesh = ObjMesh {
-        vertices: Vec::new(),
-        faces: Vec::new(),
-        face_lines: Vec::new(),
-    };
+pub fn read_obj<N: Num>(text: &str) -> Result<Mesh<N>, ParseError> {
+    let mut mesh = Mesh::default();
     for (number, line) in text.split('\n').enumerate() {
         let content = line.split('#').next().unwrap_or_default();
         let mut tokens = content.split_whitespace();
@@ -84,11 +73,7 @@ pub fn read_obj<N: Num>(text: &str) -> Result<ObjMesh<N>, ParseError> {
 
 /// The error `message` at `token`, a subslice of `text`.
 fn at(text: &str, token: &str, message: impl Into<String>) -> ParseError {
-    ParseError::at(
-        text,
-        token.as_ptr() as usize - text.as_ptr() as usize,
-        message,
-    )
+    ParseError::at_token(text, token, message)
 }
 
 /// The vertex of a `v` line (`content`, comment stripped) whose remaining tokens are `tokens`.
@@ -98,14 +83,7 @@ fn vertex<'a, N: Num>(
     tokens: impl Iterator<Item = &'a str>,
 ) -> Result<Point3<N>, ParseError> {
     let tokens: Vec<&str> = tokens.collect();
-    let number = |token: &str| -> Result<N, ParseError> {
-        let n = N::parse(token).map_err(|e| at(text, token, e.to_string()))?;
-        if n.is_finite() {
-            Ok(n)
-        } else {
-            Err(at(text, token, format!("`{token}` is out of range")))
-        }
-    };
+    let number = |token: &str| coordinate::<N>(text, token);
     let message = |found: String| format!("a vertex line needs `v x y z` or `v x y z 1`, {found}");
     match tokens[..] {
         [x, y, z] => Ok(Point3::new(number(x)?, number(y)?, number(z)?)),
@@ -237,19 +215,9 @@ fn integer(s: &str) -> Option<Option<i64>> {
 /// # Panics
 /// If a triangle index is out of range of `vertices`.
 pub fn write_obj<N: Num>(vertices: &[Point3<N>], groups: &[(String, Vec<[usize; 3]>)]) -> String {
-    let mut number: Vec<Option<usize>> = vec![None; vertices.len()];
-    let mut used = Vec::new();
-    for (_, triangles) in groups {
-        for &i in triangles.iter().flatten() {
-            if number[i].is_none() {
-                used.push(i);
-                number[i] = Some(used.len());
-            }
-        }
-    }
+    let (kept, triangles) = used(vertices, groups.iter().flat_map(|(_, ts)| ts));
     let mut out = String::from("# yinset\n");
-    for &i in &used {
-        let p = &vertices[i];
+    for p in kept {
         let _ = writeln!(
             out,
             "v {} {} {}",
@@ -258,11 +226,11 @@ pub fn write_obj<N: Num>(vertices: &[Point3<N>], groups: &[(String, Vec<[usize; 
             exact_text(&p.z)
         );
     }
-    for (name, triangles) in groups {
+    let mut triangles = triangles.into_iter();
+    for (name, group) in groups {
         let _ = writeln!(out, "o {}", name.replace(['\r', '\n'], " "));
-        for t in triangles {
-            let [a, b, c] = t.map(|i| number[i].unwrap_or_default());
-            let _ = writeln!(out, "f {a} {b} {c}");
+        for [a, b, c] in triangles.by_ref().take(group.len()) {
+            let _ = writeln!(out, "f {} {} {}", a + 1, b + 1, c + 1);
         }
     }
     out
@@ -278,7 +246,7 @@ mod tests {
         Rational::parse(s).unwrap()
     }
 
-    fn read(text: &str) -> Result<ObjMesh<Rational>, ParseError> {
+    fn read(text: &str) -> Result<Mesh<Rational>, ParseError> {
         read_obj(text)
     }
 

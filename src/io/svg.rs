@@ -218,8 +218,8 @@ pub fn non_manifold_points<N: Num>(set: &YinSet2<N>) -> Vec<Point<N>> {
     shared
 }
 
-/// `text` with the XML special characters escaped.
-fn escape(text: &str) -> String {
+/// `text` with the XML (and HTML) special characters escaped.
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
