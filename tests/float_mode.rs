@@ -326,8 +326,9 @@ fn random_stars() {
     c.finish("random stars");
 }
 
-/// ε = `Tolerance::RELATIVE_DEFAULT` × the larger side of the inputs' bounding box, as
-/// `Tolerance::default()` resolves it for inputs whose coordinates are below 2⁵¹ times that.
+/// ε = `Tolerance::RELATIVE_DEFAULT` × the larger side of the inputs' bounding box rounded
+/// down to a power of two, as `Tolerance::default()` resolves it for inputs whose coordinates
+/// are below 2⁵¹ times that.
 fn default_eps(curves: &[&Curves]) -> f64 {
     let pts: Vec<&[f64; 2]> = curves.iter().flat_map(|c| c.iter().flatten()).collect();
     let side = |k: usize| {
@@ -336,7 +337,8 @@ fn default_eps(curves: &[&Curves]) -> f64 {
         });
         hi - lo
     };
-    Tolerance::RELATIVE_DEFAULT * side(0).max(side(1))
+    let eps = Tolerance::RELATIVE_DEFAULT * side(0).max(side(1));
+    2f64.powi(eps.log2().floor() as i32)
 }
 
 fn timed<T>(what: &str, f: impl FnOnce() -> T) -> T {

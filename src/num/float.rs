@@ -37,7 +37,8 @@ impl Float {
 ///   `YinError::ToleranceTooFine { requested, representable }`, never coarsened.
 /// * **Default ε.** `Tolerance::default()` asks for [`Tolerance::RELATIVE_DEFAULT`] times the
 ///   larger side of the input's bounding box (not its distance from the origin), raised to the
-///   finest representable grid when the shape sits far from the origin.
+///   finest representable grid when the shape sits far from the origin, and rounded down to a
+///   power of two (so ε = g, and the f64 rounding of a translated box does not change it).
 /// * **Displacement.** Snap rounding moves every boundary point by at most g·√2/2 (half a
 ///   pixel's diagonal, Hobby's hot pixels), so the result's boundary lies within g of the
 ///   exact one; features thinner than the grid (slivers, spikes, gaps) may vanish or close,
@@ -127,7 +128,7 @@ impl Tolerance {
         let finest = Tolerance::finest_grid(magnitude);
         match self.grid() {
             None => Ok(Tolerance {
-                eps: (span * Tolerance::RELATIVE_DEFAULT).max(finest),
+                eps: pow2_floor((span * Tolerance::RELATIVE_DEFAULT).max(finest)),
             }),
             Some(g) if g < finest => Err(TooFine {
                 requested: self.eps,

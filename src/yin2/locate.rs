@@ -131,7 +131,10 @@ pub(crate) fn locate_within<N: Num>(
     if eps <= 0.0 {
         return out;
     }
-    let ends: Vec<([f64; 2], [f64; 2])> = edges.iter().map(|(a, b)| (a.to_f64(), b.to_f64())).collect();
+    let ends: Vec<([f64; 2], [f64; 2])> = edges
+        .iter()
+        .map(|(a, b)| (a.to_f64(), b.to_f64()))
+        .collect();
     let boxes = ends
         .iter()
         .enumerate()

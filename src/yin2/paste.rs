@@ -143,3 +143,27 @@ impl<N: Num> Segmented<N> {
             })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    #[test]
+    fn unbalanced_pieces_are_an_error_not_a_dropped_path() {
+        // Two sides of a triangle: the path from (0,0) ends at (0,2), which nothing leaves.
+        let mut g = Segmented::<Rational>::new();
+        let v: Vec<usize> = [(0, 0), (2, 0), (0, 2)]
+            .iter()
+            .map(|&(x, y)| g.id(&Point::int(x, y)))
+            .collect();
+        g.push(v[0], v[1]);
+        g.push(v[1], v[2]);
+        assert_eq!(
+            g.paste_exact(()).err(),
+            Some(YinError::Unbalanced {
+                point: Point::<Rational>::int(0, 2).to_string()
+            })
+        );
+    }
+}

@@ -119,7 +119,12 @@ impl<N: Num> Frame<N> {
         };
         let (lo, hi) = points.map(|p| frame.to_grid(p)).fold(
             ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN)),
-            |(lo, hi), k| ((lo.0.min(k.0), lo.1.min(k.1)), (hi.0.max(k.0), hi.1.max(k.1))),
+            |(lo, hi), k| {
+                (
+                    (lo.0.min(k.0), lo.1.min(k.1)),
+                    (hi.0.max(k.0), hi.1.max(k.1)),
+                )
+            },
         );
         if lo.0 <= hi.0 {
             frame.origin = (lo.0 / 2 + hi.0 / 2, lo.1 / 2 + hi.1 / 2);
@@ -398,10 +403,7 @@ impl Windings {
 
     /// Winding numbers on the left of each piece.
     fn left_windings(pieces: &[(G, G)], mult: &[Winding]) -> Vec<Winding> {
-        let pts: Vec<Edge<Float>> = pieces
-            .iter()
-            .map(|&(a, b)| (unit(a), unit(b)))
-            .collect();
+        let pts: Vec<Edge<Float>> = pieces.iter().map(|&(a, b)| (unit(a), unit(b))).collect();
         let refs: Vec<(&Point<Float>, &Point<Float>)> = pts.iter().map(|(a, b)| (a, b)).collect();
         let mult: Vec<Pair> = mult.iter().map(|&m| Pair(m)).collect();
         left_windings(&refs, &mult, &Default::default())

@@ -108,7 +108,8 @@ pub(crate) fn resolve_for<N: Num>(
     curves: &[Vec<Point<N>>],
     ctx: N::Ctx,
 ) -> Result<N::Ctx, YinError> {
-    let (span, magnitude) = BBox::of(curves.iter().flatten()).map_or((0.0, 0.0), |b| (b.span(), b.extent()));
+    let (span, magnitude) =
+        BBox::of(curves.iter().flatten()).map_or((0.0, 0.0), |b| (b.span(), b.extent()));
     N::resolve_ctx(ctx, span, magnitude).map_err(|e| YinError::ToleranceTooFine {
         requested: Float::new(e.requested),
         representable: Float::new(e.representable),

@@ -5,9 +5,9 @@
 //! Oracles are independent of the code under test: exact mode on the same `f64` values, grid
 //! bounds worked out by hand in the comments, and points placed at known distances.
 
+use super::data;
 use super::gen::{translate, Curves};
 use super::harness::*;
-use super::data;
 use yinset::kernel::Point;
 use yinset::num::{Float, Num, Rational, Tolerance};
 use yinset::yin2::{Location, YinError, YinSet2};
@@ -124,18 +124,31 @@ fn results_move_with_translations_by_the_grid() {
     let t = [1024.0, -3072.0];
     let eps = 1e-6;
     let (a, b) = (float_set(&p, eps), float_set(&m, eps));
-    let (ta, tb) = (float_set(&translate(&p, t), eps), float_set(&translate(&m, t), eps));
+    let (ta, tb) = (
+        float_set(&translate(&p, t), eps),
+        float_set(&translate(&m, t), eps),
+    );
     for op in OPS {
         let (r, tr) = (op.apply(&a, &b), op.apply(&ta, &tb));
         let moved: Vec<Vec<[f64; 2]>> = r
             .curves()
             .iter()
-            .map(|c| c.vertices().iter().map(|v| [v.x.get() + t[0], v.y.get() + t[1]]).collect())
+            .map(|c| {
+                c.vertices()
+                    .iter()
+                    .map(|v| [v.x.get() + t[0], v.y.get() + t[1]])
+                    .collect()
+            })
             .collect();
         let got: Vec<Vec<[f64; 2]>> = tr
             .curves()
             .iter()
-            .map(|c| c.vertices().iter().map(|v| [v.x.get(), v.y.get()]).collect())
+            .map(|c| {
+                c.vertices()
+                    .iter()
+                    .map(|v| [v.x.get(), v.y.get()])
+                    .collect()
+            })
             .collect();
         assert_eq!(moved, got, "{op:?}");
     }
@@ -160,7 +173,10 @@ fn area_of_a_thin_triangle_far_from_the_origin() {
     let got = f.area().unwrap().get();
     // Snapping moves each vertex by at most g·√2/2: the area moves by at most g · L.
     let l = boundary_length(&exact_set(&tri));
-    assert!((got - exact).abs() <= g * l, "float area {got}, exact {exact}, g {g}");
+    assert!(
+        (got - exact).abs() <= g * l,
+        "float area {got}, exact {exact}, g {g}"
+    );
 }
 
 #[test]
@@ -203,5 +219,8 @@ fn locate_applies_one_distance_rule_in_every_direction() {
             <Rational as Num>::from_f64(y).unwrap(),
         )
     };
-    assert_eq!(exact.locate(&[r(1e-4, 0.5), r(0.5, 1e-4)]), [Inside, Inside]);
+    assert_eq!(
+        exact.locate(&[r(1e-4, 0.5), r(0.5, 1e-4)]),
+        [Inside, Inside]
+    );
 }
