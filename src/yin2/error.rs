@@ -77,6 +77,9 @@ pub enum YinError {
     /// Snap rounding found a crossing it cannot resolve (an internal invariant).
     #[error("snap rounding made no progress on a crossing near grid point {point}")]
     SnapStalled { point: String },
+    /// The sweep for winding numbers found pieces stacked in a cycle (an internal invariant).
+    #[error("winding sweep: the pieces above the one starting at {point} form a cycle")]
+    SweepCycle { point: String },
     /// `validate` found a set whose stored form is not the canonical one (an internal bug).
     #[error("the stored curves are not in canonical form")]
     NotCanonical,

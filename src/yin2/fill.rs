@@ -109,7 +109,7 @@ impl<N: Num> YinSet2<N> {
         let pieces = merged_pieces(&edges, &mut g, &ctx);
         let ends: Vec<(&Point<N>, &Point<N>)> = pieces.iter().map(|p| (&p.from, &p.to)).collect();
         let mult: Vec<i64> = pieces.iter().map(|p| p.mult).collect();
-        for (piece, left) in pieces.iter().zip(left_windings(&ends, &mult, &ctx)) {
+        for (piece, left) in pieces.iter().zip(left_windings(&ends, &mult, &ctx)?) {
             let right = left - piece.mult;
             match (rule.inside(left), rule.inside(right)) {
                 (true, false) => g.push(piece.ids.0, piece.ids.1),

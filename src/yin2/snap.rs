@@ -59,11 +59,12 @@ pub(crate) fn regularize<N: Num>(
         .filter(|((a, b), _)| a != b)
         .collect();
     let fragments = snap_round(segments)?;
-    let windings = Windings::of(&fragments);
-    if windings.pieces.iter().enumerate().all(|(k, _)| {
+    let windings = Windings::of(&fragments)?;
+    let boundary = |k: usize| {
         let (left, right) = windings.sides(k);
-        inside(left) == inside(right)
-    }) {
+        inside(left) != inside(right)
+    };
+    if !(0..windings.pieces.len()).any(boundary) {
         // No boundary left: the far face (winding 0) decides between 0̂ and 1̂.
         let all = if inside([0, 0]) {
             YinSet2::full()
@@ -74,10 +75,9 @@ pub(crate) fn regularize<N: Num>(
     }
     let mut out = Segmented::new();
     for (k, &(lo, hi)) in windings.pieces.iter().enumerate() {
-        let (left, right) = windings.sides(k);
-        if inside(left) != inside(right) {
+        if boundary(k) {
             let (a, b) = (out.id(&unit(lo)), out.id(&unit(hi)));
-            if inside(left) {
+            if inside(windings.sides(k).0) {
                 out.push(a, b);
             } else {
                 out.push(b, a);
@@ -365,7 +365,7 @@ struct Windings {
 impl Windings {
     /// Cut the fragments at every contact, merge coincident pieces, and compute windings from
     /// the first piece above each piece (a vertical sweep, seed 002 Alg. 1).
-    fn of(fragments: &[((G, G), usize)]) -> Windings {
+    fn of(fragments: &[((G, G), usize)]) -> Result<Windings, YinError> {
         let edges: Vec<Edge<Float>> = fragments
             .iter()
             .map(|&((a, b), _)| (unit(a), unit(b)))
@@ -397,19 +397,19 @@ impl Windings {
             net.into_iter().filter(|&(_, m)| m != [0, 0]).collect();
         pieces.sort();
         let (pieces, mult): (Vec<(G, G)>, Vec<Winding>) = pieces.into_iter().unzip();
-        let left = Windings::left_windings(&pieces, &mult);
-        Windings { pieces, mult, left }
+        let left = Windings::left_windings(&pieces, &mult)?;
+        Ok(Windings { pieces, mult, left })
     }
 
     /// Winding numbers on the left of each piece.
-    fn left_windings(pieces: &[(G, G)], mult: &[Winding]) -> Vec<Winding> {
+    fn left_windings(pieces: &[(G, G)], mult: &[Winding]) -> Result<Vec<Winding>, YinError> {
         let pts: Vec<Edge<Float>> = pieces.iter().map(|&(a, b)| (unit(a), unit(b))).collect();
         let refs: Vec<(&Point<Float>, &Point<Float>)> = pts.iter().map(|(a, b)| (a, b)).collect();
         let mult: Vec<Pair> = mult.iter().map(|&m| Pair(m)).collect();
-        left_windings(&refs, &mult, &Default::default())
+        Ok(left_windings(&refs, &mult, &Default::default())?
             .into_iter()
             .map(|p| p.0)
-            .collect()
+            .collect())
     }
 
     /// Winding numbers on the left and on the right of piece `k`.
