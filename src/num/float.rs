@@ -155,7 +155,9 @@ pub struct TooFine {
 fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
     // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
     // product of Shewchuk's expansions stays a normal number, and none overflows.
-    let safe = |v: &f64| *v == 0.0 || (v.abs() >= ldexp(1.0, -480) && v.abs() <= ldexp(1.0, 500));
+    const LO: f64 = f64::from_bits((1023 - 480) << 52);
+    const HI: f64 = f64::from_bits((1023 + 500) << 52);
+    let safe = |v: &f64| *v == 0.0 || (LO..=HI).contains(&v.abs());
     let all = [a[0], a[1], b[0], b[1], c[0], c[1]];
     let robust_sign = |p: [f64; 6]| {
         let q = |x: f64, y: f64| robust::Coord { x, y };
@@ -176,20 +178,28 @@ fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
     super::exact_orient([&ra[0], &ra[1]], [&rb[0], &rb[1]], [&rc[0], &rc[1]])
 }
 
-/// The Euclidean distance from `p` to the segment `ab`, computed on half-differences scaled by
-/// a power of two so that nothing overflows or underflows on the way (the result itself may be
-/// +∞ when it exceeds `f64::MAX`).
-pub(crate) fn segment_distance(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
-    let d = [b[0] / 2.0 - a[0] / 2.0, b[1] / 2.0 - a[1] / 2.0];
-    let e = [p[0] / 2.0 - a[0] / 2.0, p[1] / 2.0 - a[1] / 2.0];
+/// The half-differences b − a and c − a, scaled by the power of two 2^k that brings their
+/// largest magnitude into [1, 2): nothing overflows or underflows on the way. `None` if both
+/// are 0.
+fn scaled_differences(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<([f64; 2], [f64; 2], i32)> {
+    let half = |p: [f64; 2]| [p[0] / 2.0 - a[0] / 2.0, p[1] / 2.0 - a[1] / 2.0];
+    let (d, e) = (half(b), half(c));
     let m = [d[0], d[1], e[0], e[1]]
         .iter()
         .fold(0.0f64, |m, v| m.max(v.abs()));
     if m == 0.0 {
-        return 0.0;
+        return None;
     }
     let k = -(m.log2().floor() as i32);
-    let (d, e) = (d.map(|v| ldexp(v, k)), e.map(|v| ldexp(v, k)));
+    Some((d.map(|v| ldexp(v, k)), e.map(|v| ldexp(v, k)), k))
+}
+
+/// The Euclidean distance from `p` to the segment `ab` (the result may be +∞ when it exceeds
+/// `f64::MAX`), on [`scaled_differences`].
+pub(crate) fn segment_distance(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
+    let Some((d, e, k)) = scaled_differences(a, b, p) else {
+        return 0.0;
+    };
     let dd = d[0] * d[0] + d[1] * d[1];
     let t = if dd > 0.0 {
         ((e[0] * d[0] + e[1] * d[1]) / dd).clamp(0.0, 1.0)
@@ -200,19 +210,12 @@ pub(crate) fn segment_distance(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
     2.0 * ldexp(gap, -k)
 }
 
-/// True if `c` is within distance `eps` of the line through `a` and `b` (`a ≠ b`), computed on
-/// half-differences scaled by a power of two so that nothing overflows or underflows.
+/// True if `c` is within distance `eps` of the line through `a` and `b` (`a ≠ b`), on
+/// [`scaled_differences`].
 fn within_line(a: [f64; 2], b: [f64; 2], c: [f64; 2], eps: f64) -> bool {
-    let d = [b[0] / 2.0 - a[0] / 2.0, b[1] / 2.0 - a[1] / 2.0];
-    let e = [c[0] / 2.0 - a[0] / 2.0, c[1] / 2.0 - a[1] / 2.0];
-    let m = [d[0], d[1], e[0], e[1]]
-        .iter()
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    if m == 0.0 {
+    let Some((d, e, k)) = scaled_differences(a, b, c) else {
         return true;
-    }
-    let k = -(m.log2().floor() as i32);
-    let (d, e) = (d.map(|v| ldexp(v, k)), e.map(|v| ldexp(v, k)));
+    };
     let det = d[0] * e[1] - d[1] * e[0];
     // distance = |det| / |d| in scaled half units; ε in the same units is ε · 2^k / 2.
     det.abs() / d[0].hypot(d[1]) <= ldexp(eps / 2.0, k)

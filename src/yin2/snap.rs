@@ -19,6 +19,9 @@ use std::ops::{Add, Sub};
 /// A grid point: integer multiples of the grid spacing, relative to the local origin.
 type G = (i64, i64);
 
+/// A grid segment with the operand (`0` or `1`) its piece came from.
+type Labelled = ((G, G), usize);
+
 /// Winding numbers of a point with respect to the boundaries of the operands (two at most).
 pub(crate) type Winding = [i64; 2];
 
@@ -53,7 +56,7 @@ pub(crate) fn regularize<N: Num>(
 ) -> Result<YinSet2<N>, YinError> {
     let frame = Frame::of(pieces.iter().flat_map(|((a, b), _)| [a, b]), ctx);
     let ctx = frame.ctx;
-    let segments: Vec<((G, G), usize)> = pieces
+    let segments: Vec<Labelled> = pieces
         .iter()
         .map(|((a, b), l)| ((frame.to_grid(a), frame.to_grid(b)), *l))
         .filter(|((a, b), _)| a != b)
@@ -166,7 +169,7 @@ fn unit(k: G) -> Point<Float> {
 /// of crossings); where two fragments still cross at a pixel their segments do not meet, that
 /// centre is forced into both paths. Paths stay monotone along their segments and every round
 /// adds a new (segment, centre) stop, so the iteration ends.
-fn snap_round(segments: Vec<((G, G), usize)>) -> Result<Vec<((G, G), usize)>, YinError> {
+fn snap_round(segments: Vec<Labelled>) -> Result<Vec<Labelled>, YinError> {
     let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
     let mut forced: Vec<BTreeSet<G>> = vec![BTreeSet::new(); segments.len()];
     loop {
@@ -301,7 +304,7 @@ fn meets_pixel(a: G, b: G, c: G) -> bool {
 }
 
 /// Pairs of fragments whose interiors cross properly.
-fn crossing_pairs(segments: &[((G, G), usize)]) -> Vec<(usize, usize)> {
+fn crossing_pairs(segments: &[Labelled]) -> Vec<(usize, usize)> {
     let edges: Vec<Edge<Float>> = segments
         .iter()
         .map(|&((a, b), _)| (unit(a), unit(b)))
@@ -365,7 +368,7 @@ struct Windings {
 impl Windings {
     /// Cut the fragments at every contact, merge coincident pieces, and compute windings from
     /// the first piece above each piece (a vertical sweep, seed 002 Alg. 1).
-    fn of(fragments: &[((G, G), usize)]) -> Result<Windings, YinError> {
+    fn of(fragments: &[Labelled]) -> Result<Windings, YinError> {
         let edges: Vec<Edge<Float>> = fragments
             .iter()
             .map(|&((a, b), _)| (unit(a), unit(b)))

@@ -33,6 +33,17 @@ fn assert_within_bound(a: &Curves, b: &Curves, eps: f64) {
     }
 }
 
+/// `r` is the error that ε = `requested` is too fine, `representable` the finest grid.
+fn assert_too_fine(r: Result<Flt, YinError>, requested: f64, representable: f64) {
+    match r {
+        Err(YinError::ToleranceTooFine {
+            requested: got,
+            representable: finest,
+        }) => assert_eq!((got.get(), finest.get()), (requested, representable)),
+        other => panic!("expected ToleranceTooFine, got {other:?}"),
+    }
+}
+
 #[test]
 fn coordinates_near_1e160_do_not_overflow_the_predicates() {
     // A square of side 2·10¹⁶⁰ against a shifted copy, ε = 10¹⁵⁰: products of coordinates
@@ -61,16 +72,7 @@ fn subnormal_tolerances_end_with_an_error_or_a_result() {
     // ε = 10⁻³¹⁰ < 2⁻¹⁰²²: the unit square needs a grid of at least 2⁻⁵¹ (coordinates up to
     // 1 = 2⁵¹ · 2⁻⁵¹), so the request is refused, naming that grid.
     let unit = rect(0.0, 0.0, 1.0, 1.0);
-    match try_float(&unit, 1e-310) {
-        Err(YinError::ToleranceTooFine {
-            requested,
-            representable,
-        }) => {
-            assert_eq!(requested.get(), 1e-310);
-            assert_eq!(representable.get(), 2f64.powi(-51));
-        }
-        other => panic!("expected ToleranceTooFine, got {other:?}"),
-    }
+    assert_too_fine(try_float(&unit, 1e-310), 1e-310, 2f64.powi(-51));
     // Squares with coordinates up to 2·10⁻³⁰⁰ < 2⁻⁹⁹⁵ carry a subnormal grid (any grid of at
     // least 2⁻⁹⁹⁵⁻⁵¹ will do; ε = 10⁻³¹⁰ gives 2⁻¹⁰³⁰): it works, within the bound.
     let tiny = rect(0.0, 0.0, 1e-300, 1e-300);
@@ -82,16 +84,7 @@ fn subnormal_tolerances_end_with_an_error_or_a_result() {
 fn a_tolerance_too_fine_for_the_coordinates_is_refused_not_coarsened() {
     // A 10⁶ × 1 strip at x = 10¹²: 10¹² < 2⁴⁰, so the finest grid is 2⁴⁰⁻⁵¹ = 2⁻¹¹.
     let strip = rect(1e12, 0.0, 1e12 + 1e6, 1.0);
-    match try_float(&strip, 1e-9) {
-        Err(YinError::ToleranceTooFine {
-            requested,
-            representable,
-        }) => {
-            assert_eq!(requested.get(), 1e-9);
-            assert_eq!(representable.get(), 2f64.powi(-11));
-        }
-        other => panic!("expected ToleranceTooFine, got {other:?}"),
-    }
+    assert_too_fine(try_float(&strip, 1e-9), 1e-9, 2f64.powi(-11));
     // ε = 10⁻³ is representable (grid 2⁻¹⁰): the strip comes back whole, area exactly 10⁶.
     let y = try_float(&strip, 1e-3).unwrap();
     assert_eq!(y.grid(), Some(2f64.powi(-10)));
