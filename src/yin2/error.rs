@@ -63,13 +63,13 @@ pub enum YinError {
     DisconnectedAtom { curves: Vec<usize>, point: String },
     /// Float mode: the grid of the requested ε cannot carry the input's coordinates (every
     /// coordinate must be at most 2⁵¹ grid steps from 0, see `Tolerance`).
-    #[error("tolerance {requested} is too fine for these coordinates: the smallest ε whose grid can represent them is {representable}")]
+    #[error("tolerance {:e} is too fine for these coordinates: the smallest ε whose grid can represent them is {:e}", .requested.get(), .representable.get())]
     ToleranceTooFine {
         requested: Float,
         representable: Float,
     },
     /// Float mode: the whole input vanishes when snapped to the grid of its ε.
-    #[error("the input is thinner than the grid spacing {grid} of its tolerance and vanishes when snapped to it: use a smaller ε")]
+    #[error("the input is thinner than the grid spacing {:e} of its tolerance and vanishes when snapped to it: use a smaller ε", .grid.get())]
     CollapsedOnGrid { grid: Float },
     /// Pieces to paste that are not a union of closed cycles (an internal invariant).
     #[error("pasting map: the pieces are not closed cycles, one ends at {point}")]
