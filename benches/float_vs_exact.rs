@@ -2,7 +2,7 @@
 //! panda ∧ Mickey (read from `../shared/data/2d`), and two random star-shaped polygons of 10⁴
 //! vertices each. Only the meet is timed; the operands are built beforehand, exactly
 //! (`Rational`, decimal text read without rounding, random `f64` values read as rationals) and
-//! in float mode (`Float` with `Tolerance::default()`, ε = 10⁻¹⁰ × extent).
+//! in float mode (`Float` with `Tolerance::default()`, ε = 10⁻¹⁰ × the larger side of the bounding box, as a power of two).
 //!
 //! `cargo bench --bench float_vs_exact`; the ratio is the exact mean over the float mean.
 

@@ -23,6 +23,8 @@
 //! as ignored tests (`cargo test --test float_mode -- --ignored`).
 
 mod common;
+#[path = "float_mode/contract.rs"]
+mod contract;
 #[path = "float_mode/data.rs"]
 mod data;
 #[path = "float_mode/gen.rs"]
@@ -324,13 +326,19 @@ fn random_stars() {
     c.finish("random stars");
 }
 
-/// ε = `Tolerance::RELATIVE_DEFAULT` × the inputs' extent, as `Tolerance::default()` resolves it.
+/// ε = `Tolerance::RELATIVE_DEFAULT` × the larger side of the inputs' bounding box rounded
+/// down to a power of two, as `Tolerance::default()` resolves it for inputs whose coordinates
+/// are below 2⁵¹ times that.
 fn default_eps(curves: &[&Curves]) -> f64 {
-    let extent = curves
-        .iter()
-        .flat_map(|c| c.iter().flatten())
-        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
-    Tolerance::RELATIVE_DEFAULT * extent
+    let pts: Vec<&[f64; 2]> = curves.iter().flat_map(|c| c.iter().flatten()).collect();
+    let side = |k: usize| {
+        let (lo, hi) = pts.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| {
+            (lo.min(p[k]), hi.max(p[k]))
+        });
+        hi - lo
+    };
+    let eps = Tolerance::RELATIVE_DEFAULT * side(0).max(side(1));
+    2f64.powi(eps.log2().floor() as i32)
 }
 
 fn timed<T>(what: &str, f: impl FnOnce() -> T) -> T {
@@ -481,12 +489,12 @@ fn regression_dangling_piece_after_overlay_fallback() {
     }
 }
 
+/// Regression: for ε < 2⁻³⁷ × extent the snapping grid used to be silently coarsened to keep
+/// grid coordinates below 2³⁸, so the area error exceeded C·ε·L by orders of magnitude; the
+/// grid is now the one of ε whenever the coordinates are below 2⁵¹ grid steps (issue 14).
 #[test]
-#[ignore = "kernel bug: for ε < 2⁻³⁷ × extent the snapping grid is silently coarsened to keep \
-            grid coordinates below 2³⁸, so the area error exceeds C·ε·L by orders of magnitude; \
-            cargo test --test float_mode -- --ignored"]
-fn kernel_bug_grid_coarsened_for_small_relative_eps() {
-    // Coordinates near 10⁶, ε = 10⁻⁹: the grid spacing used is 2⁻¹⁷ ≈ 7.6·10⁻⁶, not 2⁻³⁰.
+fn regression_grid_coarsened_for_small_relative_eps() {
+    // Coordinates near 10⁶, ε = 10⁻⁹: the grid must be 2⁻³⁰, not 2⁻¹⁷.
     let x = 1e6;
     let a: Curves = vec![vec![[x, 0.0], [x + 1.0, 0.0], [x, 1.0]]];
     let b: Curves = vec![vec![
@@ -496,12 +504,8 @@ fn kernel_bug_grid_coarsened_for_small_relative_eps() {
         [x + 0.3, 2.0],
     ]];
     let eps = 1e-9;
-    let o = compare(
-        Op::Meet,
-        (&exact_set(&a), &exact_set(&b)),
-        (&float_set(&a, eps), &float_set(&b, eps)),
-        eps,
-    )
-    .unwrap();
+    let (fa, fb) = (float_set(&a, eps), float_set(&b, eps));
+    assert_eq!(fa.meet(&fb).grid(), Some(2f64.powi(-30)));
+    let o = compare(Op::Meet, (&exact_set(&a), &exact_set(&b)), (&fa, &fb), eps).unwrap();
     assert!(o.ratio <= AREA_C, "area(F△E) = {:.1} ε·L", o.ratio);
 }

@@ -421,7 +421,18 @@ fn check_error<D: Debug>(e: &YinError, shape: &Shape, input: &D) {
     let vertex_ok = |c: usize, v: usize| c < n && v < shape.curves[c].len();
     let ok = match e {
         YinError::NoCurves => n == 0,
-        YinError::NotFinite { .. } | YinError::NotCanonical => false,
+        // Internal invariants, and float-mode refusals that grid inputs (coordinates 0..7,
+        // ε ≥ 10⁻⁹ or a grid point's own) never justify.
+        YinError::NotFinite { .. }
+        | YinError::NotCanonical
+        | YinError::Unbalanced { .. }
+        | YinError::SnapStalled { .. }
+        | YinError::SweepCycle { .. }
+        | YinError::CollapsedOnGrid { .. } => false,
+        YinError::ToleranceTooFine {
+            requested,
+            representable,
+        } => representable > requested,
         YinError::TooFewVertices { curve, count } => curve_ok(*curve) && *count < 3,
         YinError::RepeatedVertex { curve, vertex, .. }
         | YinError::NotSimple { curve, vertex, .. } => vertex_ok(*curve, *vertex),

@@ -9,7 +9,7 @@ use super::progress;
 use crate::io::mesh::Mesh;
 use crate::io::ParseError;
 use crate::num::Num;
-use crate::yin2::YinSet2;
+use crate::yin2::{YinError, YinSet2};
 use crate::yin3::YinSet3;
 use std::io::Read;
 use std::path::Path;
@@ -139,7 +139,12 @@ fn build<N: Num>(
         Some(rule) => YinSet2::from_rings_filled_with(rings, rule.rule(), ctx),
     };
     built.map_err(|source| {
-        let hint = if fill.is_none() {
+        // Float mode's refusals of ε are about the tolerance, not the rings: no fill hint.
+        let about_eps = matches!(
+            source,
+            YinError::ToleranceTooFine { .. } | YinError::CollapsedOnGrid { .. }
+        );
+        let hint = if fill.is_none() && !about_eps {
             "; to take the region the rings cover instead, give --fill nonzero or --fill evenodd"
         } else {
             ""

@@ -121,7 +121,16 @@ impl<N: Num> BBox<N> {
             && other.max.y <= self.max.y
     }
 
-    /// The largest coordinate magnitude, as an `f64` (for float mode's default ε).
+    /// The larger side, as an `f64` computed on half-coordinates so that it cannot overflow
+    /// (for float mode's default ε, which must not depend on where the box sits).
+    pub fn span(&self) -> f64 {
+        let half = |v: &N| v.to_f64() / 2.0;
+        let w = half(&self.max.x) - half(&self.min.x);
+        let h = half(&self.max.y) - half(&self.min.y);
+        (2.0 * w.max(h)).min(f64::MAX)
+    }
+
+    /// The largest coordinate magnitude, as an `f64` (for float mode's representable grid).
     pub fn extent(&self) -> f64 {
         [&self.min.x, &self.min.y, &self.max.x, &self.max.y]
             .iter()

@@ -1,6 +1,6 @@
 //! The float backend: `f64` coordinates with a run-time tolerance ε (seed 000 §5.2).
 
-use super::{Literal, Num, NumError};
+use super::{Literal, Num, NumError, Rational};
 use std::cmp::Ordering;
 use std::fmt;
 use std::hash::{Hash, Hasher};
@@ -23,39 +23,74 @@ impl Float {
     }
 }
 
-/// Float mode's tolerance: points closer than ε are one point, and a point within ε of a line
-/// lies on it (seed 000 §5.2). `Tolerance::default()` asks for ε derived from the input's
-/// extent, [`Tolerance::RELATIVE_DEFAULT`] times the largest coordinate magnitude.
+/// Float mode's tolerance ε (seed 000 §5.2 made precise): results are snap-rounded to the grid
+/// g·ℤ², g the largest power of two not above ε ([`Tolerance::grid`]).
 ///
-/// # Accuracy
+/// # Contract
 ///
-/// Every float result F is exactly valid (its `f64` vertices read as rationals pass the exact
-/// validator). Against the exact result E of the same operation on the same input values,
-///
-/// > area(F △ E) ≤ C · ε · L, with **C = 1**,
-///
-/// where L is the total boundary length of the operands plus that of E. Betti numbers agree
-/// with exact mode when no feature of the input is smaller than ε; on inputs with features
-/// below ε (slivers, near-coincident curves) they may differ, the area bound still holds.
-///
-/// C is measured, not proved: `tests/float_mode.rs` compares meet, join, difference,
-/// symmetric difference and complement with exact mode on random well-separated and
-/// near-degenerate inputs (vertices within ε/10 of edges and vertices, copies offset by less
-/// than ε, nearly collinear overlaps, jitter; every vertex half a grid spacing off the grid),
-/// coarse ε, the panda and Mickey, and the GIS outlines: the largest area(F △ E) / (ε · L)
-/// seen over 60 000 comparisons is 0.47 (a join on a near-degenerate input); C = 1 leaves a
-/// factor 2. The bound needs ε ≥ 2⁻³⁷ × extent: below, the snapping grid is coarser than ε
-/// (a known kernel limitation, pinned in `tests/float_mode.rs`).
+/// * **Grid.** Every vertex of a float set is a point of g·ℤ² (g a power of two, so the grid
+///   is the same wherever the shape sits: translating the input by a multiple of g translates
+///   the result). The grid is chosen from ε alone; the input's coordinates only decide whether
+///   it is representable: every coordinate must be at most 2⁵¹·g in magnitude, so that grid
+///   points are exact `f64`s and the snapping runs on integers below 2⁵² relative to a local
+///   origin, with exact integer predicates. A finer ε is refused with
+///   `YinError::ToleranceTooFine { requested, representable }`, never coarsened.
+/// * **Default ε.** `Tolerance::default()` asks for [`Tolerance::RELATIVE_DEFAULT`] times the
+///   larger side of the input's bounding box (not its distance from the origin), raised to the
+///   finest representable grid when the shape sits far from the origin, and rounded down to a
+///   power of two (so ε = g, and the f64 rounding of a translated box does not change it).
+/// * **Displacement.** Snap rounding moves every boundary point by at most g·√2/2 (half a
+///   pixel's diagonal, Hobby's hot pixels), so the result's boundary lies within g of the
+///   exact one; features thinner than the grid (slivers, spikes, gaps) may vanish or close,
+///   and curves closer than g may merge. An input that vanishes entirely on its grid is refused
+///   (`YinError::CollapsedOnGrid`), not turned into 0̂.
+/// * **Accuracy.** Every float result F is exactly valid (its `f64` vertices read as rationals
+///   pass the exact validator). Against the exact result E of the same operation on the same
+///   input values, area(F △ E) ≤ C · g · L ≤ C · ε · L with **C = 1**, L the total boundary
+///   length of the operands plus that of E. C is measured, not proved: `tests/float_mode.rs`
+///   compares every operation with exact mode, and the largest area(F △ E) / (ε · L) over the
+///   11 095 comparisons of its default run is 0.33 (a complement of a jittered input). Betti
+///   numbers agree with exact mode when no feature of the input is thinner than g.
+/// * **Location.** [`crate::yin2::YinSet2::locate`] reports a point as on the boundary when
+///   its distance to the boundary is at most ε, whatever the direction of the nearest edge;
+///   otherwise inside or outside exactly.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Tolerance {
     eps: f64,
 }
 
+/// The largest power of two not above a finite `v > 0` (exact, subnormals included).
+fn pow2_floor(v: f64) -> f64 {
+    let bits = v.to_bits();
+    if v >= f64::MIN_POSITIVE {
+        f64::from_bits(bits & 0xfff0_0000_0000_0000)
+    } else {
+        f64::from_bits(1u64 << (63 - bits.leading_zeros()))
+    }
+}
+
+/// `v · 2^k`, exact unless the result overflows or falls below the subnormal range.
+fn ldexp(mut v: f64, mut k: i32) -> f64 {
+    let step = |k: i32| f64::from_bits(((k + 1023) as u64) << 52);
+    while k > 1000 {
+        v *= step(1000);
+        k -= 1000;
+    }
+    while k < -1000 {
+        v *= step(-1000);
+        k += 1000;
+    }
+    v * step(k)
+}
+
 impl Tolerance {
-    /// ε relative to the input's extent when no ε is given.
+    /// ε relative to the larger side of the input's bounding box when no ε is given.
     pub const RELATIVE_DEFAULT: f64 = 1e-10;
 
-    /// A user-chosen ε > 0.
+    /// Bits of a grid coordinate: every coordinate is at most 2^GRID_BITS grid steps from 0.
+    pub const GRID_BITS: i32 = 51;
+
+    /// A user-chosen ε > 0 (anything else, NaN included, asks for the default).
     pub fn new(eps: f64) -> Tolerance {
         Tolerance {
             eps: if eps.is_finite() && eps > 0.0 {
@@ -70,6 +105,121 @@ impl Tolerance {
     pub fn eps(self) -> f64 {
         self.eps
     }
+
+    /// The grid spacing g: the largest power of two not above ε (`None` until resolved).
+    pub fn grid(self) -> Option<f64> {
+        (self.eps > 0.0).then(|| pow2_floor(self.eps))
+    }
+
+    /// The finest grid that can carry coordinates of magnitude up to `magnitude`: the smallest
+    /// power of two g with `magnitude ≤ 2^GRID_BITS · g`.
+    pub fn finest_grid(magnitude: f64) -> f64 {
+        if magnitude <= 0.0 {
+            return f64::from_bits(1);
+        }
+        let m = pow2_floor(magnitude);
+        let top = if m == magnitude { m } else { 2.0 * m };
+        ldexp(top, -Tolerance::GRID_BITS).max(f64::from_bits(1))
+    }
+
+    /// This tolerance resolved for an input whose bounding box has larger side `span` and
+    /// largest coordinate magnitude `magnitude`: the default ε if none was given, an error if
+    /// the requested grid is finer than [`Tolerance::finest_grid`].
+    pub fn resolve(self, span: f64, magnitude: f64) -> Result<Tolerance, TooFine> {
+        let finest = Tolerance::finest_grid(magnitude);
+        match self.grid() {
+            None => Ok(Tolerance {
+                eps: pow2_floor((span * Tolerance::RELATIVE_DEFAULT).max(finest)),
+            }),
+            Some(g) if g < finest => Err(TooFine {
+                requested: self.eps,
+                representable: finest,
+            }),
+            Some(_) => Ok(self),
+        }
+    }
+}
+
+/// A tolerance too fine for the coordinates it applies to: the grid of `requested` cannot
+/// carry them, `representable` is the smallest ε that can.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TooFine {
+    /// The ε asked for.
+    pub requested: f64,
+    /// The smallest ε whose grid can carry the coordinates.
+    pub representable: f64,
+}
+
+/// The sign of (b − a) × (c − a) for `f64` points, exactly: Shewchuk's adaptive determinant
+/// after an exact power-of-two scaling when every coordinate then lies where it neither
+/// overflows nor underflows, exact rationals otherwise.
+fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
+    // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
+    // product of Shewchuk's expansions stays a normal number, and none overflows.
+    const LO: f64 = f64::from_bits((1023 - 480) << 52);
+    const HI: f64 = f64::from_bits((1023 + 500) << 52);
+    let safe = |v: &f64| *v == 0.0 || (LO..=HI).contains(&v.abs());
+    let all = [a[0], a[1], b[0], b[1], c[0], c[1]];
+    let robust_sign = |p: [f64; 6]| {
+        let q = |x: f64, y: f64| robust::Coord { x, y };
+        let det = robust::orient2d(q(p[0], p[1]), q(p[2], p[3]), q(p[4], p[5]));
+        det.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+    };
+    if all.iter().all(safe) {
+        return robust_sign(all);
+    }
+    let m = all.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let k = -(m.log2().floor() as i32);
+    let scaled = all.map(|v| ldexp(v, k));
+    if scaled.iter().all(safe) && scaled.iter().zip(&all).all(|(s, v)| ldexp(*s, -k) == *v) {
+        return robust_sign(scaled);
+    }
+    let r = |v: f64| Rational::from_f64(v).unwrap_or_else(|_| Rational::zero());
+    let (ra, rb, rc) = (a.map(r), b.map(r), c.map(r));
+    super::exact_orient([&ra[0], &ra[1]], [&rb[0], &rb[1]], [&rc[0], &rc[1]])
+}
+
+/// The half-differences b − a and c − a, scaled by the power of two 2^k that brings their
+/// largest magnitude into [1, 2): nothing overflows or underflows on the way. `None` if both
+/// are 0.
+fn scaled_differences(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<([f64; 2], [f64; 2], i32)> {
+    let half = |p: [f64; 2]| [p[0] / 2.0 - a[0] / 2.0, p[1] / 2.0 - a[1] / 2.0];
+    let (d, e) = (half(b), half(c));
+    let m = [d[0], d[1], e[0], e[1]]
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    if m == 0.0 {
+        return None;
+    }
+    let k = -(m.log2().floor() as i32);
+    Some((d.map(|v| ldexp(v, k)), e.map(|v| ldexp(v, k)), k))
+}
+
+/// The Euclidean distance from `p` to the segment `ab` (the result may be +∞ when it exceeds
+/// `f64::MAX`), on [`scaled_differences`].
+pub(crate) fn segment_distance(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
+    let Some((d, e, k)) = scaled_differences(a, b, p) else {
+        return 0.0;
+    };
+    let dd = d[0] * d[0] + d[1] * d[1];
+    let t = if dd > 0.0 {
+        ((e[0] * d[0] + e[1] * d[1]) / dd).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let gap = (e[0] - t * d[0]).hypot(e[1] - t * d[1]);
+    2.0 * ldexp(gap, -k)
+}
+
+/// True if `c` is within distance `eps` of the line through `a` and `b` (`a ≠ b`), on
+/// [`scaled_differences`].
+fn within_line(a: [f64; 2], b: [f64; 2], c: [f64; 2], eps: f64) -> bool {
+    let Some((d, e, k)) = scaled_differences(a, b, c) else {
+        return true;
+    };
+    let det = d[0] * e[1] - d[1] * e[0];
+    // distance = |det| / |d| in scaled half units; ε in the same units is ε · 2^k / 2.
+    det.abs() / d[0].hypot(d[1]) <= ldexp(eps / 2.0, k)
 }
 
 impl PartialEq for Float {
@@ -159,19 +309,13 @@ impl Num for Float {
     }
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], ctx: &Tolerance) -> Ordering {
-        let p = |q: [&Float; 2]| robust::Coord {
-            x: q[0].0,
-            y: q[1].0,
-        };
-        let det = robust::orient2d(p(a), p(b), p(c));
-        // |det| / |b − a| is the distance of c from the line: Equal when within ε.
-        let (dx, dy) = (b[0].0 - a[0].0, b[1].0 - a[1].0);
-        if det == 0.0 || (ctx.eps > 0.0 && det * det <= ctx.eps * ctx.eps * (dx * dx + dy * dy)) {
+        let p = |q: [&Float; 2]| [q[0].0, q[1].0];
+        let (a, b, c) = (p(a), p(b), p(c));
+        let sign = exact_orient_f64(a, b, c);
+        if sign == Ordering::Equal || (ctx.eps > 0.0 && a != b && within_line(a, b, c, ctx.eps)) {
             Ordering::Equal
-        } else if det > 0.0 {
-            Ordering::Greater
         } else {
-            Ordering::Less
+            sign
         }
     }
 
@@ -194,7 +338,11 @@ impl Num for Float {
     }
 
     fn grid(ctx: &Tolerance) -> Option<f64> {
-        (ctx.eps > 0.0).then(|| 2f64.powi(ctx.eps.log2().floor() as i32))
+        ctx.grid()
+    }
+
+    fn tolerance(ctx: &Tolerance) -> f64 {
+        ctx.eps
     }
 
     fn combine_ctx(a: Tolerance, b: Tolerance) -> Tolerance {
@@ -203,14 +351,8 @@ impl Num for Float {
         }
     }
 
-    fn resolve_ctx(ctx: Tolerance, extent: f64) -> Tolerance {
-        if ctx.eps > 0.0 {
-            ctx
-        } else {
-            Tolerance {
-                eps: (extent * Tolerance::RELATIVE_DEFAULT).max(f64::MIN_POSITIVE),
-            }
-        }
+    fn resolve_ctx(ctx: Tolerance, span: f64, magnitude: f64) -> Result<Tolerance, TooFine> {
+        ctx.resolve(span, magnitude)
     }
 }
 

@@ -13,7 +13,8 @@ mod gmp;
 mod literal;
 mod rational;
 
-pub use float::{Float, Tolerance};
+pub(crate) use float::segment_distance;
+pub use float::{Float, Tolerance, TooFine};
 #[cfg(feature = "gmp")]
 pub use gmp::GmpRational;
 pub use literal::Literal;
@@ -124,11 +125,12 @@ pub trait Num:
         a
     }
 
-    /// Fill in context defaults that depend on the input, given its extent (largest coordinate
-    /// magnitude) as an `f64`.
-    fn resolve_ctx(ctx: Self::Ctx, extent: f64) -> Self::Ctx {
-        let _ = extent;
-        ctx
+    /// Fill in context defaults that depend on the input and check the context against it,
+    /// given the larger side `span` of its bounding box and its largest coordinate
+    /// `magnitude` as `f64`s (float mode: the default ε, or [`TooFine`]).
+    fn resolve_ctx(ctx: Self::Ctx, span: f64, magnitude: f64) -> Result<Self::Ctx, TooFine> {
+        let _ = (span, magnitude);
+        Ok(ctx)
     }
 
     /// The spacing of the grid that float mode snaps results to (seed 000 §5.2): the largest
@@ -136,6 +138,13 @@ pub trait Num:
     fn grid(ctx: &Self::Ctx) -> Option<f64> {
         let _ = ctx;
         None
+    }
+
+    /// Float mode's ε, the distance within which a point is located on the boundary
+    /// ([`Tolerance`]); 0 for exact backends.
+    fn tolerance(ctx: &Self::Ctx) -> f64 {
+        let _ = ctx;
+        0.0
     }
 
     /// The integer 0.

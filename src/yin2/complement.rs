@@ -1,6 +1,6 @@
 //! Complement (seed 000 Def. 4.4): 𝒥' = S_V⁻¹ ∘ R ∘ S_V (𝒥), in O(n).
 
-use super::paste::Segmented;
+use super::paste::{or_kernel_bug, Segmented};
 use super::set::{Repr, YinSet2};
 use crate::num::Num;
 
@@ -21,6 +21,6 @@ impl<N: Num> YinSet2<N> {
             }
         }
         // Reversal keeps the curves' vertices, so pasting needs no snapping even in float mode.
-        g.paste_exact(N::Ctx::default()).with_ctx(self.ctx)
+        or_kernel_bug(g.paste_exact(N::Ctx::default())).with_ctx(self.ctx)
     }
 }

@@ -28,6 +28,15 @@ impl<N: Num> Curve<N> {
         self.vertices.is_empty()
     }
 
+    /// The same curve with every vertex moved by `f`, which must preserve the lexicographic
+    /// order of points (a translation composed with a positive scaling), so that the moved
+    /// curve is still in canonical form.
+    pub(crate) fn map_points<M: Num>(&self, f: impl Fn(&Point<N>) -> Point<M>) -> Curve<M> {
+        Curve {
+            vertices: self.vertices.iter().map(f).collect(),
+        }
+    }
+
     /// The directed edges `(v_k, v_{k+1})`, closing edge last.
     pub fn edges(&self) -> impl Iterator<Item = (&Point<N>, &Point<N>)> {
         let n = self.vertices.len();
@@ -77,14 +86,21 @@ impl<N: Num> Curve<N> {
     }
 }
 
-/// Twice the signed area of a vertex cycle (shoelace formula).
+/// Twice the signed area of a vertex cycle (shoelace formula), on coordinates relative to its
+/// first vertex as local origin: the same value exactly, and in float mode free of the
+/// cancellation of products of large coordinates (its terms are as large as the cycle, not as
+/// its distance from 0).
 pub(crate) fn twice_signed_area<N: Num>(v: &[Point<N>]) -> N {
     let n = v.len();
+    let Some(o) = v.first() else {
+        return N::zero();
+    };
+    let rel = |p: &Point<N>| (p.x.clone() - o.x.clone(), p.y.clone() - o.y.clone());
     balanced_sum(
-        (0..n)
+        (1..n.saturating_sub(1))
             .map(|k| {
-                let (p, q) = (&v[k], &v[(k + 1) % n]);
-                p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone()
+                let ((px, py), (qx, qy)) = (rel(&v[k]), rel(&v[k + 1]));
+                px * qy - qx * py
             })
             .collect(),
     )

@@ -1,5 +1,7 @@
 //! Why user data is not a realizable spadjor (seed 000 Def. 3.15–3.17), naming curve and vertex.
 
+use crate::num::Float;
+
 /// A reason the curves given do not form a Yin set's boundary representation. Curve and vertex
 /// indices are 0-based positions in the input as given.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -59,6 +61,25 @@ pub enum YinError {
     /// The curves of one atom touch in a cycle, so the atom's interior is not connected.
     #[error("curves {curves:?} of one atom touch each other in a cycle (at {point}), so its interior is not connected (seed 000 Def. 3.16(c))")]
     DisconnectedAtom { curves: Vec<usize>, point: String },
+    /// Float mode: the grid of the requested ε cannot carry the input's coordinates (every
+    /// coordinate must be at most 2⁵¹ grid steps from 0, see `Tolerance`).
+    #[error("tolerance {:e} is too fine for these coordinates: the smallest ε whose grid can represent them is {:e}", .requested.get(), .representable.get())]
+    ToleranceTooFine {
+        requested: Float,
+        representable: Float,
+    },
+    /// Float mode: the whole input vanishes when snapped to the grid of its ε.
+    #[error("the input is thinner than the grid spacing {:e} of its tolerance and vanishes when snapped to it: use a smaller ε", .grid.get())]
+    CollapsedOnGrid { grid: Float },
+    /// Pieces to paste that are not a union of closed cycles (an internal invariant).
+    #[error("pasting map: the pieces are not closed cycles, one ends at {point}")]
+    Unbalanced { point: String },
+    /// Snap rounding found a crossing it cannot resolve (an internal invariant).
+    #[error("snap rounding made no progress on a crossing near grid point {point}")]
+    SnapStalled { point: String },
+    /// The sweep for winding numbers found pieces stacked in a cycle (an internal invariant).
+    #[error("winding sweep: the pieces above the one starting at {point} form a cycle")]
+    SweepCycle { point: String },
     /// `validate` found a set whose stored form is not the canonical one (an internal bug).
     #[error("the stored curves are not in canonical form")]
     NotCanonical,

@@ -26,6 +26,7 @@ use super::intersect::Edge;
 use super::paste::Segmented;
 use super::set::YinSet2;
 use super::snap::regularize;
+use super::validate::resolve_for;
 use super::winding::left_windings;
 use crate::kernel::Point;
 use crate::num::Num;
@@ -97,23 +98,18 @@ impl<N: Num> YinSet2<N> {
                 });
             }
         }
-        let extent = rings
-            .iter()
-            .flatten()
-            .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
-            .fold(0.0, f64::max);
-        let ctx = N::resolve_ctx(ctx, extent);
+        let ctx = resolve_for(&rings, ctx)?;
         let edges = ring_edges(&rings);
-        if let Some(spacing) = N::grid(&ctx) {
-            // Float mode: the same rule after snap rounding to the ε-grid (seed 000 §5.2).
+        if N::grid(&ctx).is_some() {
+            // Float mode: the same rule after snap rounding to the grid of ε (seed 000 §5.2).
             let labelled: Vec<(Edge<N>, usize)> = edges.into_iter().map(|e| (e, 0)).collect();
-            return Ok(regularize(&labelled, spacing, ctx, |w| rule.inside(w[0])));
+            return regularize(&labelled, ctx, |w| rule.inside(w[0]));
         }
         let mut g = Segmented::new();
         let pieces = merged_pieces(&edges, &mut g, &ctx);
         let ends: Vec<(&Point<N>, &Point<N>)> = pieces.iter().map(|p| (&p.from, &p.to)).collect();
         let mult: Vec<i64> = pieces.iter().map(|p| p.mult).collect();
-        for (piece, left) in pieces.iter().zip(left_windings(&ends, &mult, &ctx)) {
+        for (piece, left) in pieces.iter().zip(left_windings(&ends, &mult, &ctx)?) {
             let right = left - piece.mult;
             match (rule.inside(left), rule.inside(right)) {
                 (true, false) => g.push(piece.ids.0, piece.ids.1),
@@ -121,7 +117,7 @@ impl<N: Num> YinSet2<N> {
                 _ => {}
             }
         }
-        Ok(g.paste(ctx))
+        g.paste_exact(ctx)
     }
 }
 

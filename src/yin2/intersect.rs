@@ -522,7 +522,7 @@ mod tests {
     /// Float mode: equal to the oracle here, as the rounding of crossing points stays far below ε.
     fn check_float(segs: &[Seg]) -> usize {
         let edges = edges_of::<Float>(segs);
-        let ctx = Float::resolve_ctx(Tolerance::default(), 8.0);
+        let ctx = Tolerance::new(8.0 * Tolerance::RELATIVE_DEFAULT);
         let got = intersections(&edges, &ctx, |_, _| true);
         let want = brute(&edges, &ctx, |_, _| true);
         assert!(got.windows(2).all(|w| (w[0].0, w[0].1) < (w[1].0, w[1].1)));

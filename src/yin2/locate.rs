@@ -1,7 +1,9 @@
 //! Batch point location by plane sweep (seed 002 Alg. 1), O((n + q) log n).
 
 use crate::kernel::{orient, Point};
-use crate::num::Num;
+use crate::num::{segment_distance, Num};
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{RTree, AABB};
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 
@@ -113,6 +115,52 @@ pub fn locate_in_edges<N: Num>(
             classify_between(status, probe, p, far, ctx)
         };
     });
+    out
+}
+
+/// Float mode's location rule ([`crate::num::Tolerance`]): the exact location of each query
+/// relative to the region bounded by `edges`, except that a point whose distance to an edge is
+/// at most `eps` is on the boundary, whatever the edge's direction.
+pub(crate) fn locate_within<N: Num>(
+    edges: &[(&Point<N>, &Point<N>)],
+    unbounded: bool,
+    queries: &[Point<N>],
+    eps: f64,
+) -> Vec<Location> {
+    let mut out = locate_in_edges(edges, unbounded, queries, &N::exact_ctx());
+    if eps <= 0.0 {
+        return out;
+    }
+    let ends: Vec<([f64; 2], [f64; 2])> = edges
+        .iter()
+        .map(|(a, b)| (a.to_f64(), b.to_f64()))
+        .collect();
+    let boxes = ends
+        .iter()
+        .enumerate()
+        .map(|(i, (a, b))| {
+            let lo = [a[0].min(b[0]), a[1].min(b[1])];
+            let hi = [a[0].max(b[0]), a[1].max(b[1])];
+            GeomWithData::new(Rectangle::from_corners(lo, hi), i)
+        })
+        .collect();
+    let tree = RTree::bulk_load(boxes);
+    for (q, loc) in queries.iter().zip(&mut out) {
+        if *loc == Location::OnBoundary {
+            continue;
+        }
+        let p = q.to_f64();
+        let near = AABB::from_corners(
+            [p[0] - eps, p[1] - eps].map(f64::next_down),
+            [p[0] + eps, p[1] + eps].map(f64::next_up),
+        );
+        if tree
+            .locate_in_envelope_intersecting(&near)
+            .any(|r| segment_distance(ends[r.data].0, ends[r.data].1, p) <= eps)
+        {
+            *loc = Location::OnBoundary;
+        }
+    }
     out
 }
 

@@ -1,9 +1,10 @@
 //! Meet (seed 000 Def. 4.8, MRS-a..d) in O((n + I) log n) (seed 002 §1.3).
 
 use super::cut::cut_at_contacts;
+use super::error::YinError;
 use super::intersect::Edge;
 use super::locate::Location;
-use super::paste::Segmented;
+use super::paste::{or_kernel_bug, Segmented};
 use super::set::{Repr, Spadjor, YinSet2};
 use super::snap::{inside_set, regularize};
 use crate::kernel::Point;
@@ -18,13 +19,20 @@ impl<N: Num> YinSet2<N> {
             (Repr::Empty, _) | (_, Repr::Empty) => YinSet2::empty().with_ctx(ctx),
             (Repr::Full, _) => other.clone().with_ctx(ctx),
             (_, Repr::Full) => self.clone().with_ctx(ctx),
-            (Repr::Spadjor(a), Repr::Spadjor(b)) => meet_spadjors(a, b, ctx),
+            (Repr::Spadjor(a), Repr::Spadjor(b)) => match N::grid(&ctx) {
+                Some(_) => or_kernel_bug(overlay(a, b, ctx, |x, y| x && y)),
+                None => or_kernel_bug(meet_spadjors(a, b, ctx)),
+            },
         }
     }
 }
 
-/// MRS-a..d on two realizable spadjors, then the pasting map.
-fn meet_spadjors<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, ctx: N::Ctx) -> YinSet2<N> {
+/// MRS-a..d on two realizable spadjors, then the pasting map (exact mode).
+fn meet_spadjors<N: Num>(
+    a: &Spadjor<N>,
+    b: &Spadjor<N>,
+    ctx: N::Ctx,
+) -> Result<YinSet2<N>, YinError> {
     let edges: Vec<Edge<N>> = a
         .edges()
         .into_iter()
@@ -69,15 +77,18 @@ fn meet_spadjors<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, ctx: N::Ctx) -> YinSet2
             }
         }
     }
-    match N::grid(&ctx) {
-        Some(spacing) if !g.is_balanced() => overlay(a, b, spacing, ctx),
-        _ => g.paste(ctx),
-    }
+    g.paste_exact(ctx)
 }
 
-/// Float mode's fallback when round-off left the selected pieces unbalanced: snap both
-/// operands' boundaries together and keep the faces inside both (winding numbers per operand).
-fn overlay<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, spacing: f64, ctx: N::Ctx) -> YinSet2<N> {
+/// Float mode's Boolean operations, one pipeline on grid integers: snap-round both operands'
+/// boundaries together and keep the faces where `keep(in 𝒥, in 𝒦)` holds, decided by the
+/// winding numbers per operand ([`regularize`]).
+pub(crate) fn overlay<N: Num>(
+    a: &Spadjor<N>,
+    b: &Spadjor<N>,
+    ctx: N::Ctx,
+    keep: impl Fn(bool, bool) -> bool,
+) -> Result<YinSet2<N>, YinError> {
     let pieces: Vec<(Edge<N>, usize)> = [a, b]
         .iter()
         .enumerate()
@@ -88,7 +99,7 @@ fn overlay<N: Num>(a: &Spadjor<N>, b: &Spadjor<N>, spacing: f64, ctx: N::Ctx) ->
         })
         .collect();
     let (ua, ub) = (!a.bounded, !b.bounded);
-    regularize(&pieces, spacing, ctx, |w| {
-        inside_set(w[0], ua) && inside_set(w[1], ub)
+    regularize(&pieces, ctx, |w| {
+        keep(inside_set(w[0], ua), inside_set(w[1], ub))
     })
 }

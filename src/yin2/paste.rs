@@ -1,11 +1,19 @@
 //! The pasting map S_V⁻¹ (seed 000 Lemma 4.2, S2R-a..d; seed 002 Alg. 2).
 
-use super::intersect::Edge;
+use super::error::YinError;
 use super::set::{Spadjor, YinSet2};
-use super::snap::{inside_set, regularize};
 use crate::kernel::{cmp_clockwise_from, Point};
 use crate::num::Num;
 use std::collections::{HashMap, HashSet};
+
+/// Jordan curves as vertex cycles, and the touching points among their vertices.
+type Loops<N> = (Vec<Vec<Point<N>>>, HashSet<Point<N>>);
+
+/// The result of an infallible operation whose internal invariant failed: a kernel bug,
+/// reported loudly instead of returning a wrong set.
+pub(crate) fn or_kernel_bug<N: Num>(r: Result<YinSet2<N>, YinError>) -> YinSet2<N> {
+    r.unwrap_or_else(|e| panic!("kernel bug: {e}"))
+}
 
 /// A segmented realizable spadjor: points and the directed straight pieces between them.
 pub(crate) struct Segmented<N: Num> {
@@ -38,50 +46,23 @@ impl<N: Num> Segmented<N> {
         self.edges.push((a, b));
     }
 
-    /// S_V⁻¹: paste the pieces into Jordan curves and build the Yin set (0̂ if no piece is left,
-    /// which the callers rule out for 1̂). In float mode the pieces are snapped to the ε-grid and
-    /// regularized by winding numbers, so the result is exactly valid; it is accurate when the
-    /// pieces form closed cycles (see [`Segmented::is_balanced`]).
-    pub(crate) fn paste(self, ctx: N::Ctx) -> YinSet2<N> {
-        let Some(spacing) = N::grid(&ctx) else {
-            return self.paste_exact(ctx);
-        };
-        let pieces: Vec<(Edge<N>, usize)> = self
-            .edges
-            .iter()
-            .map(|&(a, b)| ((self.points[a].clone(), self.points[b].clone()), 0))
-            .collect();
-        let twice_area = pieces.iter().fold(N::zero(), |acc, ((p, q), _)| {
-            acc + (p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone())
-        });
-        let unbounded = twice_area.sign() == std::cmp::Ordering::Less;
-        regularize(&pieces, spacing, ctx, |w| inside_set(w[0], unbounded))
-    }
-
-    /// True if every point has as many pieces entering as leaving: the pieces form closed cycles.
-    pub(crate) fn is_balanced(&self) -> bool {
-        let mut balance = vec![0i64; self.points.len()];
-        for &(a, b) in &self.edges {
-            balance[a] += 1;
-            balance[b] -= 1;
-        }
-        balance.iter().all(|&d| d == 0)
-    }
-
-    /// S_V⁻¹ with the predicates of `ctx` taken as exact (the pieces must bound a Yin set).
-    pub(crate) fn paste_exact(self, ctx: N::Ctx) -> YinSet2<N> {
+    /// S_V⁻¹: paste the pieces into Jordan curves and build the Yin set (0̂ if no piece is
+    /// left, which the callers rule out for 1̂), with the predicates of `ctx` taken as exact.
+    /// The pieces must bound a Yin set; a piece set that is not a union of closed cycles is an
+    /// error ([`YinError::Unbalanced`]), never a silently dropped path.
+    pub(crate) fn paste_exact(self, ctx: N::Ctx) -> Result<YinSet2<N>, YinError> {
         if self.edges.is_empty() {
-            return YinSet2::empty().with_ctx(ctx);
+            return Ok(YinSet2::empty().with_ctx(ctx));
         }
-        let (loops, touching) = self.loops(&ctx);
+        let (loops, touching) = self.loops(&ctx)?;
         let (spadjor, _) = Spadjor::assemble(loops, &touching, &ctx);
-        YinSet2::from_spadjor(spadjor, ctx)
+        Ok(YinSet2::from_spadjor(spadjor, ctx))
     }
 
     /// S2R-b..d: grow paths by the clockwise rule and cut loops off at repeated vertices
     /// (S2R-c), so that every loop is a Jordan curve. Also returns the touching points: vertices
     /// entered by more than one piece.
-    fn loops(&self, ctx: &N::Ctx) -> (Vec<Vec<Point<N>>>, HashSet<Point<N>>) {
+    fn loops(&self, ctx: &N::Ctx) -> Result<Loops<N>, YinError> {
         let n = self.points.len();
         let mut out: Vec<Vec<usize>> = vec![Vec::new(); n];
         let mut indegree = vec![0usize; n];
@@ -126,16 +107,14 @@ impl<N: Num> Segmented<N> {
                         path.push(e);
                     }
                     None => {
-                        debug_assert!(false, "pasting map: dangling piece at {}", self.points[v]);
-                        for &e in &path {
-                            pos[self.edges[e].0] = usize::MAX;
-                        }
-                        break;
+                        return Err(YinError::Unbalanced {
+                            point: self.points[v].to_string(),
+                        })
                     }
                 }
             }
         }
-        (loops, touching)
+        Ok((loops, touching))
     }
 
     /// S2R-b: of the unused pieces leaving the end of `incoming`, the one with the smallest
@@ -162,5 +141,29 @@ impl<N: Num> Segmented<N> {
                     ctx,
                 )
             })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    #[test]
+    fn unbalanced_pieces_are_an_error_not_a_dropped_path() {
+        // Two sides of a triangle: the path from (0,0) ends at (0,2), which nothing leaves.
+        let mut g = Segmented::<Rational>::new();
+        let v: Vec<usize> = [(0, 0), (2, 0), (0, 2)]
+            .iter()
+            .map(|&(x, y)| g.id(&Point::int(x, y)))
+            .collect();
+        g.push(v[0], v[1]);
+        g.push(v[1], v[2]);
+        assert_eq!(
+            g.paste_exact(()).err(),
+            Some(YinError::Unbalanced {
+                point: Point::<Rational>::int(0, 2).to_string()
+            })
+        );
     }
 }

@@ -2,7 +2,7 @@
 
 use super::curve::{balanced_sum, canonical_curve, Curve};
 use super::hasse::{atoms, parents, Atom, Betti};
-use super::locate::{locate_in_edges, Location};
+use super::locate::{locate_within, Location};
 use crate::kernel::{BBox, Point};
 use crate::num::Num;
 use std::collections::HashSet;
@@ -70,6 +70,19 @@ impl<N: Num> Spadjor<N> {
         )
     }
 
+    /// The same spadjor with every vertex moved by `f`, an order-preserving map (a translation
+    /// composed with a positive scaling): canonical form, Hasse diagram and atoms carry over.
+    pub(crate) fn map_points<M: Num>(&self, f: impl Fn(&Point<N>) -> Point<M>) -> Spadjor<M> {
+        Spadjor {
+            curves: self.curves.iter().map(|c| c.map_points(&f)).collect(),
+            positive: self.positive.clone(),
+            parent: self.parent.clone(),
+            atoms: self.atoms.clone(),
+            betti: self.betti.clone(),
+            bounded: self.bounded,
+        }
+    }
+
     /// All directed edges of all curves.
     pub(crate) fn edges(&self) -> Vec<(&Point<N>, &Point<N>)> {
         self.curves.iter().flat_map(|c| c.edges()).collect()
@@ -77,7 +90,7 @@ impl<N: Num> Spadjor<N> {
 
     /// Batch locate (seed 002 Alg. 1).
     pub(crate) fn locate(&self, queries: &[Point<N>], ctx: &N::Ctx) -> Vec<Location> {
-        locate_in_edges(&self.edges(), !self.bounded, queries, ctx)
+        locate_within(&self.edges(), !self.bounded, queries, N::tolerance(ctx))
     }
 }
 
@@ -114,6 +127,27 @@ impl<N: Num> YinSet2<N> {
     /// The number context in force (float mode: the tolerance ε).
     pub fn ctx(&self) -> N::Ctx {
         self.ctx
+    }
+
+    /// The effective grid spacing of float mode (every vertex is a multiple of it, see
+    /// [`crate::num::Tolerance`]); `None` in exact mode.
+    pub fn grid(&self) -> Option<f64> {
+        N::grid(&self.ctx)
+    }
+
+    /// The same set in number type `M`, every vertex moved by `f` (an order-preserving map:
+    /// a translation composed with a positive scaling), with context `ctx`.
+    pub(crate) fn map_points<M: Num>(
+        &self,
+        f: impl Fn(&Point<N>) -> Point<M>,
+        ctx: M::Ctx,
+    ) -> YinSet2<M> {
+        let repr = match &self.repr {
+            Repr::Empty => Repr::Empty,
+            Repr::Full => Repr::Full,
+            Repr::Spadjor(s) => Repr::Spadjor(s.map_points(f)),
+        };
+        YinSet2 { repr, ctx }
     }
 
     /// True for 0̂.
@@ -192,7 +226,9 @@ impl<N: Num> YinSet2<N> {
             .reduce(|a, b| a.union(&b))
     }
 
-    /// Locate each point: inside, outside or on the boundary (seed 002 Alg. 1).
+    /// Locate each point: inside, outside or on the boundary (seed 002 Alg. 1). Exact in exact
+    /// mode; in float mode a point within ε of the boundary (Euclidean distance to the nearest
+    /// edge, any direction) is on it, every other point is located exactly.
     pub fn locate(&self, points: &[Point<N>]) -> Vec<Location> {
         match &self.repr {
             Repr::Empty => vec![Location::Outside; points.len()],

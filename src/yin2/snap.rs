@@ -2,21 +2,25 @@
 //! boundary pieces to the ε-grid, then regularization by winding numbers. Every float result is
 //! thereby exactly a valid Yin set whose vertices are grid points, decided with exact predicates.
 
+use super::error::YinError;
 use super::intersect::{intersections, Edge};
 use super::paste::Segmented;
 use super::set::YinSet2;
 use super::winding::left_windings;
 use crate::kernel::{Contact, Point};
-use crate::num::{Float, Num};
+use crate::num::{Float, Num, Tolerance};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
 use rstar::{RTree, SelectionFunction, AABB};
 use std::collections::{BTreeSet, HashMap};
 use std::ops::{Add, Sub};
 
-/// A grid point: integer multiples of the grid spacing.
+/// A grid point: integer multiples of the grid spacing, relative to the local origin.
 type G = (i64, i64);
 
-/// Largest grid coordinate magnitude, so that every exact test below fits in `i128`.
-const MAX_GRID: f64 = (1u64 << 38) as f64;
+/// A grid segment with the operand (`0` or `1`) its piece came from.
+type Labelled = ((G, G), usize);
 
 /// Winding numbers of a point with respect to the boundaries of the operands (two at most).
 pub(crate) type Winding = [i64; 2];
@@ -40,50 +44,112 @@ impl Sub for Pair {
 }
 
 /// The Yin set of the faces where `inside` holds, given the directed pieces of the operands'
-/// boundaries labelled by operand (`0` or `1`), after snapping them to the grid of spacing
-/// `spacing` (raised, if needed, so that coordinates stay below 2³⁸ spacings). Every piece set
-/// must be a union of closed cycles, so that winding numbers are defined.
+/// boundaries labelled by operand (`0` or `1`), after snapping them to the grid of `ctx`
+/// (float mode, [`crate::num::Tolerance`]). The whole computation runs on grid integers
+/// relative to a local origin ([`Frame`]), with exact integer-valued predicates; only the
+/// result's vertices are mapped back to coordinates. Every piece set must be a union of closed
+/// cycles, so that winding numbers are defined.
 pub(crate) fn regularize<N: Num>(
     pieces: &[(Edge<N>, usize)],
-    spacing: f64,
     ctx: N::Ctx,
     inside: impl Fn(Winding) -> bool,
-) -> YinSet2<N> {
-    let extent = pieces
+) -> Result<YinSet2<N>, YinError> {
+    let frame = Frame::of(pieces.iter().flat_map(|((a, b), _)| [a, b]), ctx);
+    let ctx = frame.ctx;
+    let segments: Vec<Labelled> = pieces
         .iter()
-        .flat_map(|((a, b), _)| [a, b])
-        .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
-        .fold(0.0, f64::max);
-    let mut g = spacing;
-    while extent / g >= MAX_GRID {
-        g *= 2.0;
-    }
-    let to_grid = |p: &Point<N>| {
-        (
-            (p.x.to_f64() / g).round() as i64,
-            (p.y.to_f64() / g).round() as i64,
-        )
-    };
-    let segments: Vec<((G, G), usize)> = pieces
-        .iter()
-        .map(|((a, b), l)| ((to_grid(a), to_grid(b)), *l))
+        .map(|((a, b), l)| ((frame.to_grid(a), frame.to_grid(b)), *l))
         .filter(|((a, b), _)| a != b)
         .collect();
-    let fragments = snap_round(segments, g);
-    let windings = Windings::of(&fragments, g);
+    let fragments = snap_round(segments)?;
+    let windings = Windings::of(&fragments)?;
+    let boundary = |k: usize| {
+        let (left, right) = windings.sides(k);
+        inside(left) != inside(right)
+    };
+    if !(0..windings.pieces.len()).any(boundary) {
+        // No boundary left: the far face (winding 0) decides between 0̂ and 1̂.
+        let all = if inside([0, 0]) {
+            YinSet2::full()
+        } else {
+            YinSet2::empty()
+        };
+        return Ok(all.with_ctx(ctx));
+    }
     let mut out = Segmented::new();
     for (k, &(lo, hi)) in windings.pieces.iter().enumerate() {
-        let (left, right) = windings.sides(k);
-        if inside(left) != inside(right) {
-            let (a, b) = (out.id(&point(lo, g)), out.id(&point(hi, g)));
-            if inside(left) {
+        if boundary(k) {
+            let (a, b) = (out.id(&unit(lo)), out.id(&unit(hi)));
+            if inside(windings.sides(k).0) {
                 out.push(a, b);
             } else {
                 out.push(b, a);
             }
         }
     }
-    out.paste_exact(N::Ctx::default()).with_ctx(ctx)
+    Ok(out
+        .paste_exact(Tolerance::default())?
+        .map_points(|p| frame.to_point(p), ctx))
+}
+
+/// The grid of one snap rounding: spacing `g` (a power of two) and a local origin on the grid
+/// near the centre of the input, so that grid coordinates are integers below 2⁵² and results
+/// do not depend on where the input sits (up to multiples of g).
+struct Frame<N: Num> {
+    g: f64,
+    origin: G,
+    /// The context of the result: the requested one, or the finest representable grid if the
+    /// requested one is finer (only for a set whose ε was replaced by `with_ctx`).
+    ctx: N::Ctx,
+}
+
+impl<N: Num> Frame<N> {
+    /// The frame for `points` under the grid of `ctx`.
+    fn of<'a>(points: impl Iterator<Item = &'a Point<N>> + Clone, ctx: N::Ctx) -> Frame<N> {
+        let magnitude = points
+            .clone()
+            .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
+            .fold(0.0, f64::max);
+        let ctx = match N::resolve_ctx(N::Ctx::default(), 0.0, magnitude) {
+            Ok(finest) => N::combine_ctx(ctx, finest),
+            Err(_) => ctx,
+        };
+        let g = N::grid(&ctx).unwrap_or(1.0);
+        let mut frame = Frame {
+            g,
+            origin: (0, 0),
+            ctx,
+        };
+        let (lo, hi) = points.map(|p| frame.to_grid(p)).fold(
+            ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN)),
+            |(lo, hi), k| {
+                (
+                    (lo.0.min(k.0), lo.1.min(k.1)),
+                    (hi.0.max(k.0), hi.1.max(k.1)),
+                )
+            },
+        );
+        if lo.0 <= hi.0 {
+            frame.origin = (lo.0 / 2 + hi.0 / 2, lo.1 / 2 + hi.1 / 2);
+        }
+        frame
+    }
+
+    /// The grid point nearest `p` (ties up, as [`crossing_pixel`] rounds, so that snapping
+    /// commutes with translations by the grid), relative to the origin: exact, as every
+    /// coordinate is at most 2⁵¹ grid steps from 0 and g is a power of two.
+    fn to_grid(&self, p: &Point<N>) -> G {
+        let k = |v: &N| (v.to_f64() / self.g + 0.5).floor() as i64;
+        (k(&p.x) - self.origin.0, k(&p.y) - self.origin.1)
+    }
+
+    /// The point of a vertex given in grid units relative to the origin (exact).
+    fn to_point(&self, p: &Point<Float>) -> Point<N> {
+        let c = |k: &Float, o: i64| {
+            N::from_f64((k.get() as i64 + o) as f64 * self.g).unwrap_or_else(|_| N::zero())
+        };
+        Point::new(c(&p.x, self.origin.0), c(&p.y, self.origin.1))
+    }
 }
 
 /// Whether a face of winding `w` lies in a Yin set bounded by closed cycles: positive winding,
@@ -92,10 +158,10 @@ pub(crate) fn inside_set(w: i64, unbounded: bool) -> bool {
     w + i64::from(unbounded) > 0
 }
 
-/// The point of grid coordinates `k` (exact: `k` has at most 38 bits and `g` is a power of 2).
-fn point<N: Num>(k: G, g: f64) -> Point<N> {
-    let c = |v: i64| N::from_f64(v as f64 * g).unwrap_or_else(|_| N::zero());
-    Point::new(c(k.0), c(k.1))
+/// The point of grid coordinates `k` in grid units: integers below 2⁵², exact `f64`s, on which
+/// the `f64` predicates are exact.
+fn unit(k: G) -> Point<Float> {
+    Point::new(Float::new(k.0 as f64), Float::new(k.1 as f64))
 }
 
 /// Snap rounding, iterated until no two fragments cross: each original segment is rerouted,
@@ -103,7 +169,7 @@ fn point<N: Num>(k: G, g: f64) -> Point<N> {
 /// of crossings); where two fragments still cross at a pixel their segments do not meet, that
 /// centre is forced into both paths. Paths stay monotone along their segments and every round
 /// adds a new (segment, centre) stop, so the iteration ends.
-fn snap_round(segments: Vec<((G, G), usize)>, g: f64) -> Vec<((G, G), usize)> {
+fn snap_round(segments: Vec<Labelled>) -> Result<Vec<Labelled>, YinError> {
     let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
     let mut forced: Vec<BTreeSet<G>> = vec![BTreeSet::new(); segments.len()];
     loop {
@@ -116,9 +182,9 @@ fn snap_round(segments: Vec<((G, G), usize)>, g: f64) -> Vec<((G, G), usize)> {
                 fragments.push((f, label));
             }
         }
-        let crossings = crossing_pairs(&fragments, g);
+        let crossings = crossing_pairs(&fragments);
         if crossings.is_empty() {
-            return fragments;
+            return Ok(fragments);
         }
         let mut progress = false;
         for &(i, j) in &crossings {
@@ -130,8 +196,11 @@ fn snap_round(segments: Vec<((G, G), usize)>, g: f64) -> Vec<((G, G), usize)> {
         }
         if !progress {
             // Cannot happen for a crossing strictly inside two fragments; never loop forever.
-            debug_assert!(false, "snap rounding made no progress");
-            return fragments;
+            let (i, j) = crossings[0];
+            let c = crossing_pixel(fragments[i].0, fragments[j].0);
+            return Err(YinError::SnapStalled {
+                point: format!("{c:?}"),
+            });
         }
     }
 }
@@ -235,10 +304,10 @@ fn meets_pixel(a: G, b: G, c: G) -> bool {
 }
 
 /// Pairs of fragments whose interiors cross properly.
-fn crossing_pairs(segments: &[((G, G), usize)], g: f64) -> Vec<(usize, usize)> {
+fn crossing_pairs(segments: &[Labelled]) -> Vec<(usize, usize)> {
     let edges: Vec<Edge<Float>> = segments
         .iter()
-        .map(|&((a, b), _)| (point(a, g), point(b, g)))
+        .map(|&((a, b), _)| (unit(a), unit(b)))
         .collect();
     intersections(&edges, &Default::default(), |_, _| true)
         .into_iter()
@@ -247,22 +316,42 @@ fn crossing_pairs(segments: &[((G, G), usize)], g: f64) -> Vec<(usize, usize)> {
         .collect()
 }
 
-/// The pixel (nearest grid point, ties up) of the crossing of the lines `ab` and `cd`, exactly.
+/// The pixel (nearest grid point, ties up) of the crossing of the lines `ab` and `cd`, exactly:
+/// in `i128` when it cannot overflow, else in big integers (coordinates below 2⁵² need up to
+/// 160 bits).
 fn crossing_pixel(s: (G, G), t: (G, G)) -> G {
+    pixel_in::<i128>(s, t)
+        .or_else(|| pixel_in::<BigInt>(s, t))
+        .expect("the pixel of a crossing of two grid segments is a grid point")
+}
+
+/// [`crossing_pixel`] in the integer type `T`, `None` on overflow.
+fn pixel_in<T>(s: (G, G), t: (G, G)) -> Option<G>
+where
+    T: Integer + Signed + Clone + From<i64> + CheckedMul + CheckedAdd + CheckedSub + ToPrimitive,
+{
     let ((a, b), (c, d)) = (s, t);
-    let w = |p: G| (p.0 as i128, p.1 as i128);
+    let w = |p: G| (T::from(p.0), T::from(p.1));
     let (a, b, c, d) = (w(a), w(b), w(c), w(d));
-    let cross = |u: (i128, i128), v: (i128, i128)| u.0 * v.1 - u.1 * v.0;
-    let (ab, cd) = ((b.0 - a.0, b.1 - a.1), (d.0 - c.0, d.1 - c.1));
-    let mut den = cross(ab, cd);
-    let mut num = cross((c.0 - a.0, c.1 - a.1), cd);
-    if den < 0 {
+    let sub = |x: &T, y: &T| x.checked_sub(y);
+    let cross = |u: (T, T), v: (T, T)| u.0.checked_mul(&v.1)?.checked_sub(&u.1.checked_mul(&v.0)?);
+    let ab = (sub(&b.0, &a.0)?, sub(&b.1, &a.1)?);
+    let cd = (sub(&d.0, &c.0)?, sub(&d.1, &c.1)?);
+    let ca = (sub(&c.0, &a.0)?, sub(&c.1, &a.1)?);
+    let mut den = cross(ab.clone(), cd.clone())?;
+    let mut num = cross(ca, cd)?;
+    if den.is_negative() {
         den = -den;
         num = -num;
     }
     // coordinate = a + num/den · ab; pixel = floor(coordinate + 1/2) = floor((2(a·den + num·ab) + den) / 2den).
-    let round = |a0: i128, ab0: i128| (2 * (a0 * den + num * ab0) + den).div_euclid(2 * den) as i64;
-    (round(a.0, ab.0), round(a.1, ab.1))
+    let two = T::from(2);
+    let round = |a0: &T, ab0: &T| -> Option<i64> {
+        let top = a0.checked_mul(&den)?.checked_add(&num.checked_mul(ab0)?)?;
+        let top = top.checked_mul(&two)?.checked_add(&den)?;
+        top.div_floor(&den.checked_mul(&two)?).to_i64()
+    };
+    Some((round(&a.0, &ab.0)?, round(&a.1, &ab.1)?))
 }
 
 /// The distinct pieces of the snapped arrangement with their net multiplicity per operand and
@@ -279,17 +368,12 @@ struct Windings {
 impl Windings {
     /// Cut the fragments at every contact, merge coincident pieces, and compute windings from
     /// the first piece above each piece (a vertical sweep, seed 002 Alg. 1).
-    fn of(fragments: &[((G, G), usize)], g: f64) -> Windings {
+    fn of(fragments: &[Labelled]) -> Result<Windings, YinError> {
         let edges: Vec<Edge<Float>> = fragments
             .iter()
-            .map(|&((a, b), _)| (point(a, g), point(b, g)))
+            .map(|&((a, b), _)| (unit(a), unit(b)))
             .collect();
-        let on = |p: &Point<Float>| {
-            (
-                (p.x.get() / g).round() as i64,
-                (p.y.get() / g).round() as i64,
-            )
-        };
+        let on = |p: &Point<Float>| (p.x.get() as i64, p.y.get() as i64);
         let mut cuts: Vec<Vec<G>> = vec![Vec::new(); fragments.len()];
         for (i, j, contact) in intersections(&edges, &Default::default(), |_, _| true) {
             let pts: Vec<G> = match &contact {
@@ -316,22 +400,19 @@ impl Windings {
             net.into_iter().filter(|&(_, m)| m != [0, 0]).collect();
         pieces.sort();
         let (pieces, mult): (Vec<(G, G)>, Vec<Winding>) = pieces.into_iter().unzip();
-        let left = Windings::left_windings(&pieces, &mult, g);
-        Windings { pieces, mult, left }
+        let left = Windings::left_windings(&pieces, &mult)?;
+        Ok(Windings { pieces, mult, left })
     }
 
     /// Winding numbers on the left of each piece.
-    fn left_windings(pieces: &[(G, G)], mult: &[Winding], g: f64) -> Vec<Winding> {
-        let pts: Vec<Edge<Float>> = pieces
-            .iter()
-            .map(|&(a, b)| (point(a, g), point(b, g)))
-            .collect();
+    fn left_windings(pieces: &[(G, G)], mult: &[Winding]) -> Result<Vec<Winding>, YinError> {
+        let pts: Vec<Edge<Float>> = pieces.iter().map(|&(a, b)| (unit(a), unit(b))).collect();
         let refs: Vec<(&Point<Float>, &Point<Float>)> = pts.iter().map(|(a, b)| (a, b)).collect();
         let mult: Vec<Pair> = mult.iter().map(|&m| Pair(m)).collect();
-        left_windings(&refs, &mult, &Default::default())
+        Ok(left_windings(&refs, &mult, &Default::default())?
             .into_iter()
             .map(|p| p.0)
-            .collect()
+            .collect())
     }
 
     /// Winding numbers on the left and on the right of piece `k`.

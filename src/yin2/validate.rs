@@ -5,8 +5,8 @@ use super::error::YinError;
 use super::intersect::{intersections, Edge};
 use super::set::{Spadjor, YinSet2};
 use super::snap::{inside_set, regularize};
-use crate::kernel::{cmp_clockwise_from, Contact, Point};
-use crate::num::{Num, Rational};
+use crate::kernel::{cmp_clockwise_from, BBox, Contact, Point};
+use crate::num::{Float, Num, Rational};
 use crate::union_find::UnionFind;
 use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet};
@@ -33,25 +33,19 @@ impl<N: Num> YinSet2<N> {
         ctx: N::Ctx,
     ) -> Result<YinSet2<N>, YinError> {
         let curves = basic_checks(curves)?;
-        let extent = curves
-            .iter()
-            .flatten()
-            .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
-            .fold(0.0, f64::max);
-        let ctx = N::resolve_ctx(ctx, extent);
+        let ctx = resolve_for(&curves, ctx)?;
         // The input must bound a Yin set exactly as given; float mode's ε applies to results.
         let spadjor = realize(curves, &N::Ctx::default())?;
-        if let Some(spacing) = N::grid(&ctx) {
-            // Float mode: the set the curves bound within ε, made exactly valid on the ε-grid.
+        if N::grid(&ctx).is_some() {
+            // Float mode: the set the curves bound, snap-rounded to the grid of ε.
             let unbounded = !spadjor.bounded;
             let edges: Vec<(Edge<N>, usize)> = spadjor
                 .edges()
                 .into_iter()
                 .map(|(a, b)| ((a.clone(), b.clone()), 0))
                 .collect();
-            return Ok(regularize(&edges, spacing, ctx, |w| {
-                inside_set(w[0], unbounded)
-            }));
+            let y = regularize(&edges, ctx, |w| inside_set(w[0], unbounded))?;
+            return not_collapsed(y);
         }
         Ok(YinSet2::from_spadjor(spadjor, ctx))
     }
@@ -105,6 +99,31 @@ impl<N: Num> YinSet2<N> {
                     .collect()
             })
             .collect()
+    }
+}
+
+/// The context `ctx` resolved for the finite points of `curves` ([`Num::resolve_ctx`]: float
+/// mode's default ε, or the error that the requested one is too fine for them).
+pub(crate) fn resolve_for<N: Num>(
+    curves: &[Vec<Point<N>>],
+    ctx: N::Ctx,
+) -> Result<N::Ctx, YinError> {
+    let (span, magnitude) =
+        BBox::of(curves.iter().flatten()).map_or((0.0, 0.0), |b| (b.span(), b.extent()));
+    N::resolve_ctx(ctx, span, magnitude).map_err(|e| YinError::ToleranceTooFine {
+        requested: Float::new(e.requested),
+        representable: Float::new(e.representable),
+    })
+}
+
+/// A float set snapped from a non-empty input, or the error that the whole input vanished on
+/// its grid (a non-empty set never silently becomes 0̂ or 1̂).
+pub(crate) fn not_collapsed<N: Num>(y: YinSet2<N>) -> Result<YinSet2<N>, YinError> {
+    match y.grid() {
+        Some(g) if y.is_empty() || y.is_full() => Err(YinError::CollapsedOnGrid {
+            grid: Float::new(g),
+        }),
+        _ => Ok(y),
     }
 }
 

@@ -1,6 +1,7 @@
 //! Winding numbers of the faces beside pairwise non-crossing pieces, by the sweep of seed 002
 //! Alg. 1: shared by the fill rules and float mode's snap rounding.
 
+use super::error::YinError;
 use super::locate::first_above;
 use crate::kernel::Point;
 use crate::num::Num;
@@ -10,12 +11,13 @@ use std::ops::{Add, Sub};
 /// non-crossing and non-overlapping, `mult[k]` the net multiplicity of piece k): the face above a
 /// non-vertical piece, or east of a vertical one, is the face below the first non-vertical piece
 /// above its midpoint, or the far face (winding 0); the face below a piece is the one above it
-/// less its multiplicity. O(P log P) for P pieces.
+/// less its multiplicity. O(P log P) for P pieces. A cycle among the pieces above (a wrong
+/// sweep order, an internal invariant) is an error, never an endless walk.
 pub(crate) fn left_windings<N, W>(
     pieces: &[(&Point<N>, &Point<N>)],
     mult: &[W],
     ctx: &N::Ctx,
-) -> Vec<W>
+) -> Result<Vec<W>, YinError>
 where
     N: Num,
     W: Copy + Default + Add<Output = W> + Sub<Output = W>,
@@ -35,27 +37,28 @@ where
             }
             chain.push(q);
             // A cycle would mean a wrong sweep order: stop instead of growing without bound.
-            assert!(
-                chain.len() <= pieces.len(),
-                "kernel bug: the pieces above piece {k} form a cycle (a wrong sweep order)"
-            );
+            if chain.len() > pieces.len() {
+                return Err(YinError::SweepCycle {
+                    point: pieces[k].0.to_string(),
+                });
+            }
             cur = above[q];
         }
         for &q in chain.iter().rev() {
             face = face - mult[q];
             below[q] = Some(face);
         }
-        face
+        Ok(face)
     };
     (0..pieces.len())
         .map(|k| {
-            let face = face_above(k);
+            let face = face_above(k)?;
             // Going up is right to left across a vertical piece: add its multiplicity.
-            if pieces[k].0.x == pieces[k].1.x {
+            Ok(if pieces[k].0.x == pieces[k].1.x {
                 face + mult[k]
             } else {
                 face
-            }
+            })
         })
         .collect()
 }

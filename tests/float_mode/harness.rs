@@ -154,7 +154,10 @@ pub fn compare(
         )
     })?;
     let l = scale_length(a, op.binary().then_some(b), &exact);
-    let ratio = d.to_f64() / (eps * l);
+    // In rationals: ε · L under- or overflows f64 at extreme magnitudes.
+    let bound =
+        Rational::from_f64(eps).expect("finite ε") * Rational::from_f64(l).expect("finite L");
+    let ratio = (d / bound).to_f64();
     let (fb_, eb) = (float.betti(), exact.betti());
     Ok(Outcome {
         ratio,
