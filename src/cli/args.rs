@@ -78,6 +78,11 @@ pub struct WriteOpts {
     /// Output format (default: from the --output extension, else yin2 for 2D sets, obj for 3D).
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub to: Option<Format>,
+    /// Write WKT and GeoJSON coordinates exactly (decimals where they terminate, else `p/q` in
+    /// WKT and an error in GeoJSON) instead of the shortest decimals of the nearest f64s, which
+    /// other GIS tools read; yin2 and OBJ are always exact.
+    #[arg(long)]
+    pub exact: bool,
 }
 
 /// A fill rule for polygon soup.

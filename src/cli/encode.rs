@@ -5,20 +5,29 @@ use super::decode::{FULL_PLANE, WHOLE_SPACE};
 use super::error::CliError;
 use super::format::{Dimension, Format};
 use crate::io::obj::write_obj;
-use crate::io::{geojson, wkt, yin2_text, Polygon};
+use crate::io::{geojson, wkt, yin2_text, NumberStyle, Polygon};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
 
-/// The text of `set` in `format`.
-pub fn encode<N: Num>(set: &YinSet2<N>, format: Format) -> Result<String, CliError> {
-    match format {
-        Format::Yin2 => Ok(yin2(set)),
-        Format::Wkt => Ok(wkt::write_multipolygon(&polygons(set, "WKT")?) + "\n"),
-        Format::Geojson => Ok(geojson::write_multipolygon(&polygons(set, "GeoJSON")?) + "\n"),
-        Format::Obj => Err(wrong_dimension(format, Dimension::Two)),
-    }
+/// The text of `set` in `format`, WKT and GeoJSON coordinates in `style`.
+pub fn encode<N: Num>(
+    set: &YinSet2<N>,
+    format: Format,
+    style: NumberStyle,
+) -> Result<String, CliError> {
+    let (name, write): (_, fn(&[Polygon<N>], NumberStyle) -> _) = match format {
+        Format::Yin2 => return Ok(yin2(set)),
+        Format::Obj => return Err(wrong_dimension(format, Dimension::Two)),
+        Format::Wkt => ("WKT", wkt::write_multipolygon),
+        Format::Geojson => ("GeoJSON", geojson::write_multipolygon),
+    };
+    let text = write(&polygons(set, name)?, style).map_err(|source| CliError::Unwritable {
+        format: name,
+        source,
+    })?;
+    Ok(text + "\n")
 }
 
 /// The text of the 3D `set` in `format` (OBJ, the one 3D format).
@@ -116,31 +125,31 @@ mod tests {
 
     #[test]
     fn atoms_become_polygons_with_their_holes() {
-        let wkt = encode(&square_with_hole(), Format::Wkt).unwrap();
+        let wkt = encode(&square_with_hole(), Format::Wkt, NumberStyle::Decimal).unwrap();
         assert_eq!(
             wkt,
             "MULTIPOLYGON (((0 0, 2 0, 4 0, 4 4, 0 4, 0 0), (1 2, 3 2, 2 0, 1 2)))\n"
         );
-        let empty = encode(&YinSet2::<Rational>::empty(), Format::Geojson).unwrap();
+        let empty = encode(&YinSet2::<Rational>::empty(), Format::Geojson, NumberStyle::Decimal).unwrap();
         assert_eq!(empty, "{\"type\":\"MultiPolygon\",\"coordinates\":[]}\n");
     }
 
     #[test]
     fn unbounded_sets_are_only_written_as_yin2() {
         let outside = square_with_hole().complement();
-        let e = encode(&outside, Format::Geojson).unwrap_err().to_string();
+        let e = encode(&outside, Format::Geojson, NumberStyle::Exact).unwrap_err().to_string();
         assert!(e.contains("unbounded") && e.contains("--to yin2"), "{e}");
-        assert!(encode(&outside, Format::Yin2).unwrap().contains("\n\n"));
+        assert!(encode(&outside, Format::Yin2, NumberStyle::Exact).unwrap().contains("\n\n"));
     }
 
     #[test]
     fn empty_and_full_round_trip_through_yin2() {
-        let full = encode(&YinSet2::<Rational>::full(), Format::Yin2).unwrap();
+        let full = encode(&YinSet2::<Rational>::full(), Format::Yin2, NumberStyle::Decimal).unwrap();
         assert!(matches!(
             decode::<Rational>(&full, Format::Yin2),
             Ok(Decoded::Full)
         ));
-        let empty = encode(&YinSet2::<Rational>::empty(), Format::Yin2).unwrap();
+        let empty = encode(&YinSet2::<Rational>::empty(), Format::Yin2, NumberStyle::Decimal).unwrap();
         match decode::<Rational>(&empty, Format::Yin2) {
             Ok(Decoded::Boundary(r)) => assert!(r.rings.is_empty()),
             _ => panic!("not empty"),
@@ -174,6 +183,6 @@ mod tests {
             ""
         );
         assert!(encode3(&hollow, Format::Wkt).is_err());
-        assert!(encode(&square_with_hole(), Format::Obj).is_err());
+        assert!(encode(&square_with_hole(), Format::Obj, NumberStyle::Decimal).is_err());
     }
 }

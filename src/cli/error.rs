@@ -1,6 +1,6 @@
 //! What can go wrong on the command line, each naming what and where, and its exit status.
 
-use crate::io::ParseError;
+use crate::io::{ParseError, WriteError};
 use std::process::ExitCode;
 
 /// The kernel's reason why an input is not a Yin set (a 2D `YinError` or a 3D `Yin3Error`).
@@ -37,6 +37,12 @@ pub enum CliError {
     /// An unbounded set asked for in a format of bounded polygons.
     #[error("the set is unbounded (it contains everything far enough out), so it cannot be written as {format} polygons: write yin2 instead (--to yin2)")]
     Unbounded { format: &'static str },
+    /// A result the output format cannot spell in the asked number style.
+    #[error("cannot write the result as {format}: {source}")]
+    Unwritable {
+        format: &'static str,
+        source: WriteError,
+    },
     /// Some random axiom checks failed.
     #[error("{failed} of {total} axiom checks failed")]
     AxiomsFailed { failed: u64, total: u64 },

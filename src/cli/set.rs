@@ -8,7 +8,7 @@ use super::format::{Dimension, Format};
 use super::input::{load, load3};
 use super::{info, locate};
 use crate::io::svg::write_svg;
-use crate::io::ParseError;
+use crate::io::{NumberStyle, ParseError};
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
@@ -24,8 +24,8 @@ pub trait Set: Clone {
     const DIMENSION: Dimension;
     /// The set in `path`, read as `opts` say, with number context `ctx`.
     fn load(path: &Path, opts: &ReadOpts, ctx: Self::Ctx) -> Result<Self, CliError>;
-    /// The text of the set in `format`.
-    fn encode(&self, format: Format) -> Result<String, CliError>;
+    /// The text of the set in `format`, coordinates of the OGC formats in `style`.
+    fn encode(&self, format: Format, style: NumberStyle) -> Result<String, CliError>;
     /// A ∧ B.
     fn meet(&self, other: &Self) -> Self;
     /// A ∨ B.
@@ -77,8 +77,8 @@ impl<N: Num> Set for YinSet2<N> {
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load(path, opts, ctx)
     }
-    fn encode(&self, format: Format) -> Result<String, CliError> {
-        encode(self, format)
+    fn encode(&self, format: Format, style: NumberStyle) -> Result<String, CliError> {
+        encode(self, format, style)
     }
     fn size(&self) -> usize {
         self.curves().iter().map(|c| c.len()).sum()
@@ -105,7 +105,7 @@ impl<N: Num> Set for YinSet3<N> {
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load3(path, opts, ctx)
     }
-    fn encode(&self, format: Format) -> Result<String, CliError> {
+    fn encode(&self, format: Format, _: NumberStyle) -> Result<String, CliError> {
         encode3(self, format)
     }
     fn size(&self) -> usize {

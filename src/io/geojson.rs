@@ -10,12 +10,12 @@
 //! located at the end of the innermost object that holds them, and name the offending member
 //! (e.g. `coordinates[0][3]`).
 //!
-//! Written: a `MultiPolygon` geometry object, each ring closed by repeating its first point.
-//! A number whose decimal expansion terminates is written exactly; any other (such as 1/3) is
-//! rounded half away from zero to 17 significant digits, so only those lose exactness.
+//! Written: a `MultiPolygon` geometry object, each ring closed by repeating its first point,
+//! coordinates as [`NumberStyle`] says: by default the shortest decimal of the nearest `f64`;
+//! exactly on request, which fails for a number without a finite decimal expansion (1/3),
+//! since JSON has no fractions.
 
-use super::decimal::json_text;
-use super::{closed, open_ring, ParseError, Polygon};
+use super::{closed_texts, open_ring, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use serde::de::value::MapAccessDeserializer;
@@ -58,22 +58,25 @@ pub fn read_polygons<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, ParseError> 
         .collect())
 }
 
-/// The GeoJSON `MultiPolygon` geometry object of `polys` (numbers as described in the module
-/// documentation: exact when the decimal expansion terminates).
-pub fn write_multipolygon<N: Num>(polys: &[Polygon<N>]) -> String {
+/// The GeoJSON `MultiPolygon` geometry object of `polys`, coordinates in `style` (see the
+/// module documentation).
+pub fn write_multipolygon<N: Num>(
+    polys: &[Polygon<N>],
+    style: NumberStyle,
+) -> Result<String, WriteError> {
     let ring = |ring: &[Point<N>]| {
-        let points: Vec<String> = closed(ring)
-            .map(|p| format!("[{},{}]", json_text(&p.x), json_text(&p.y)))
-            .collect();
-        format!("[{}]", points.join(","))
+        let points = closed_texts(ring, style, false, |x, y| format!("[{x},{y}]"))?;
+        Ok(format!("[{}]", points.join(",")))
     };
-    let polygon =
-        |p: &Polygon<N>| format!("[{}]", p.rings().map(ring).collect::<Vec<_>>().join(","));
-    let parts: Vec<String> = polys.iter().map(polygon).collect();
-    format!(
+    let polygon = |p: &Polygon<N>| {
+        let rings = p.rings().map(ring).collect::<Result<Vec<_>, WriteError>>()?;
+        Ok(format!("[{}]", rings.join(",")))
+    };
+    let parts = polys.iter().map(polygon).collect::<Result<Vec<_>, WriteError>>()?;
+    Ok(format!(
         r#"{{"type":"MultiPolygon","coordinates":[{}]}}"#,
         parts.join(",")
-    )
+    ))
 }
 
 /// The [`ParseError`] of a `serde_json` error (whose columns count bytes) in `text`.
@@ -413,25 +416,24 @@ mod tests {
                 interiors: vec![],
             },
         ];
-        let text = write_multipolygon(&polys);
+        let text = write_multipolygon(&polys, NumberStyle::Exact).unwrap();
         assert!(text.starts_with(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[0.125,-0.1],[0.00000000000000000001,12345678901234567890123],[0,0]],"#), "{text}");
         assert_eq!(read(&text).unwrap(), polys);
         let third = vec![Polygon {
             exterior: vec![Point::new(q("1/3"), q("-2/3"))],
             interiors: vec![],
         }];
-        let text = write_multipolygon(&third);
+        let e = write_multipolygon(&third, NumberStyle::Exact).unwrap_err();
+        assert!(e.to_string().contains("1/3 has no finite decimal"), "{e}");
         assert_eq!(
-            text,
-            r#"{"type":"MultiPolygon","coordinates":[[[[0.33333333333333333,-0.66666666666666667],[0.33333333333333333,-0.66666666666666667]]]]}"#
+            write_multipolygon(&third, NumberStyle::Decimal).unwrap(),
+            r#"{"type":"MultiPolygon","coordinates":[[[[0.3333333333333333,-0.6666666666666666],[0.3333333333333333,-0.6666666666666666]]]]}"#
         );
-        assert_eq!(
-            write_multipolygon::<Rational>(&[]),
-            r#"{"type":"MultiPolygon","coordinates":[]}"#
-        );
-        assert!(read(&write_multipolygon::<Rational>(&[]))
-            .unwrap()
-            .is_empty());
+        for style in [NumberStyle::Exact, NumberStyle::Decimal] {
+            let empty = write_multipolygon::<Rational>(&[], style).unwrap();
+            assert_eq!(empty, r#"{"type":"MultiPolygon","coordinates":[]}"#);
+            assert!(read(&empty).unwrap().is_empty());
+        }
     }
 
     #[test]

@@ -17,9 +17,11 @@ mod testdata;
 pub mod wkt;
 pub mod yin2_text;
 
-pub use error::ParseError;
+pub use decimal::NumberStyle;
+pub use error::{ParseError, WriteError};
 
 use crate::kernel::Point;
+use crate::num::Num;
 
 /// A polygon as the GIS formats give it: an exterior ring and interior rings (holes), each open
 /// (without the closing repetition of its first point).
@@ -44,6 +46,20 @@ fn open_ring<N: PartialEq>(mut ring: Vec<Point<N>>) -> Vec<Point<N>> {
         ring.pop();
     }
     ring
+}
+
+/// The points of the closed `ring` (its first point repeated at the end, as OGC requires),
+/// each as `point(x, y)` of its coordinates' texts in `style` (`p/q` only if `fractions`).
+fn closed_texts<N: Num>(
+    ring: &[Point<N>],
+    style: NumberStyle,
+    fractions: bool,
+    point: impl Fn(String, String) -> String,
+) -> Result<Vec<String>, WriteError> {
+    let text = |n: &N| decimal::coordinate_text(n, style, fractions).map_err(WriteError);
+    closed(ring)
+        .map(|p| Ok(point(text(&p.x)?, text(&p.y)?)))
+        .collect()
 }
 
 /// The points of `ring` followed by its first point again (the closed form of the formats).
