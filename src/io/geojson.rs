@@ -592,7 +592,10 @@ mod tests {
 
     #[test]
     fn martinez_fixtures_parse() {
-        let files = testdata::files("martinez", ".geojson");
+        if !testdata::available() {
+            return;
+        }
+        let files = testdata::files("2d/martinez", ".geojson");
         assert_eq!(files.len(), 25);
         let (mut features, mut polygons) = (0, 0);
         for (name, text) in &files {
@@ -611,7 +614,10 @@ mod tests {
 
     #[test]
     fn gis_fixtures_parse() {
-        let counts: Vec<(String, usize, usize, usize)> = testdata::files("gis", ".geojson")
+        if !testdata::available() {
+            return;
+        }
+        let counts: Vec<(String, usize, usize, usize)> = testdata::files("2d/gis", ".geojson")
             .into_iter()
             .map(|(name, text)| {
                 let features =

@@ -167,7 +167,10 @@ mod tests {
 
     #[test]
     fn panda_curves_concatenated_read_as_ten_curves() {
-        let dir = testdata::dir("panda");
+        if !testdata::available() {
+            return;
+        }
+        let dir = testdata::dir("2d/panda");
         let texts: Vec<String> = (1..=10)
             .map(|i| dir.join(format!("curve{i:02}.txt")))
             .map(|path| {
