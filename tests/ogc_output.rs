@@ -190,5 +190,8 @@ fn exact_output_on_request() {
     );
     // Integer coordinates are exact decimals in both.
     let square = run(&["meet", &a, &a, "--to", "geojson", "--exact"]);
-    assert!(square.contains("[[0,0],[6,0],[6,6],[0,6],[0,0]]"), "{square}");
+    assert!(
+        square.contains("[[0,0],[6,0],[6,6],[0,6],[0,0]]"),
+        "{square}"
+    );
 }

@@ -55,7 +55,7 @@ pub enum Command {
 }
 
 /// How inputs are read.
-#[derive(Args, Debug, Clone, Default)]
+#[derive(Args, Debug, Clone)]
 pub struct ReadOpts {
     /// Input format (default: from the file extension; for standard input, that of the other
     /// inputs if they are OBJ, else yin2).
@@ -67,6 +67,37 @@ pub struct ReadOpts {
     /// Float mode with tolerance E > 0 (default: exact rational arithmetic; 2D only).
     #[arg(long, value_name = "E", value_parser = positive_eps, allow_hyphen_values = true)]
     pub eps: Option<f64>,
+    /// Drop the points and lines of WKT and GeoJSON inputs (such as a FeatureCollection's
+    /// Points) instead of rejecting them; only the polygons are read.
+    #[arg(long)]
+    pub polygonal_only: bool,
+    /// Refuse a number with more than N digits in a row (exact numbers of many digits are
+    /// slow to read and to compute with).
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_DIGITS)]
+    pub max_digits: usize,
+    /// Refuse an input larger than N bytes, before reading it whole.
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_BYTES)]
+    pub max_bytes: u64,
+}
+
+/// The default of `--max-digits`: far more than any exact result of decimal inputs needs.
+pub const DEFAULT_MAX_DIGITS: usize = 10_000;
+
+/// The default of `--max-bytes`: 1 GiB.
+pub const DEFAULT_MAX_BYTES: u64 = 1 << 30;
+
+impl Default for ReadOpts {
+    /// The options' defaults on the command line.
+    fn default() -> Self {
+        ReadOpts {
+            from: None,
+            fill: None,
+            eps: None,
+            polygonal_only: false,
+            max_digits: DEFAULT_MAX_DIGITS,
+            max_bytes: DEFAULT_MAX_BYTES,
+        }
+    }
 }
 
 /// Where and how a resulting set is written.

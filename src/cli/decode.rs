@@ -3,23 +3,21 @@
 
 use super::format::Format;
 use crate::io::obj::{read_obj, ObjMesh};
-use crate::io::{geojson, wkt, yin2_text, ParseError, Polygon};
+use crate::io::yin2_text::{self, Yin2Text};
+use crate::io::{geojson, wkt, ParseError, Polygon};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinError;
 use crate::yin3::Yin3Error;
 use std::cmp::Ordering;
 
-/// The yin2 comment line that stands for the whole plane, which has no boundary curves.
-pub const FULL_PLANE: &str = "# yinset: the whole plane (no boundary curves)";
-
 /// The OBJ comment line that stands for the whole space, which has no boundary.
 pub const WHOLE_SPACE: &str = "# yinset: the whole space (no boundary)";
 
 /// What an input text holds.
 pub enum Decoded<B> {
-    /// The whole plane or space (a text without boundary but with the [`FULL_PLANE`] or
-    /// [`WHOLE_SPACE`] line).
+    /// The whole plane or space (the yin2 statement `plane`, or an OBJ text without faces but
+    /// with the [`WHOLE_SPACE`] line).
     Full,
     /// The boundary: [`Rings`] or an [`ObjMesh`] (none: the empty set).
     Boundary(B),
@@ -48,20 +46,27 @@ enum Origin {
     },
 }
 
-/// Decode `text` in `format`, a format of 2D sets.
-pub fn decode<N: Num>(text: &str, format: Format) -> Result<Decoded<Rings<N>>, ParseError> {
-    let polygons = match format {
-        Format::Yin2 => {
-            let rings = yin2_text::read_curves(text)?;
-            if rings.is_empty() && has_line(text, FULL_PLANE) {
-                return Ok(Decoded::Full);
-            }
+/// Decode `text` in `format`, a format of 2D sets; with `polygonal_only`, the points and
+/// lines of WKT and GeoJSON are dropped instead of rejected.
+pub fn decode<N: Num>(
+    text: &str,
+    format: Format,
+    polygonal_only: bool,
+) -> Result<Decoded<Rings<N>>, ParseError> {
+    let polygons = match (format, polygonal_only) {
+        (Format::Yin2, _) => {
+            let rings = match yin2_text::read(text)? {
+                Yin2Text::Plane => return Ok(Decoded::Full),
+                Yin2Text::Curves(rings) => rings,
+            };
             let origins = Origins(rings.iter().map(|_| Origin::Curve).collect());
             return Ok(Decoded::Boundary(Rings { rings, origins }));
         }
-        Format::Wkt => wkt::read_polygons(text)?,
-        Format::Geojson => geojson::read_polygons(text)?,
-        Format::Obj => return Err(obj_is_3d()),
+        (Format::Wkt, false) => wkt::read_polygons(text)?,
+        (Format::Wkt, true) => wkt::read_polygonal_parts(text)?,
+        (Format::Geojson, false) => geojson::read_polygons(text)?,
+        (Format::Geojson, true) => geojson::read_polygonal_parts(text)?,
+        (Format::Obj, _) => return Err(obj_is_3d()),
     };
     Ok(Decoded::Boundary(Rings::of_polygons(polygons)))
 }
@@ -225,7 +230,7 @@ mod tests {
     use crate::num::Rational;
 
     fn rings(text: &str, format: Format) -> Rings<Rational> {
-        match decode(text, format).unwrap() {
+        match decode(text, format, false).unwrap() {
             Decoded::Boundary(r) => r,
             Decoded::Full => panic!("full"),
         }
@@ -254,7 +259,7 @@ mod tests {
         let r = rings("0 0\n0 1\n1 0\n", Format::Yin2);
         assert!(twice_signed_area(&r.rings[0]) < Rational::from_integer(0.into()));
         assert!(matches!(
-            decode::<Rational>(&format!("{FULL_PLANE}\n"), Format::Yin2),
+            decode::<Rational>("plane\n", Format::Yin2, false),
             Ok(Decoded::Full)
         ));
         assert_eq!(rings("# nothing\n", Format::Yin2).rings.len(), 0);
@@ -293,7 +298,7 @@ mod tests {
         assert!(mesh("# yinset\nv 0 0 0\n").unwrap().faces.is_empty());
         let text = format!("{WHOLE_SPACE}\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert_eq!(mesh(&text).unwrap().faces.len(), 1);
-        assert!(decode::<Rational>("v 0 0 0", Format::Obj).is_err());
+        assert!(decode::<Rational>("v 0 0 0", Format::Obj, false).is_err());
     }
 
     #[test]

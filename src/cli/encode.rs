@@ -1,7 +1,7 @@
 //! A Yin set → text of any format (yin2 exactly; OGC polygons only for bounded sets; OBJ for
 //! 3D sets, one object per glued surface).
 
-use super::decode::{FULL_PLANE, WHOLE_SPACE};
+use super::decode::WHOLE_SPACE;
 use super::error::CliError;
 use super::format::{Dimension, Format};
 use crate::io::obj::write_obj;
@@ -78,10 +78,10 @@ fn obj<N: Num>(set: &YinSet3<N>) -> String {
     }
 }
 
-/// The yin2 text of `set`: its curves, or a comment line for 0̂ and 1̂.
+/// The yin2 text of `set`: its curves, the whole-plane statement for 1̂, a comment line for 0̂.
 fn yin2<N: Num>(set: &YinSet2<N>) -> String {
     if set.is_full() {
-        return format!("{FULL_PLANE}\n");
+        return yin2_text::write_plane();
     }
     if set.is_empty() {
         return "# yinset: the empty set (no curves)\n".to_string();
@@ -130,27 +130,46 @@ mod tests {
             wkt,
             "MULTIPOLYGON (((0 0, 2 0, 4 0, 4 4, 0 4, 0 0), (1 2, 3 2, 2 0, 1 2)))\n"
         );
-        let empty = encode(&YinSet2::<Rational>::empty(), Format::Geojson, NumberStyle::Decimal).unwrap();
+        let empty = encode(
+            &YinSet2::<Rational>::empty(),
+            Format::Geojson,
+            NumberStyle::Decimal,
+        )
+        .unwrap();
         assert_eq!(empty, "{\"type\":\"MultiPolygon\",\"coordinates\":[]}\n");
     }
 
     #[test]
     fn unbounded_sets_are_only_written_as_yin2() {
         let outside = square_with_hole().complement();
-        let e = encode(&outside, Format::Geojson, NumberStyle::Exact).unwrap_err().to_string();
+        let e = encode(&outside, Format::Geojson, NumberStyle::Exact)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("unbounded") && e.contains("--to yin2"), "{e}");
-        assert!(encode(&outside, Format::Yin2, NumberStyle::Exact).unwrap().contains("\n\n"));
+        assert!(encode(&outside, Format::Yin2, NumberStyle::Exact)
+            .unwrap()
+            .contains("\n\n"));
     }
 
     #[test]
     fn empty_and_full_round_trip_through_yin2() {
-        let full = encode(&YinSet2::<Rational>::full(), Format::Yin2, NumberStyle::Decimal).unwrap();
+        let full = encode(
+            &YinSet2::<Rational>::full(),
+            Format::Yin2,
+            NumberStyle::Decimal,
+        )
+        .unwrap();
         assert!(matches!(
-            decode::<Rational>(&full, Format::Yin2),
+            decode::<Rational>(&full, Format::Yin2, false),
             Ok(Decoded::Full)
         ));
-        let empty = encode(&YinSet2::<Rational>::empty(), Format::Yin2, NumberStyle::Decimal).unwrap();
-        match decode::<Rational>(&empty, Format::Yin2) {
+        let empty = encode(
+            &YinSet2::<Rational>::empty(),
+            Format::Yin2,
+            NumberStyle::Decimal,
+        )
+        .unwrap();
+        match decode::<Rational>(&empty, Format::Yin2, false) {
             Ok(Decoded::Boundary(r)) => assert!(r.rings.is_empty()),
             _ => panic!("not empty"),
         }

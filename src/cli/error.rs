@@ -18,6 +18,9 @@ pub enum CliError {
         name: String,
         source: std::io::Error,
     },
+    /// An input longer than `--max-bytes`.
+    #[error("{name} is larger than {limit} bytes, the limit of --max-bytes: not read")]
+    TooLarge { name: String, limit: u64 },
     /// A file or standard output could not be written.
     #[error("cannot write {name}: {source}")]
     Write {

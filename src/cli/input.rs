@@ -7,7 +7,7 @@ use super::error::CliError;
 use super::format::{is_std, Dimension, Format};
 use super::progress;
 use crate::io::obj::ObjMesh;
-use crate::io::ParseError;
+use crate::io::{check_digit_runs, ParseError};
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
@@ -33,25 +33,44 @@ pub fn one_stdin<'a>(paths: impl IntoIterator<Item = &'a Path>) -> Result<(), Cl
     Ok(())
 }
 
-/// The text of `path` (`-`: standard input).
-pub fn read_text(path: &Path) -> Result<String, CliError> {
-    let mut text = String::new();
-    let read = if is_std(path) {
-        std::io::stdin().read_to_string(&mut text).map(|_| ())
-    } else {
-        std::fs::File::open(path).and_then(|mut f| f.read_to_string(&mut text).map(|_| ()))
+/// The text of `path` (`-`: standard input), refused if longer than `opts.max_bytes` (before
+/// reading more) or if a number has more than `opts.max_digits` digits in a row.
+pub fn read_text(path: &Path, opts: &ReadOpts) -> Result<String, CliError> {
+    let limit = opts.max_bytes;
+    let too_large = || CliError::TooLarge {
+        name: name(path),
+        limit,
     };
-    read.map(|()| text).map_err(|source| CliError::Read {
+    let read_error = |source| CliError::Read {
         name: name(path),
         source,
-    })
+    };
+    let source: Box<dyn Read> = if is_std(path) {
+        Box::new(std::io::stdin())
+    } else {
+        let file = std::fs::File::open(path).map_err(read_error)?;
+        if file.metadata().map_err(read_error)?.len() > limit {
+            return Err(too_large());
+        }
+        Box::new(file)
+    };
+    let mut text = String::new();
+    source
+        .take(limit.saturating_add(1))
+        .read_to_string(&mut text)
+        .map_err(read_error)?;
+    if text.len() as u64 > limit {
+        return Err(too_large());
+    }
+    check_digit_runs(&text, opts.max_digits).map_err(|source| parse_error(path, source))?;
+    Ok(text)
 }
 
 /// The Yin set in `path`, read as `opts` say, with number context `ctx`.
 pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2<N>, CliError> {
     let format = Format::of_input(path, opts.from, Dimension::Two)?;
-    let text = read_text(path)?;
-    let rings = match decode::<N>(&text, format) {
+    let text = read_text(path, opts)?;
+    let rings = match decode::<N>(&text, format, opts.polygonal_only) {
         Ok(Decoded::Full) => return Ok(YinSet2::full().with_ctx(ctx)),
         Ok(Decoded::Boundary(rings)) => rings,
         Err(mut source) => {
@@ -74,7 +93,7 @@ pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2
 /// 1̂ if it is the whole-space comment line.
 pub fn load3<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet3<N>, CliError> {
     Format::of_input(path, opts.from, Dimension::Three)?;
-    let text = read_text(path)?;
+    let text = read_text(path, opts)?;
     let mesh = match decode_obj::<N>(&text) {
         Ok(Decoded::Full) => return Ok(YinSet3::full()),
         Ok(Decoded::Boundary(mesh)) => mesh,

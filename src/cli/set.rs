@@ -42,7 +42,7 @@ pub trait Set: Clone {
     fn info(&self) -> Value;
     /// The one-line summary of `validate`.
     fn describe(&self) -> String;
-    /// The answer of `locate` for the points in `text`, one word per line.
+    /// The answer of `locate` for the points in `text`, one line per line of `text`.
     fn locate_text(&self, text: &str) -> Result<String, ParseError>;
     /// An SVG picture of labelled sets (2D only).
     fn svg(layers: &[(&str, &Self)]) -> Result<String, CliError>;
@@ -90,7 +90,9 @@ impl<N: Num> Set for YinSet2<N> {
         crate::demo::describe(self)
     }
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
-        Ok(locate::classify(self.locate(&locate::read_points(text)?)))
+        Ok(locate::aligned(&locate::read_points(text)?, |p| {
+            self.locate(p)
+        }))
     }
     fn svg(layers: &[(&str, &Self)]) -> Result<String, CliError> {
         Ok(write_svg(layers))
@@ -118,7 +120,9 @@ impl<N: Num> Set for YinSet3<N> {
         crate::demo::describe3(self)
     }
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
-        Ok(locate::classify(self.locate(&locate::read_points3(text)?)))
+        Ok(locate::aligned(&locate::read_points3(text)?, |p| {
+            self.locate(p)
+        }))
     }
     fn svg(_: &[(&str, &Self)]) -> Result<String, CliError> {
         Err(CliError::Usage(NO_3D_RENDER.to_string()))

@@ -166,7 +166,10 @@ mod tests {
             assert_eq!(want.parse::<f64>().unwrap(), q(s).to_f64());
         }
         let huge = q("1e400");
-        assert!(texts(&huge)[0].as_ref().unwrap_err().contains("beyond the range of f64"));
+        assert!(texts(&huge)[0]
+            .as_ref()
+            .unwrap_err()
+            .contains("beyond the range of f64"));
         assert_eq!(texts(&huge)[1].as_ref().unwrap().len(), 401);
     }
 
@@ -181,7 +184,10 @@ mod tests {
     #[test]
     fn floats_print_their_shortest_decimal() {
         let f = Float::parse("0.1").unwrap();
-        assert_eq!(coordinate_text(&f, NumberStyle::Decimal, false).unwrap(), "0.1");
+        assert_eq!(
+            coordinate_text(&f, NumberStyle::Decimal, false).unwrap(),
+            "0.1"
+        );
         assert_eq!(exact_text(&Float::parse("-2.5e-3").unwrap()), "-0.0025");
     }
 }

@@ -15,7 +15,7 @@
 //! exactly on request, which fails for a number without a finite decimal expansion (1/3),
 //! since JSON has no fractions.
 
-use super::{closed_texts, open_ring, NumberStyle, ParseError, Polygon, WriteError};
+use super::{closed_texts, open_ring, without_bom, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use serde::de::value::MapAccessDeserializer;
@@ -39,7 +39,20 @@ pub struct Feature<N> {
 /// Read the features of a GeoJSON text: a `FeatureCollection`'s in order, a `Feature`, or a
 /// bare geometry as one feature without properties.
 pub fn read_features<N: Num>(text: &str) -> Result<Vec<Feature<N>>, ParseError> {
-    let object: Object<N> = serde_json::from_str(text).map_err(|e| json_error(text, &e))?;
+    read_with::<N, false>(text)
+}
+
+/// Read the features of a GeoJSON text as [`read_features`] does, but with the geometries that
+/// have no area (`Point`, `LineString`, …) read as empty instead of rejected.
+pub fn read_polygonal_features<N: Num>(text: &str) -> Result<Vec<Feature<N>>, ParseError> {
+    read_with::<N, true>(text)
+}
+
+/// Read the features of a GeoJSON text, skipping the geometries without area if `SKIP_LOWER`.
+fn read_with<N: Num, const SKIP_LOWER: bool>(text: &str) -> Result<Vec<Feature<N>>, ParseError> {
+    let text = without_bom(text);
+    let object: Object<N, SKIP_LOWER> =
+        serde_json::from_str(text).map_err(|e| json_error(text, &e))?;
     Ok(match object {
         Object::Geometry(polygons) => vec![Feature {
             properties: Map::new(),
@@ -52,10 +65,18 @@ pub fn read_features<N: Num>(text: &str) -> Result<Vec<Feature<N>>, ParseError> 
 
 /// Read all polygons of a GeoJSON text, features flattened in order.
 pub fn read_polygons<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, ParseError> {
-    Ok(read_features(text)?
-        .into_iter()
-        .flat_map(|f| f.polygons)
-        .collect())
+    Ok(flatten(read_features(text)?))
+}
+
+/// Read all polygons of a GeoJSON text, features flattened in order, skipping the geometries
+/// that have no area (such as the `Point`s of a `FeatureCollection`).
+pub fn read_polygonal_parts<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, ParseError> {
+    Ok(flatten(read_polygonal_features(text)?))
+}
+
+/// The polygons of `features`, in order.
+fn flatten<N>(features: Vec<Feature<N>>) -> Vec<Polygon<N>> {
+    features.into_iter().flat_map(|f| f.polygons).collect()
 }
 
 /// The GeoJSON `MultiPolygon` geometry object of `polys`, coordinates in `style` (see the
@@ -69,10 +90,16 @@ pub fn write_multipolygon<N: Num>(
         Ok(format!("[{}]", points.join(",")))
     };
     let polygon = |p: &Polygon<N>| {
-        let rings = p.rings().map(ring).collect::<Result<Vec<_>, WriteError>>()?;
+        let rings = p
+            .rings()
+            .map(ring)
+            .collect::<Result<Vec<_>, WriteError>>()?;
         Ok(format!("[{}]", rings.join(",")))
     };
-    let parts = polys.iter().map(polygon).collect::<Result<Vec<_>, WriteError>>()?;
+    let parts = polys
+        .iter()
+        .map(polygon)
+        .collect::<Result<Vec<_>, WriteError>>()?;
     Ok(format!(
         r#"{{"type":"MultiPolygon","coordinates":[{}]}}"#,
         parts.join(",")
@@ -98,8 +125,9 @@ fn json_error(text: &str, e: &serde_json::Error) -> ParseError {
     ParseError::at(text, line_start + e.column().saturating_sub(1), message)
 }
 
-/// A GeoJSON object, checked as soon as its members are read.
-enum Object<N> {
+/// A GeoJSON object, checked as soon as its members are read; geometries without area are
+/// read as empty if `SKIP_LOWER`, else rejected.
+enum Object<N, const SKIP_LOWER: bool> {
     /// A polygonal geometry.
     Geometry(Vec<Polygon<N>>),
     /// A `Feature`.
@@ -108,33 +136,33 @@ enum Object<N> {
     Collection(Vec<Feature<N>>),
 }
 
-impl<'de, N: Num> Deserialize<'de> for Object<N> {
+impl<'de, N: Num, const SKIP_LOWER: bool> Deserialize<'de> for Object<N, SKIP_LOWER> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         deserializer.deserialize_map(ObjectVisitor(PhantomData))
     }
 }
 
 /// The members of a GeoJSON object that this reader uses.
-struct Members<N> {
+struct Members<N, const SKIP_LOWER: bool> {
     kind: Option<String>,
     coordinates: Option<Coords<N>>,
-    geometry: Option<Option<Object<N>>>,
-    geometries: Option<Vec<Object<N>>>,
-    features: Option<Vec<Object<N>>>,
+    geometry: Option<Option<Object<N, SKIP_LOWER>>>,
+    geometries: Option<Vec<Object<N, SKIP_LOWER>>>,
+    features: Option<Vec<Object<N, SKIP_LOWER>>>,
     properties: Option<Map<String, Value>>,
 }
 
 /// Reads a JSON object as an [`Object`].
-struct ObjectVisitor<N>(PhantomData<N>);
+struct ObjectVisitor<N, const SKIP_LOWER: bool>(PhantomData<N>);
 
-impl<'de, N: Num> Visitor<'de> for ObjectVisitor<N> {
-    type Value = Object<N>;
+impl<'de, N: Num, const SKIP_LOWER: bool> Visitor<'de> for ObjectVisitor<N, SKIP_LOWER> {
+    type Value = Object<N, SKIP_LOWER>;
 
     fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str("a GeoJSON object")
     }
 
-    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Object<N>, A::Error> {
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Object<N, SKIP_LOWER>, A::Error> {
         let mut m = Members {
             kind: None,
             coordinates: None,
@@ -160,9 +188,9 @@ impl<'de, N: Num> Visitor<'de> for ObjectVisitor<N> {
     }
 }
 
-impl<N: Num> Members<N> {
+impl<N: Num, const SKIP_LOWER: bool> Members<N, SKIP_LOWER> {
     /// The object these members make, or what is wrong with them.
-    fn build(self) -> Result<Object<N>, String> {
+    fn build(self) -> Result<Object<N, SKIP_LOWER>, String> {
         let kind = self.kind.ok_or("a GeoJSON object needs a `type` member")?;
         let missing = |member: &str| format!("a {kind} needs a `{member}` member");
         match kind.as_str() {
@@ -205,6 +233,9 @@ impl<N: Num> Members<N> {
                     });
                 Ok(Object::Collection(features.collect::<Result<_, _>>()?))
             }
+            "Point" | "MultiPoint" | "LineString" | "MultiLineString" if SKIP_LOWER => {
+                Ok(Object::Geometry(Vec::new()))
+            }
             "Point" | "MultiPoint" | "LineString" | "MultiLineString" => {
                 Err(format!("`{kind}` is not polygonal: {POLYGONAL_ONLY}"))
             }
@@ -214,7 +245,10 @@ impl<N: Num> Members<N> {
 }
 
 /// The polygons of the geometry member at `path` (none for `null`).
-fn geometry<N>(object: Option<Object<N>>, path: &str) -> Result<Vec<Polygon<N>>, String> {
+fn geometry<N, const SKIP_LOWER: bool>(
+    object: Option<Object<N, SKIP_LOWER>>,
+    path: &str,
+) -> Result<Vec<Polygon<N>>, String> {
     match object {
         None => Ok(Vec::new()),
         Some(Object::Geometry(polygons)) => Ok(polygons),
@@ -556,6 +590,43 @@ mod tests {
             assert!(e.message.contains(message), "{text}: {e}");
             assert_eq!((e.line, e.column), (line, column), "{text}: {e}");
         }
+    }
+
+    #[test]
+    fn polygonal_parts_skip_points_and_lines() {
+        let text = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {"name": "capital"}, "geometry": {"type": "Point", "coordinates": [1, 2]}},
+            {"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1]]]}},
+            {"type": "Feature", "properties": null, "geometry": {"type": "GeometryCollection", "geometries": [
+                {"type": "LineString", "coordinates": [[0, 0], [1, 1]]},
+                {"type": "MultiPoint", "coordinates": [[0, 0], [1, 1]]},
+                {"type": "MultiLineString", "coordinates": [[[0, 0], [1, 1]]]},
+                {"type": "MultiPolygon", "coordinates": [[[[2,0],[3,0],[3,1]]]]}]}}
+        ]}"#;
+        let e = read(text).unwrap_err();
+        assert!(e.message.contains("`Point` is not polygonal"), "{e}");
+        let polys = read_polygonal_parts::<Rational>(text).unwrap();
+        assert_eq!(polys.len(), 2);
+        assert_eq!(polys[1].exterior[0], Point::int(2, 0));
+        let features = read_polygonal_features::<Rational>(text).unwrap();
+        assert_eq!(features[0].properties["name"], "capital");
+        assert!(features[0].polygons.is_empty());
+        // Still checked: the JSON, the types, the positions.
+        for bad in [
+            r#"{"type": "Point", "coordinates": [1, 2, 3]}"#,
+            r#"{"type": "Pointy", "coordinates": [1, 2]}"#,
+            r#"{"type": "Point", "coordinates": [1, 2]"#,
+        ] {
+            assert!(read_polygonal_parts::<Rational>(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let text = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1]]]}"#;
+        assert_eq!(read(&format!("\u{feff}{text}")), read(text));
+        let e = read("\u{feff}[1]").unwrap_err();
+        assert_eq!((e.line, e.column), (1, 1));
     }
 
     #[test]

@@ -10,6 +10,7 @@
 mod decimal;
 mod error;
 pub mod geojson;
+mod limits;
 pub mod obj;
 pub mod svg;
 #[cfg(test)]
@@ -19,6 +20,7 @@ pub mod yin2_text;
 
 pub use decimal::NumberStyle;
 pub use error::{ParseError, WriteError};
+pub use limits::check_digit_runs;
 
 use crate::kernel::Point;
 use crate::num::Num;
@@ -38,6 +40,12 @@ impl<N> Polygon<N> {
     pub fn rings(&self) -> impl Iterator<Item = &[Point<N>]> {
         std::iter::once(self.exterior.as_slice()).chain(self.interiors.iter().map(Vec::as_slice))
     }
+}
+
+/// `text` without a leading UTF-8 byte-order mark (which editors on Windows write), which
+/// every reader ignores.
+pub(crate) fn without_bom(text: &str) -> &str {
+    text.strip_prefix('\u{feff}').unwrap_or(text)
 }
 
 /// `ring` without the closing repetition of its first point, if it has one.

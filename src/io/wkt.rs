@@ -12,7 +12,7 @@
 //! where the expansion does not terminate).
 
 use super::error::line_column;
-use super::{closed_texts, open_ring, NumberStyle, ParseError, Polygon, WriteError};
+use super::{closed_texts, open_ring, without_bom, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 
@@ -65,6 +65,7 @@ pub fn read_polygonal_parts<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, Parse
 
 /// Read one geometry, skipping lower-dimensional parts if `skip_lower`.
 fn read<N: Num>(text: &str, skip_lower: bool) -> Result<Vec<Polygon<N>>, ParseError> {
+    let text = without_bom(text);
     let mut parser = Parser {
         text,
         pos: 0,
@@ -94,10 +95,16 @@ pub fn write_multipolygon<N: Num>(
         Ok(format!("({})", points.join(", ")))
     };
     let polygon = |p: &Polygon<N>| {
-        let rings = p.rings().map(ring).collect::<Result<Vec<_>, WriteError>>()?;
+        let rings = p
+            .rings()
+            .map(ring)
+            .collect::<Result<Vec<_>, WriteError>>()?;
         Ok(format!("({})", rings.join(", ")))
     };
-    let parts = polys.iter().map(polygon).collect::<Result<Vec<_>, WriteError>>()?;
+    let parts = polys
+        .iter()
+        .map(polygon)
+        .collect::<Result<Vec<_>, WriteError>>()?;
     Ok(format!("MULTIPOLYGON ({})", parts.join(", ")))
 }
 
@@ -479,6 +486,14 @@ mod tests {
             assert_eq!((e.line, e.column), (line, column), "{text}: {e}");
             assert!(e.message.contains(message), "{text}: {e}");
         }
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let text = "POLYGON ((0 0, 1 0, 1 1, 0 0))";
+        assert_eq!(read(&format!("\u{feff}{text}")), read(text));
+        let e = read("\u{feff}POLYGON ((0 x, 1 0, 1 1))").unwrap_err();
+        assert_eq!((e.line, e.column), (1, 13));
     }
 
     #[test]
