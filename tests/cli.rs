@@ -562,3 +562,47 @@ fn polygonal_only_drops_points_and_lines() {
         assert_eq!(info["area"]["exact"], "8", "{from}: {info}");
     }
 }
+
+#[test]
+fn render_writes_png_for_png_names_and_refuses_other_extensions() {
+    let dir = scratch();
+    let png = dir.path().join("frame.png");
+    ok(&["render", "-", "-o", s(&png)], FRAME);
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "not a PNG");
+    let image = resvg::tiny_skia::Pixmap::decode_png(&bytes).unwrap();
+    // The SVG of the same picture says where the world is: viewBox = x, -y_max, width, height.
+    let svg = ok(&["render", "-"], FRAME);
+    let view: Vec<f64> = svg
+        .split("viewBox=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .split(' ')
+        .map(|t| t.parse().unwrap())
+        .collect();
+    assert_eq!(image.width(), 800);
+    let scale = 800.0 / view[2];
+    let colour = |x: f64, y: f64| {
+        let (px, py) = ((x - view[0]) * scale, (-y - view[1]) * scale);
+        let p = image.pixel(px as u32, py as u32).unwrap();
+        (p.red(), p.green(), p.blue())
+    };
+    let (r, _, b) = colour(0.5, 3.5);
+    assert!(b > r + 40, "inside the frame: {:?}", colour(0.5, 3.5));
+    assert_eq!(colour(2.0, 1.0), (255, 255, 255), "the hole is white");
+    for bad in ["frame.pdf", "frame"] {
+        fails(
+            &["render", "-", "-o", s(&dir.path().join(bad))],
+            FRAME,
+            2,
+            &[
+                "render cannot write",
+                "give an output ending in .svg or .png",
+            ],
+        );
+        assert!(!dir.path().join(bad).exists(), "{bad} written");
+    }
+}

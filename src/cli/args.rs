@@ -44,7 +44,7 @@ pub enum Command {
     /// Print Betti numbers, curves (surfaces), Hasse diagram, area (volume) and bounding box as
     /// JSON.
     Info(Single),
-    /// Draw one or more sets as SVG.
+    /// Draw one or more sets as SVG or PNG.
     Render(RenderArgs),
     /// Check that the input is a Yin set's boundary, explaining why not.
     Validate(Single),
@@ -176,7 +176,8 @@ pub struct RenderArgs {
     /// The sets, drawn in order, later ones on top (`-`: standard input).
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
-    /// The SVG file (`-` or absent: standard output).
+    /// The picture: an SVG file, or a PNG file for a name ending in .png (drawn without the
+    /// legend's words); `-` or absent: SVG on standard output.
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
     #[command(flatten)]

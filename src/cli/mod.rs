@@ -13,6 +13,7 @@ mod input;
 mod locate;
 mod ops;
 mod output;
+mod picture;
 mod progress;
 mod set;
 
@@ -27,7 +28,7 @@ use clap::Parser;
 use format::{Dimension, Format};
 use input::{name, one_stdin, read_text};
 use ops::{operate, Op};
-use output::write_text;
+use output::{write_bytes, write_text};
 use set::Set;
 use std::path::Path;
 use std::process::ExitCode;
@@ -155,7 +156,8 @@ fn run_in<S: Set>(command: &Command, ctx: S::Ctx) -> Result<(), CliError> {
                 .collect::<Result<Vec<_>, _>>()?;
             let labels: Vec<String> = r.inputs.iter().map(|p| label(p)).collect();
             let layers: Vec<(&str, _)> = labels.iter().map(String::as_str).zip(&sets).collect();
-            write_text(r.output.as_deref(), &S::svg(&layers)?)
+            let bytes = picture::picture(S::svg(&layers)?, r.output.as_deref())?;
+            write_bytes(r.output.as_deref(), &bytes)
         }
         Command::Axioms(a) => axioms::run::<Exact>(a.n, a.seed),
     }

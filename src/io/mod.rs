@@ -12,6 +12,7 @@ mod error;
 pub mod geojson;
 mod limits;
 pub mod obj;
+pub mod png;
 pub mod svg;
 #[cfg(test)]
 mod testdata;
