@@ -5,11 +5,14 @@ use super::decode::WHOLE_SPACE;
 use super::error::CliError;
 use super::format::{Dimension, Format};
 use crate::io::obj::write_obj;
-use crate::io::{geojson, wkt, yin2_text, NumberStyle, Polygon};
+use crate::io::{geojson, wkt, yin2_text, NumberStyle, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
+
+/// A writer of OGC polygons (WKT or GeoJSON).
+type Writer<N> = fn(&[Polygon<N>], NumberStyle) -> Result<String, WriteError>;
 
 /// The text of `set` in `format`, WKT and GeoJSON coordinates in `style`.
 pub fn encode<N: Num>(
@@ -17,7 +20,7 @@ pub fn encode<N: Num>(
     format: Format,
     style: NumberStyle,
 ) -> Result<String, CliError> {
-    let (name, write): (_, fn(&[Polygon<N>], NumberStyle) -> _) = match format {
+    let (name, write): (_, Writer<N>) = match format {
         Format::Yin2 => return Ok(yin2(set)),
         Format::Obj => return Err(wrong_dimension(format, Dimension::Two)),
         Format::Wkt => ("WKT", wkt::write_multipolygon),
