@@ -249,7 +249,10 @@ fn locate_takes_xyz_lines() {
     let dir = scratch();
     let (a, _) = two_boxes(&dir);
     let out = ok(&["locate", s(&a)], "# x y z\n1 1 1\n2 1/2 1\n5 5 5\n");
-    assert_eq!(out, "inside\nboundary\noutside\n");
+    assert_eq!(
+        out, "\ninside\nboundary\noutside\n",
+        "one line per input line"
+    );
     fails(&["locate", s(&a)], "1 1\n", 1, &["line 1", "3 numbers"]);
 }
 

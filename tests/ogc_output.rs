@@ -124,6 +124,12 @@ fn meet_area() -> f64 {
     twice_area(&exterior) / 2.0 - 1.0
 }
 
+/// geo finds the meet as read valid, with the hand-computed area.
+fn check_geometry(geometry: geo::Geometry<f64>) {
+    assert!(geometry.is_valid(), "{:?}", geometry.check_validation());
+    assert!((geometry.unsigned_area() - meet_area()).abs() < 1e-12);
+}
+
 #[test]
 fn wkt_output_reads_in_the_wkt_crate_as_valid_ogc_polygons() {
     let dir = tempfile::tempdir().unwrap();
@@ -131,12 +137,12 @@ fn wkt_output_reads_in_the_wkt_crate_as_valid_ogc_polygons() {
     let text = run(&["meet", &a, &b, "--to", "wkt"]);
     assert!(!text.contains('/'), "fractions in default output: {text}");
     check_meet(&wkt_rings(&text));
-    let geometry: geo::Geometry<f64> = wkt::Wkt::<f64>::from_str(text.trim())
-        .unwrap()
-        .try_into()
-        .unwrap();
-    assert!(geometry.is_valid(), "{:?}", geometry.check_validation());
-    assert!((geometry.unsigned_area() - meet_area()).abs() < 1e-12);
+    check_geometry(
+        wkt::Wkt::<f64>::from_str(text.trim())
+            .unwrap()
+            .try_into()
+            .unwrap(),
+    );
 }
 
 #[test]
@@ -145,13 +151,12 @@ fn geojson_output_reads_in_the_geojson_crate_as_valid_rfc7946_polygons() {
     let [a, b] = operands(&dir);
     let text = run(&["meet", &a, &b, "--to", "geojson"]);
     check_meet(&geojson_rings(&text));
-    let geometry: geo::Geometry<f64> = text
-        .parse::<geojson::Geometry>()
-        .unwrap()
-        .try_into()
-        .unwrap();
-    assert!(geometry.is_valid(), "{:?}", geometry.check_validation());
-    assert!((geometry.unsigned_area() - meet_area()).abs() < 1e-12);
+    check_geometry(
+        text.parse::<geojson::Geometry>()
+            .unwrap()
+            .try_into()
+            .unwrap(),
+    );
 }
 
 #[test]

@@ -9,7 +9,6 @@ use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinError;
 use crate::yin3::Yin3Error;
-use std::cmp::Ordering;
 
 /// The OBJ comment line that stands for the whole space, which has no boundary.
 pub const WHOLE_SPACE: &str = "# yinset: the whole space (no boundary)";
@@ -125,22 +124,7 @@ impl<N: Num> Rings<N> {
         let mut rings = Vec::new();
         let mut origins = Vec::new();
         for (polygon, p) in polygons.into_iter().enumerate() {
-            let tagged = std::iter::once((None, p.exterior)).chain(
-                p.interiors
-                    .into_iter()
-                    .enumerate()
-                    .map(|(k, r)| (Some(k), r)),
-            );
-            for (ring, mut points) in tagged {
-                let want = if ring.is_none() {
-                    Ordering::Greater
-                } else {
-                    Ordering::Less
-                };
-                let reversed = twice_signed_area(&points).sign() == want.reverse();
-                if reversed {
-                    points.reverse();
-                }
+            for (ring, points, reversed) in p.oriented_rings() {
                 rings.push(points);
                 origins.push(Origin::Polygon {
                     polygon,
@@ -196,14 +180,6 @@ impl Origins {
     }
 }
 
-/// Twice the signed area of a vertex cycle (positive iff counterclockwise).
-fn twice_signed_area<N: Num>(ring: &[Point<N>]) -> N {
-    let next = ring.iter().cycle().skip(1);
-    ring.iter().zip(next).fold(N::zero(), |acc, (p, q)| {
-        acc + p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone()
-    })
-}
-
 /// The curve indices an error names.
 fn curves_named(e: &YinError) -> Vec<usize> {
     match e {
@@ -227,6 +203,7 @@ fn curves_named(e: &YinError) -> Vec<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::io::twice_signed_area;
     use crate::num::Rational;
 
     fn rings(text: &str, format: Format) -> Rings<Rational> {

@@ -5,7 +5,7 @@ use super::decode::WHOLE_SPACE;
 use super::error::CliError;
 use super::format::{Dimension, Format};
 use crate::io::obj::write_obj;
-use crate::io::{geojson, wkt, yin2_text, NumberStyle, Polygon, WriteError};
+use crate::io::{geojson, polygons_of, wkt, yin2_text, NumberStyle, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinSet2;
@@ -95,20 +95,7 @@ fn yin2<N: Num>(set: &YinSet2<N>) -> String {
 
 /// One polygon per atom (outer curve and its holes); an error naming `format` if unbounded.
 fn polygons<N: Num>(set: &YinSet2<N>, format: &'static str) -> Result<Vec<Polygon<N>>, CliError> {
-    if !set.is_bounded() {
-        return Err(CliError::Unbounded { format });
-    }
-    let curve = |k: usize| set.curves()[k].vertices().to_vec();
-    Ok(set
-        .atoms()
-        .iter()
-        .filter_map(|atom| {
-            Some(Polygon {
-                exterior: curve(atom.outer?),
-                interiors: atom.holes.iter().map(|&h| curve(h)).collect(),
-            })
-        })
-        .collect())
+    polygons_of(set).ok_or(CliError::Unbounded { format })
 }
 
 #[cfg(test)]

@@ -15,7 +15,7 @@
 //! exactly on request, which fails for a number without a finite decimal expansion (1/3),
 //! since JSON has no fractions.
 
-use super::{closed_texts, open_ring, without_bom, NumberStyle, ParseError, Polygon, WriteError};
+use super::{open_ring, polygon_texts, without_bom, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use serde::de::value::MapAccessDeserializer;
@@ -85,21 +85,8 @@ pub fn write_multipolygon<N: Num>(
     polys: &[Polygon<N>],
     style: NumberStyle,
 ) -> Result<String, WriteError> {
-    let ring = |ring: &[Point<N>]| {
-        let points = closed_texts(ring, style, false, |x, y| format!("[{x},{y}]"))?;
-        Ok(format!("[{}]", points.join(",")))
-    };
-    let polygon = |p: &Polygon<N>| {
-        let rings = p
-            .rings()
-            .map(ring)
-            .collect::<Result<Vec<_>, WriteError>>()?;
-        Ok(format!("[{}]", rings.join(",")))
-    };
-    let parts = polys
-        .iter()
-        .map(polygon)
-        .collect::<Result<Vec<_>, WriteError>>()?;
+    let point = |x, y| format!("[{x},{y}]");
+    let parts = polygon_texts(polys, style, false, point, ["[", "]"], ",")?;
     Ok(format!(
         r#"{{"type":"MultiPolygon","coordinates":[{}]}}"#,
         parts.join(",")

@@ -12,7 +12,7 @@
 //! where the expansion does not terminate).
 
 use super::error::line_column;
-use super::{closed_texts, open_ring, without_bom, NumberStyle, ParseError, Polygon, WriteError};
+use super::{open_ring, polygon_texts, without_bom, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 
@@ -90,21 +90,8 @@ pub fn write_multipolygon<N: Num>(
     if polys.is_empty() {
         return Ok("MULTIPOLYGON EMPTY".to_string());
     }
-    let ring = |ring: &[Point<N>]| {
-        let points = closed_texts(ring, style, true, |x, y| format!("{x} {y}"))?;
-        Ok(format!("({})", points.join(", ")))
-    };
-    let polygon = |p: &Polygon<N>| {
-        let rings = p
-            .rings()
-            .map(ring)
-            .collect::<Result<Vec<_>, WriteError>>()?;
-        Ok(format!("({})", rings.join(", ")))
-    };
-    let parts = polys
-        .iter()
-        .map(polygon)
-        .collect::<Result<Vec<_>, WriteError>>()?;
+    let point = |x, y| format!("{x} {y}");
+    let parts = polygon_texts(polys, style, true, point, ["(", ")"], ", ")?;
     Ok(format!("MULTIPOLYGON ({})", parts.join(", ")))
 }
 
