@@ -7,7 +7,7 @@ use predicates::str::contains;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
-use yinset::io::yin2_text::read_curves;
+use yinset::io::yin2_text::{self, Yin2Text};
 use yinset::num::{Num, Rational};
 use yinset::yin2::YinSet2;
 
@@ -28,11 +28,13 @@ fn file(dir: &TempDir, name: &str, text: &str) -> PathBuf {
     path
 }
 
-/// The curve files of `../shared/data/2d/<shape>` concatenated with blank lines, in `dir`.
+#[path = "../src/io/testdata.rs"]
+#[allow(dead_code)]
+mod testdata;
+
+/// The curve files of the shared data's `2d/<shape>` concatenated with blank lines, in `dir`.
 fn shared_shape(dir: &TempDir, shape: &str) -> PathBuf {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/2d")
-        .join(shape);
+    let src = testdata::dir(&format!("2d/{shape}"));
     let mut names: Vec<PathBuf> = std::fs::read_dir(&src)
         .unwrap_or_else(|e| panic!("missing test data {}: {e}", src.display()))
         .map(|e| e.expect("a directory entry").path())
@@ -47,15 +49,11 @@ fn shared_shape(dir: &TempDir, shape: &str) -> PathBuf {
 
 /// The Yin set in a yin2 text (the command's output), read by the library.
 fn parse(text: &str) -> YinSet2<Rational> {
-    let curves = read_curves(text).expect("yin2 output parses");
-    if curves.is_empty() {
-        return if text.contains("whole plane") {
-            YinSet2::full()
-        } else {
-            YinSet2::empty()
-        };
+    match yin2_text::read(text).expect("yin2 output parses") {
+        Yin2Text::Plane => YinSet2::full(),
+        Yin2Text::Curves(curves) if curves.is_empty() => YinSet2::empty(),
+        Yin2Text::Curves(curves) => YinSet2::from_curves(curves).expect("the output is a Yin set"),
     }
-    YinSet2::from_curves(curves).expect("the output is a Yin set")
 }
 
 /// Run with `args` (and `stdin`), expect success; standard output.
@@ -132,6 +130,9 @@ fn empty_and_whole_plane_survive_a_pipeline() {
 
 #[test]
 fn panda_meet_mickey_is_exact() {
+    if !testdata::available() {
+        return;
+    }
     let dir = scratch();
     let (panda, mickey) = (shared_shape(&dir, "panda"), shared_shape(&dir, "mickey"));
     let pm = dir.path().join("pm.txt");
@@ -181,8 +182,12 @@ fn info_reports_topology_area_and_box() {
 fn locate_classifies_points_from_stdin() {
     let dir = scratch();
     let a = file(&dir, "a.txt", FRAME);
-    let out = ok(&["locate", s(&a)], "# x y\n1/2 1/2\n2 1\n2 0\n9 9\n");
-    assert_eq!(out, "inside\noutside\nboundary\noutside\n");
+    // One output line per input line: blank and comment lines give empty lines.
+    let out = ok(
+        &["locate", s(&a)],
+        "# x y\n1/2 1/2\n\n2 1\n2 0\n  \n9 9\n\n",
+    );
+    assert_eq!(out, "\ninside\n\noutside\nboundary\n\noutside\n\n");
     let points = file(&dir, "p.txt", "3.5 3.5\n");
     assert_eq!(ok(&["locate", "-", s(&points)], FRAME), "inside\n");
 }
@@ -447,4 +452,157 @@ fn large_inputs_keep_pipes_clean() {
         .stderr("");
     let info: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
     assert_eq!(info["vertices"], 10_005);
+}
+
+#[test]
+fn byte_order_marks_are_accepted_in_all_three_formats() {
+    let dir = scratch();
+    let inputs = [
+        ("a.txt", "0 0\n4 0\n0 4\n"),
+        ("a.wkt", "POLYGON ((0 0, 4 0, 0 4, 0 0))"),
+        (
+            "a.geojson",
+            r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4]]]}"#,
+        ),
+    ];
+    for (name, text) in inputs {
+        let path = file(&dir, name, &format!("\u{feff}{text}"));
+        let info: Value = serde_json::from_str(&ok(&["info", s(&path)], "")).unwrap();
+        assert_eq!(info["area"]["exact"], "8", "{name}: {info}");
+    }
+}
+
+#[test]
+fn long_numbers_and_large_inputs_are_refused_up_front() {
+    let dir = scratch();
+    let long = format!("0 0\n1 0\n0 0.{}\n", "3".repeat(20_000));
+    fails(
+        &["info", "-"],
+        &long,
+        1,
+        &[
+            "standard input: line 3, column 5",
+            "20000 digits in a row, more than the limit of 10000 (--max-digits)",
+        ],
+    );
+    let info: Value =
+        serde_json::from_str(&ok(&["info", "-", "--max-digits", "20000"], &long)).expect("JSON");
+    assert_eq!(info["curves"], 1);
+    let points = file(&dir, "p.txt", &format!("1 {}\n", "1".repeat(50)));
+    fails(
+        &["locate", "-", s(&points), "--max-digits", "49"],
+        FRAME,
+        1,
+        &["line 1, column 3", "50 digits"],
+    );
+    // A file is refused by its length, before it is read; /dev/zero after the limit.
+    let a = file(&dir, "a.txt", FRAME);
+    fails(
+        &["info", s(&a), "--max-bytes", "10"],
+        "",
+        1,
+        &[
+            "`",
+            "a.txt` is larger than 10 bytes, the limit of --max-bytes",
+        ],
+    );
+    fails(
+        &["locate", s(&a), "/dev/zero", "--max-bytes", "1000000"],
+        "",
+        1,
+        &["`/dev/zero` is larger than 1000000 bytes"],
+    );
+}
+
+#[test]
+fn the_whole_plane_is_a_statement_and_curves_may_not_follow_it() {
+    let full = ok(&["complement", "-"], "");
+    assert!(full.starts_with("plane\n"), "{full}");
+    assert!(parse(&full).is_full());
+    fails(
+        &["info", "-"],
+        &format!("{full}\n{FRAME}"),
+        1,
+        &[
+            "line 4, column 1",
+            "(`plane` on line 1) is followed by curves",
+        ],
+    );
+    // The old comment is a comment: it reads as the empty set.
+    let info: Value = serde_json::from_str(&ok(
+        &["info", "-"],
+        "# yinset: the whole plane (no boundary curves)\n",
+    ))
+    .unwrap();
+    assert_eq!(info["set"], "empty");
+}
+
+#[test]
+fn polygonal_only_drops_points_and_lines() {
+    let json = r#"{"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"name": "a well"}, "geometry": {"type": "Point", "coordinates": [1, 1]}},
+        {"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4]]]}}]}"#;
+    fails(
+        &["info", "--from", "geojson", "-"],
+        json,
+        1,
+        &["`Point` is not polygonal"],
+    );
+    let wkt =
+        "GEOMETRYCOLLECTION (POINT (1 1), LINESTRING (0 0, 1 1), POLYGON ((0 0, 4 0, 0 4, 0 0)))";
+    fails(
+        &["info", "--from", "wkt", "-"],
+        wkt,
+        1,
+        &["`POINT` is not polygonal"],
+    );
+    for (from, text) in [("geojson", json), ("wkt", wkt)] {
+        let out = ok(&["info", "--from", from, "--polygonal-only", "-"], text);
+        let info: Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(info["area"]["exact"], "8", "{from}: {info}");
+    }
+}
+
+#[test]
+fn render_writes_png_for_png_names_and_refuses_other_extensions() {
+    let dir = scratch();
+    let png = dir.path().join("frame.png");
+    ok(&["render", "-", "-o", s(&png)], FRAME);
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "not a PNG");
+    let image = resvg::tiny_skia::Pixmap::decode_png(&bytes).unwrap();
+    // The SVG of the same picture says where the world is: viewBox = x, -y_max, width, height.
+    let svg = ok(&["render", "-"], FRAME);
+    let view: Vec<f64> = svg
+        .split("viewBox=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .split(' ')
+        .map(|t| t.parse().unwrap())
+        .collect();
+    assert_eq!(image.width(), 800);
+    let scale = 800.0 / view[2];
+    let colour = |x: f64, y: f64| {
+        let (px, py) = ((x - view[0]) * scale, (-y - view[1]) * scale);
+        let p = image.pixel(px as u32, py as u32).unwrap();
+        (p.red(), p.green(), p.blue())
+    };
+    let (r, _, b) = colour(0.5, 3.5);
+    assert!(b > r + 40, "inside the frame: {:?}", colour(0.5, 3.5));
+    assert_eq!(colour(2.0, 1.0), (255, 255, 255), "the hole is white");
+    for bad in ["frame.pdf", "frame"] {
+        fails(
+            &["render", "-", "-o", s(&dir.path().join(bad))],
+            FRAME,
+            2,
+            &[
+                "render cannot write",
+                "use the extension .svg or .png (2D sets)",
+            ],
+        );
+        assert!(!dir.path().join(bad).exists(), "{bad} written");
+    }
 }

@@ -35,16 +35,14 @@ fn s(p: &Path) -> &str {
     p.to_str().expect("a UTF-8 path")
 }
 
-/// A file of `../shared/data/3d`.
+#[path = "../src/io/testdata.rs"]
+#[allow(dead_code)]
+mod testdata;
+
+/// A file of the shared data's `3d` directory; panics naming it if it is missing.
 fn shared(name: &str) -> PathBuf {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/3d")
-        .join(name);
-    assert!(
-        path.is_file(),
-        "test data missing: {} (expected ../shared/data beside the repository)",
-        path.display()
-    );
+    let path = testdata::root().join("3d").join(name);
+    assert!(path.is_file(), "test data missing: {}", path.display());
     path
 }
 
@@ -258,7 +256,10 @@ fn locate_takes_xyz_lines() {
     let dir = scratch();
     let (a, _) = two_boxes(&dir);
     let out = ok(&["locate", s(&a)], "# x y z\n1 1 1\n2 1/2 1\n5 5 5\n");
-    assert_eq!(out, "inside\nboundary\noutside\n");
+    assert_eq!(
+        out, "\ninside\nboundary\noutside\n",
+        "one line per input line"
+    );
     fails(&["locate", s(&a)], "1 1\n", 1, &["line 1", "3 numbers"]);
 }
 
@@ -337,6 +338,9 @@ fn usage_errors_of_3d_input() {
 
 #[test]
 fn shared_ball_info() {
+    if !testdata::available() {
+        return;
+    }
     let ball = shared("ballahead.obj");
     let r = info(&["info", s(&ball)], "");
     assert_eq!(r["dimension"], 3);
@@ -359,6 +363,9 @@ fn shared_ball_info() {
 
 #[test]
 fn shared_teddy_is_rejected_naming_crossing_faces_and_lines() {
+    if !testdata::available() {
+        return;
+    }
     let teddy = shared("teddy.obj");
     fails(
         &["validate", s(&teddy)],

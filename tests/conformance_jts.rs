@@ -14,12 +14,18 @@ const FLOAT_PINNED: &[(&str, &str, &str)] = &[];
 
 #[test]
 fn jts_overlay_suites_exact() {
+    if !common::data_available() {
+        return;
+    }
     let report = run_exact(&jts_cases::<Rational>());
     report.print_and_check("JTS exact", PINNED);
 }
 
 #[test]
 fn jts_overlay_suites_float() {
+    if !common::data_available() {
+        return;
+    }
     let report = run_float(&jts_cases::<Rational>(), &jts_cases::<Float>());
     report.print_and_check("JTS float", FLOAT_PINNED);
 }

@@ -14,12 +14,18 @@ const FLOAT_PINNED: &[(&str, &str, &str)] = &[];
 
 #[test]
 fn martinez_cases_exact() {
+    if !common::data_available() {
+        return;
+    }
     let report = run_exact(&martinez_cases::<Rational>());
     report.print_and_check("Martinez exact", PINNED);
 }
 
 #[test]
 fn martinez_cases_float() {
+    if !common::data_available() {
+        return;
+    }
     let report = run_float(&martinez_cases::<Rational>(), &martinez_cases::<Float>());
     report.print_and_check("Martinez float", FLOAT_PINNED);
 }

@@ -350,6 +350,9 @@ fn timed<T>(what: &str, f: impl FnOnce() -> T) -> T {
 
 #[test]
 fn default_tolerance_is_relative_to_the_extent() {
+    if !common::data_available() {
+        return;
+    }
     let p = data::panda();
     let y = yinset::yin2::YinSet2::from_curves(harness::float_curves(&p)).unwrap();
     assert_eq!(y.ctx().eps(), default_eps(&[&p]));
@@ -357,6 +360,9 @@ fn default_tolerance_is_relative_to_the_extent() {
 
 #[test]
 fn panda_and_mickey() {
+    if !common::data_available() {
+        return;
+    }
     let full = std::env::var("YINSET_FLOAT_FULL").is_ok();
     let (p, m) = (data::panda(), data::mickey());
     let mut c = Campaign::default();
@@ -396,6 +402,9 @@ fn panda_and_mickey() {
 /// first, at most `budget` vertices) against the second feature, two boxes and a shifted
 /// copy, at ε = the default and 10⁻⁶ × the subject's size.
 fn gis_file(file: &str, budget: usize) {
+    if !common::data_available() {
+        return;
+    }
     let mut c = Campaign::default();
     let features = data::gis(file);
     assert!(

@@ -31,6 +31,9 @@ fn mickey() -> Y {
 
 #[test]
 fn decimals_are_read_exactly() {
+    if !common::data_available() {
+        return;
+    }
     let curves = read_figure::<Rational>("panda", 1);
     // The file starts with "4.0511876e+00   3.9586066e+00".
     assert_eq!(curves[0][0].x, q(40511876, 10_000_000));
@@ -39,6 +42,9 @@ fn decimals_are_read_exactly() {
 
 #[test]
 fn panda_has_six_components_with_2_1_1_0_0_0_holes() {
+    if !common::data_available() {
+        return;
+    }
     let p = panda();
     assert_eq!(p.curves().len(), 10);
     assert_eq!(p.curves().iter().filter(|c| c.is_positive()).count(), 6);
@@ -53,6 +59,9 @@ fn panda_has_six_components_with_2_1_1_0_0_0_holes() {
 
 #[test]
 fn mickey_has_two_positive_and_four_negative_curves() {
+    if !common::data_available() {
+        return;
+    }
     let m = mickey();
     assert_eq!(m.curves().len(), 6);
     assert_eq!(m.curves().iter().filter(|c| c.is_positive()).count(), 2);
@@ -60,6 +69,9 @@ fn mickey_has_two_positive_and_four_negative_curves() {
 
 #[test]
 fn panda_and_mickey_exactly() {
+    if !common::data_available() {
+        return;
+    }
     let (p, m) = (panda(), mickey());
     let t = std::time::Instant::now();
     let meet = p.meet(&m);

@@ -47,6 +47,9 @@ fn load(name: &str) -> YinSet3<Rational> {
 
 #[test]
 fn exact_volumes_equal_cgal_nef_polyhedra() {
+    if !common::data_available() {
+        return;
+    }
     let Some(bin) = cgal3d() else {
         eprintln!(
             "cgal3d not built (target/cgal3d/cgal3d or $YINSET_CGAL3D): differential test skipped"

@@ -39,6 +39,9 @@ fn operations(a: &Y, b: &Y) -> [Y; 4] {
 
 #[test]
 fn balls_touching_at_one_point_join_into_two_components() {
+    if !common::data_available() {
+        return;
+    }
     let (a, b) = (
         load("ballahead.obj").unwrap(),
         load("ballabehind.obj").unwrap(),
@@ -53,6 +56,9 @@ fn balls_touching_at_one_point_join_into_two_components() {
 
 #[test]
 fn a_cavity_touching_the_outer_surface_at_one_point() {
+    if !common::data_available() {
+        return;
+    }
     let (mid, left) = (load("ballmid.obj").unwrap(), load("ballleft.obj").unwrap());
     let [m, j, d, e] = operations(&mid, &left);
     assert_eq!(m, left, "ballleft lies inside ballmid");
@@ -69,6 +75,9 @@ fn a_cavity_touching_the_outer_surface_at_one_point() {
 
 #[test]
 fn a_ball_a_millionth_inside_another_without_contact() {
+    if !common::data_available() {
+        return;
+    }
     let (mid, right) = (load("ballmid.obj").unwrap(), load("ballright.obj").unwrap());
     let [m, j, d, _] = operations(&mid, &right);
     assert_eq!(m, right);
@@ -79,6 +88,9 @@ fn a_ball_a_millionth_inside_another_without_contact() {
 
 #[test]
 fn a_ball_inscribed_in_a_torus_tube_cuts_the_handle() {
+    if !common::data_available() {
+        return;
+    }
     let (torus, ball) = (load("torus.obj").unwrap(), load("innerball.obj").unwrap());
     assert_eq!(betti(&torus), (1, 1, 0));
     assert_eq!(torus.surfaces()[0].genus, 1);
@@ -95,6 +107,9 @@ fn a_ball_inscribed_in_a_torus_tube_cuts_the_handle() {
 
 #[test]
 fn teddy_is_rejected_naming_two_crossing_faces() {
+    if !common::data_available() {
+        return;
+    }
     match load("teddy.obj") {
         Err(Yin3Error::Crossing { a, b, .. }) => assert_ne!(a, b),
         other => panic!("teddy.obj intersects itself, yet: {other:?}"),
@@ -103,6 +118,9 @@ fn teddy_is_rejected_naming_two_crossing_faces() {
 
 #[test]
 fn clean_meshes_of_the_data_are_valid_with_their_genus() {
+    if !common::data_available() {
+        return;
+    }
     for (name, genus) in [
         ("heart.obj", 0),
         ("ballconnecttorus.obj", 1),

@@ -26,7 +26,7 @@
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
-use yinset::io::{geojson, obj, wkt, yin2_text, Polygon};
+use yinset::io::{geojson, obj, wkt, yin2_text, NumberStyle, Polygon};
 use yinset::kernel::{Point, Point3};
 use yinset::num::{Float, Rational};
 use yinset_fuzz::input::{
@@ -444,12 +444,12 @@ fn generate() -> Seeds {
         seeds.add(
             "parse_wkt",
             format!("fig_{name}"),
-            wkt::write_multipolygon(&polys),
+            wkt::write_multipolygon(&polys, NumberStyle::Exact).expect("decimal figures"),
         );
         seeds.add(
             "parse_geojson",
             format!("fig_{name}"),
-            geojson::write_multipolygon(&polys),
+            geojson::write_multipolygon(&polys, NumberStyle::Exact).expect("decimal figures"),
         );
     }
     generate3(&mut seeds);

@@ -5,7 +5,7 @@
 
 use crate::check::fail;
 use std::fmt::Debug;
-use yinset::io::{geojson, wkt, yin2_text, ParseError, Polygon};
+use yinset::io::{geojson, wkt, yin2_text, NumberStyle, ParseError, Polygon, WriteError};
 use yinset::kernel::Point;
 use yinset::num::{Float, Num, Rational};
 use yinset::yin2::{FillRule, YinSet2};
@@ -138,7 +138,7 @@ pub fn yin2(text: &str) {
 struct Format {
     read_exact: fn(&str) -> Result<Vec<Polygon<Rational>>, ParseError>,
     read_float: fn(&str) -> Result<Vec<Polygon<Float>>, ParseError>,
-    write: fn(&[Polygon<Rational>]) -> String,
+    write: fn(&[Polygon<Rational>]) -> Result<String, WriteError>,
 }
 
 /// A polygon reader: exact and float mode agree, errors point into the text, what it reads
@@ -155,7 +155,10 @@ fn polygons(text: &str, f: Format) -> Result<Vec<Polygon<Rational>>, ParseError>
         Err(e) => check_parse_error(e, text),
         Ok(polys) => {
             if polys.iter().flat_map(|p| p.rings()).all(|r| !r.is_empty()) {
-                let written = (f.write)(polys);
+                let written = match (f.write)(polys) {
+                    Ok(written) => written,
+                    Err(e) => fail!(text, "what was read cannot be written exactly: {e}"),
+                };
                 match (f.read_exact)(&written) {
                     Ok(again) if again == *polys => {}
                     other => fail!(
@@ -180,7 +183,7 @@ pub fn wkt(text: &str) {
         Format {
             read_exact: wkt::read_polygons::<Rational>,
             read_float: wkt::read_polygons::<Float>,
-            write: wkt::write_multipolygon::<Rational>,
+            write: |p| wkt::write_multipolygon(p, NumberStyle::Exact),
         },
     );
     match wkt::read_polygonal_parts::<Rational>(text) {
@@ -206,7 +209,7 @@ pub fn geojson(text: &str) {
         Format {
             read_exact: geojson::read_polygons::<Rational>,
             read_float: geojson::read_polygons::<Float>,
-            write: geojson::write_multipolygon::<Rational>,
+            write: |p| geojson::write_multipolygon(p, NumberStyle::Exact),
         },
     );
 }

@@ -45,7 +45,7 @@ pub enum Command {
     /// Print Betti numbers, curves (surfaces), Hasse diagram, area (volume) and bounding box as
     /// JSON.
     Info(Single),
-    /// Draw one or more sets: 2D sets as SVG; 3D sets as PNG or an interactive HTML page.
+    /// Draw one or more sets: 2D sets as SVG or PNG; 3D sets as PNG or an interactive HTML page.
     Render(RenderArgs),
     /// Check that the input is a Yin set's boundary, explaining why not.
     Validate(Single),
@@ -56,7 +56,7 @@ pub enum Command {
 }
 
 /// How inputs are read.
-#[derive(Args, Debug, Clone, Default)]
+#[derive(Args, Debug, Clone)]
 pub struct ReadOpts {
     /// Input format (default: from the file extension; for standard input, yin2, or OBJ if
     /// the other inputs are 3D).
@@ -68,6 +68,37 @@ pub struct ReadOpts {
     /// Float mode with tolerance E > 0 (default: exact rational arithmetic; 2D only).
     #[arg(long, value_name = "E", value_parser = positive_eps, allow_hyphen_values = true)]
     pub eps: Option<f64>,
+    /// Drop the points and lines of WKT and GeoJSON inputs (such as a FeatureCollection's
+    /// Points) instead of rejecting them; only the polygons are read.
+    #[arg(long)]
+    pub polygonal_only: bool,
+    /// Refuse a number with more than N digits in a row (exact numbers of many digits are
+    /// slow to read and to compute with).
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_DIGITS)]
+    pub max_digits: usize,
+    /// Refuse an input larger than N bytes, before reading it whole.
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_BYTES)]
+    pub max_bytes: u64,
+}
+
+/// The default of `--max-digits`: far more than any exact result of decimal inputs needs.
+pub const DEFAULT_MAX_DIGITS: usize = 10_000;
+
+/// The default of `--max-bytes`: 1 GiB.
+pub const DEFAULT_MAX_BYTES: u64 = 1 << 30;
+
+impl Default for ReadOpts {
+    /// The options' defaults on the command line.
+    fn default() -> Self {
+        ReadOpts {
+            from: None,
+            fill: None,
+            eps: None,
+            polygonal_only: false,
+            max_digits: DEFAULT_MAX_DIGITS,
+            max_bytes: DEFAULT_MAX_BYTES,
+        }
+    }
 }
 
 /// Where and how a resulting set is written.
@@ -80,6 +111,11 @@ pub struct WriteOpts {
     /// stl-binary writes binary STL).
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub to: Option<Format>,
+    /// Write WKT and GeoJSON coordinates exactly (decimals where they terminate, else `p/q` in
+    /// WKT and an error in GeoJSON) instead of the shortest decimals of the nearest f64s, which
+    /// other GIS tools read; yin2 and OBJ are always exact.
+    #[arg(long)]
+    pub exact: bool,
 }
 
 /// A fill rule for polygon soup.
@@ -143,8 +179,8 @@ pub struct RenderArgs {
     /// together.
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
-    /// The picture: FILE.svg (2D sets; `-` or absent: SVG on standard output), FILE.png or
-    /// FILE.html (3D sets).
+    /// The picture: FILE.svg or FILE.png (2D sets; PNG drawn without the legend's words; `-` or
+    /// absent: SVG on standard output), FILE.png or FILE.html (3D sets).
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
     /// 3D only: the view direction, azimuth (about the z axis, from the x axis) and elevation

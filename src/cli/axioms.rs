@@ -5,6 +5,7 @@ use super::error::CliError;
 use super::format::Format;
 use super::output::write_text;
 use super::progress;
+use crate::io::NumberStyle;
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::{YinError, YinSet2};
@@ -121,7 +122,7 @@ fn dump<N: Num>(sets: &[YinSet2<N>; 3]) -> String {
         .iter()
         .zip(sets)
         .map(|(name, s)| {
-            let text = encode(s, Format::Yin2).unwrap_or_default();
+            let text = encode(s, Format::Yin2, NumberStyle::Exact).unwrap_or_default();
             format!("{name}:\n{text}")
         })
         .collect()

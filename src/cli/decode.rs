@@ -4,24 +4,21 @@
 use super::format::Format;
 use crate::io::mesh::{Mesh, MeshError};
 use crate::io::obj::read_obj;
-use crate::io::{geojson, wkt, yin2_text, ParseError, Polygon};
+use crate::io::yin2_text::{self, Yin2Text};
+use crate::io::{geojson, wkt, ParseError, Polygon};
 use crate::io::{off::read_off, ply::read_ply, stl::read_stl};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinError;
 use crate::yin3::Yin3Error;
-use std::cmp::Ordering;
-
-/// The yin2 comment line that stands for the whole plane, which has no boundary curves.
-pub const FULL_PLANE: &str = "# yinset: the whole plane (no boundary curves)";
 
 /// The OBJ comment line that stands for the whole space, which has no boundary.
 pub const WHOLE_SPACE: &str = "# yinset: the whole space (no boundary)";
 
 /// What an input text holds.
 pub enum Decoded<B> {
-    /// The whole plane or space (a text without boundary but with the [`FULL_PLANE`] or
-    /// [`WHOLE_SPACE`] line).
+    /// The whole plane or space (the yin2 statement `plane`, or an OBJ text without faces but
+    /// with the [`WHOLE_SPACE`] line).
     Full,
     /// The boundary: [`Rings`] or a [`Mesh`] (none: the empty set).
     Boundary(B),
@@ -50,20 +47,27 @@ enum Origin {
     },
 }
 
-/// Decode `text` in `format`, a format of 2D sets.
-pub fn decode<N: Num>(text: &str, format: Format) -> Result<Decoded<Rings<N>>, ParseError> {
-    let polygons = match format {
-        Format::Yin2 => {
-            let rings = yin2_text::read_curves(text)?;
-            if rings.is_empty() && has_line(text, FULL_PLANE) {
-                return Ok(Decoded::Full);
-            }
+/// Decode `text` in `format`, a format of 2D sets; with `polygonal_only`, the points and
+/// lines of WKT and GeoJSON are dropped instead of rejected.
+pub fn decode<N: Num>(
+    text: &str,
+    format: Format,
+    polygonal_only: bool,
+) -> Result<Decoded<Rings<N>>, ParseError> {
+    let polygons = match (format, polygonal_only) {
+        (Format::Yin2, _) => {
+            let rings = match yin2_text::read(text)? {
+                Yin2Text::Plane => return Ok(Decoded::Full),
+                Yin2Text::Curves(rings) => rings,
+            };
             let origins = Origins(rings.iter().map(|_| Origin::Curve).collect());
             return Ok(Decoded::Boundary(Rings { rings, origins }));
         }
-        Format::Wkt => wkt::read_polygons(text)?,
-        Format::Geojson => geojson::read_polygons(text)?,
-        Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply => {
+        (Format::Wkt, false) => wkt::read_polygons(text)?,
+        (Format::Wkt, true) => wkt::read_polygonal_parts(text)?,
+        (Format::Geojson, false) => geojson::read_polygons(text)?,
+        (Format::Geojson, true) => geojson::read_polygonal_parts(text)?,
+        (Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply, _) => {
             return Err(mesh_is_3d(format))
         }
     };
@@ -150,22 +154,7 @@ impl<N: Num> Rings<N> {
         let mut rings = Vec::new();
         let mut origins = Vec::new();
         for (polygon, p) in polygons.into_iter().enumerate() {
-            let tagged = std::iter::once((None, p.exterior)).chain(
-                p.interiors
-                    .into_iter()
-                    .enumerate()
-                    .map(|(k, r)| (Some(k), r)),
-            );
-            for (ring, mut points) in tagged {
-                let want = if ring.is_none() {
-                    Ordering::Greater
-                } else {
-                    Ordering::Less
-                };
-                let reversed = twice_signed_area(&points).sign() == want.reverse();
-                if reversed {
-                    points.reverse();
-                }
+            for (ring, points, reversed) in p.oriented_rings() {
                 rings.push(points);
                 origins.push(Origin::Polygon {
                     polygon,
@@ -221,14 +210,6 @@ impl Origins {
     }
 }
 
-/// Twice the signed area of a vertex cycle (positive iff counterclockwise).
-fn twice_signed_area<N: Num>(ring: &[Point<N>]) -> N {
-    let next = ring.iter().cycle().skip(1);
-    ring.iter().zip(next).fold(N::zero(), |acc, (p, q)| {
-        acc + p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone()
-    })
-}
-
 /// The curve indices an error names.
 fn curves_named(e: &YinError) -> Vec<usize> {
     match e {
@@ -252,10 +233,11 @@ fn curves_named(e: &YinError) -> Vec<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::io::twice_signed_area;
     use crate::num::Rational;
 
     fn rings(text: &str, format: Format) -> Rings<Rational> {
-        match decode(text, format).unwrap() {
+        match decode(text, format, false).unwrap() {
             Decoded::Boundary(r) => r,
             Decoded::Full => panic!("full"),
         }
@@ -284,7 +266,7 @@ mod tests {
         let r = rings("0 0\n0 1\n1 0\n", Format::Yin2);
         assert!(twice_signed_area(&r.rings[0]) < Rational::from_integer(0.into()));
         assert!(matches!(
-            decode::<Rational>(&format!("{FULL_PLANE}\n"), Format::Yin2),
+            decode::<Rational>("plane\n", Format::Yin2, false),
             Ok(Decoded::Full)
         ));
         assert_eq!(rings("# nothing\n", Format::Yin2).rings.len(), 0);
@@ -324,7 +306,7 @@ mod tests {
         assert!(mesh("# yinset\nv 0 0 0\n").unwrap().faces.is_empty());
         let text = format!("{WHOLE_SPACE}\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert_eq!(mesh(&text).unwrap().faces.len(), 1);
-        assert!(decode::<Rational>("v 0 0 0", Format::Obj).is_err());
+        assert!(decode::<Rational>("v 0 0 0", Format::Obj, false).is_err());
         assert!(decode_mesh::<Rational>(b"0 0\n1 0\n0 1\n", Format::Yin2).is_err());
         // The whole-space line stands for 1̂ in OBJ only.
         let off = format!("{WHOLE_SPACE}\nOFF\n0 0 0\n");

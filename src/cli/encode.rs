@@ -1,29 +1,41 @@
 //! A Yin set → a file of any format (yin2 exactly; OGC polygons only for bounded sets; OBJ, one
 //! object per glued surface, STL, OFF and PLY for 3D sets).
 
-use super::decode::{FULL_PLANE, WHOLE_SPACE};
+use super::decode::WHOLE_SPACE;
 use super::error::CliError;
 use super::format::{Dimension, Format};
 use crate::io::obj::write_obj;
 use crate::io::off::write_off;
 use crate::io::ply::write_ply;
 use crate::io::stl::{write_stl_ascii, write_stl_binary};
-use crate::io::{geojson, wkt, yin2_text, Polygon};
+use crate::io::{geojson, polygons_of, wkt, yin2_text, NumberStyle, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
 
-/// The text of `set` in `format`.
-pub fn encode<N: Num>(set: &YinSet2<N>, format: Format) -> Result<String, CliError> {
-    match format {
-        Format::Yin2 => Ok(yin2(set)),
-        Format::Wkt => Ok(wkt::write_multipolygon(&polygons(set, "WKT")?) + "\n"),
-        Format::Geojson => Ok(geojson::write_multipolygon(&polygons(set, "GeoJSON")?) + "\n"),
+/// A writer of OGC polygons (WKT or GeoJSON).
+type Writer<N> = fn(&[Polygon<N>], NumberStyle) -> Result<String, WriteError>;
+
+/// The text of `set` in `format`, WKT and GeoJSON coordinates in `style`.
+pub fn encode<N: Num>(
+    set: &YinSet2<N>,
+    format: Format,
+    style: NumberStyle,
+) -> Result<String, CliError> {
+    let (name, write): (_, Writer<N>) = match format {
+        Format::Yin2 => return Ok(yin2(set)),
         Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply => {
-            Err(wrong_dimension(format, Dimension::Two))
+            return Err(wrong_dimension(format, Dimension::Two))
         }
-    }
+        Format::Wkt => ("WKT", wkt::write_multipolygon),
+        Format::Geojson => ("GeoJSON", geojson::write_multipolygon),
+    };
+    let text = write(&polygons(set, name)?, style).map_err(|source| CliError::Unwritable {
+        format: name,
+        source,
+    })?;
+    Ok(text + "\n")
 }
 
 /// The file of the 3D `set` in `format`. Only OBJ can hold 1̂, by its whole-space comment
@@ -91,10 +103,10 @@ fn obj<N: Num>(set: &YinSet3<N>) -> String {
     }
 }
 
-/// The yin2 text of `set`: its curves, or a comment line for 0̂ and 1̂.
+/// The yin2 text of `set`: its curves, the whole-plane statement for 1̂, a comment line for 0̂.
 fn yin2<N: Num>(set: &YinSet2<N>) -> String {
     if set.is_full() {
-        return format!("{FULL_PLANE}\n");
+        return yin2_text::write_plane();
     }
     if set.is_empty() {
         return "# yinset: the empty set (no curves)\n".to_string();
@@ -105,20 +117,7 @@ fn yin2<N: Num>(set: &YinSet2<N>) -> String {
 
 /// One polygon per atom (outer curve and its holes); an error naming `format` if unbounded.
 fn polygons<N: Num>(set: &YinSet2<N>, format: &'static str) -> Result<Vec<Polygon<N>>, CliError> {
-    if !set.is_bounded() {
-        return Err(CliError::Unbounded { format });
-    }
-    let curve = |k: usize| set.curves()[k].vertices().to_vec();
-    Ok(set
-        .atoms()
-        .iter()
-        .filter_map(|atom| {
-            Some(Polygon {
-                exterior: curve(atom.outer?),
-                interiors: atom.holes.iter().map(|&h| curve(h)).collect(),
-            })
-        })
-        .collect())
+    polygons_of(set).ok_or(CliError::Unbounded { format })
 }
 
 #[cfg(test)]
@@ -138,32 +137,51 @@ mod tests {
 
     #[test]
     fn atoms_become_polygons_with_their_holes() {
-        let wkt = encode(&square_with_hole(), Format::Wkt).unwrap();
+        let wkt = encode(&square_with_hole(), Format::Wkt, NumberStyle::Decimal).unwrap();
         assert_eq!(
             wkt,
             "MULTIPOLYGON (((0 0, 2 0, 4 0, 4 4, 0 4, 0 0), (1 2, 3 2, 2 0, 1 2)))\n"
         );
-        let empty = encode(&YinSet2::<Rational>::empty(), Format::Geojson).unwrap();
+        let empty = encode(
+            &YinSet2::<Rational>::empty(),
+            Format::Geojson,
+            NumberStyle::Decimal,
+        )
+        .unwrap();
         assert_eq!(empty, "{\"type\":\"MultiPolygon\",\"coordinates\":[]}\n");
     }
 
     #[test]
     fn unbounded_sets_are_only_written_as_yin2() {
         let outside = square_with_hole().complement();
-        let e = encode(&outside, Format::Geojson).unwrap_err().to_string();
+        let e = encode(&outside, Format::Geojson, NumberStyle::Exact)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("unbounded") && e.contains("--to yin2"), "{e}");
-        assert!(encode(&outside, Format::Yin2).unwrap().contains("\n\n"));
+        assert!(encode(&outside, Format::Yin2, NumberStyle::Exact)
+            .unwrap()
+            .contains("\n\n"));
     }
 
     #[test]
     fn empty_and_full_round_trip_through_yin2() {
-        let full = encode(&YinSet2::<Rational>::full(), Format::Yin2).unwrap();
+        let full = encode(
+            &YinSet2::<Rational>::full(),
+            Format::Yin2,
+            NumberStyle::Decimal,
+        )
+        .unwrap();
         assert!(matches!(
-            decode::<Rational>(&full, Format::Yin2),
+            decode::<Rational>(&full, Format::Yin2, false),
             Ok(Decoded::Full)
         ));
-        let empty = encode(&YinSet2::<Rational>::empty(), Format::Yin2).unwrap();
-        match decode::<Rational>(&empty, Format::Yin2) {
+        let empty = encode(
+            &YinSet2::<Rational>::empty(),
+            Format::Yin2,
+            NumberStyle::Decimal,
+        )
+        .unwrap();
+        match decode::<Rational>(&empty, Format::Yin2, false) {
             Ok(Decoded::Boundary(r)) => assert!(r.rings.is_empty()),
             _ => panic!("not empty"),
         }
@@ -197,6 +215,6 @@ mod tests {
             b""
         );
         assert!(encode3(&hollow, Format::Wkt).is_err());
-        assert!(encode(&square_with_hole(), Format::Obj).is_err());
+        assert!(encode(&square_with_hole(), Format::Obj, NumberStyle::Decimal).is_err());
     }
 }

@@ -2,7 +2,7 @@
 
 use crate::io::mesh::MeshError;
 use crate::io::stl::NotF32;
-use crate::io::ParseError;
+use crate::io::{ParseError, WriteError};
 use std::process::ExitCode;
 
 /// The kernel's reason why an input is not a Yin set (a 2D `YinError` or a 3D `Yin3Error`).
@@ -20,6 +20,9 @@ pub enum CliError {
         name: String,
         source: std::io::Error,
     },
+    /// An input longer than `--max-bytes`.
+    #[error("{name} is larger than {limit} bytes, the limit of --max-bytes: not read")]
+    TooLarge { name: String, limit: u64 },
     /// A file or standard output could not be written.
     #[error("cannot write {name}: {source}")]
     Write {
@@ -45,6 +48,12 @@ pub enum CliError {
     /// An unbounded set asked for in a format of bounded polygons.
     #[error("the set is unbounded (it contains everything far enough out), so it cannot be written as {format} polygons: write yin2 instead (--to yin2)")]
     Unbounded { format: &'static str },
+    /// A result the output format cannot spell in the asked number style.
+    #[error("cannot write the result as {format}: {source}")]
+    Unwritable {
+        format: &'static str,
+        source: WriteError,
+    },
     /// Some random axiom checks failed.
     #[error("{failed} of {total} axiom checks failed")]
     AxiomsFailed { failed: u64, total: u64 },

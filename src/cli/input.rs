@@ -7,7 +7,7 @@ use super::error::CliError;
 use super::format::{is_std, Dimension, Format};
 use super::progress;
 use crate::io::mesh::Mesh;
-use crate::io::ParseError;
+use crate::io::{check_digit_runs, ParseError};
 use crate::num::Num;
 use crate::yin2::{YinError, YinSet2};
 use crate::yin3::YinSet3;
@@ -33,33 +33,54 @@ pub fn one_stdin<'a>(paths: impl IntoIterator<Item = &'a Path>) -> Result<(), Cl
     Ok(())
 }
 
-/// The text of `path` (`-`: standard input).
-pub fn read_text(path: &Path) -> Result<String, CliError> {
-    String::from_utf8(read_bytes(path)?).map_err(|e| CliError::Read {
+/// The text of `path` (`-`: standard input), refused as [`read_bytes`] does, if it is not
+/// UTF-8, or if a number has more than `opts.max_digits` digits in a row.
+pub fn read_text(path: &Path, opts: &ReadOpts) -> Result<String, CliError> {
+    let text = String::from_utf8(read_bytes(path, opts)?).map_err(|e| CliError::Read {
         name: name(path),
         source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
-    })
+    })?;
+    check_digit_runs(&text, opts.max_digits).map_err(|source| parse_error(path, source))?;
+    Ok(text)
 }
 
-/// The bytes of `path` (`-`: standard input).
-pub fn read_bytes(path: &Path) -> Result<Vec<u8>, CliError> {
-    let mut bytes = Vec::new();
-    let read = if is_std(path) {
-        std::io::stdin().read_to_end(&mut bytes).map(|_| ())
-    } else {
-        std::fs::File::open(path).and_then(|mut f| f.read_to_end(&mut bytes).map(|_| ()))
+/// The bytes of `path` (`-`: standard input), refused if longer than `opts.max_bytes` (a file
+/// by its length before reading it, standard input once the limit is passed).
+pub fn read_bytes(path: &Path, opts: &ReadOpts) -> Result<Vec<u8>, CliError> {
+    let limit = opts.max_bytes;
+    let too_large = || CliError::TooLarge {
+        name: name(path),
+        limit,
     };
-    read.map(|()| bytes).map_err(|source| CliError::Read {
+    let read_error = |source| CliError::Read {
         name: name(path),
         source,
-    })
+    };
+    let source: Box<dyn Read> = if is_std(path) {
+        Box::new(std::io::stdin())
+    } else {
+        let file = std::fs::File::open(path).map_err(read_error)?;
+        if file.metadata().map_err(read_error)?.len() > limit {
+            return Err(too_large());
+        }
+        Box::new(file)
+    };
+    let mut bytes = Vec::new();
+    source
+        .take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(read_error)?;
+    if bytes.len() as u64 > limit {
+        return Err(too_large());
+    }
+    Ok(bytes)
 }
 
 /// The Yin set in `path`, read as `opts` say, with number context `ctx`.
 pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2<N>, CliError> {
     let format = Format::of_input(path, opts.from, Dimension::Two)?;
-    let text = read_text(path)?;
-    let rings = match decode::<N>(&text, format) {
+    let text = read_text(path, opts)?;
+    let rings = match decode::<N>(&text, format, opts.polygonal_only) {
         Ok(Decoded::Full) => return Ok(YinSet2::full().with_ctx(ctx)),
         Ok(Decoded::Boundary(rings)) => rings,
         Err(mut source) => {
@@ -82,7 +103,10 @@ pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2
 /// 1̂ if it is OBJ's whole-space comment line.
 pub fn load3<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet3<N>, CliError> {
     let format = Format::of_input(path, opts.from, Dimension::Three)?;
-    let bytes = read_bytes(path)?;
+    let bytes = read_bytes(path, opts)?;
+    if let Ok(text) = std::str::from_utf8(&bytes) {
+        check_digit_runs(text, opts.max_digits).map_err(|source| parse_error(path, source))?;
+    }
     let mesh = match decode_mesh::<N>(&bytes, format) {
         Ok(Decoded::Full) => return Ok(YinSet3::full()),
         Ok(Decoded::Boundary(mesh)) => mesh,

@@ -1,32 +1,38 @@
 //! `locate`: points as `x y` (2D) or `x y z` (3D) lines → inside / outside / boundary, one
-//! word per point.
+//! output line per input line (an empty one for a blank or comment line), so that answers line
+//! up with their points.
 
 use crate::io::ParseError;
 use crate::kernel::{Point, Point3};
 use crate::num::Num;
 use crate::yin2::Location;
 
-/// The points of `text`: one `x y` per line; blank lines and `#` comments are skipped.
-pub fn read_points<N: Num>(text: &str) -> Result<Vec<Point<N>>, ParseError> {
-    let points = read_coordinates::<N, 2>(text)?;
-    Ok(points.into_iter().map(|[x, y]| Point::new(x, y)).collect())
-}
-
-/// The points of `text`: one `x y z` per line; blank lines and `#` comments are skipped.
-pub fn read_points3<N: Num>(text: &str) -> Result<Vec<Point3<N>>, ParseError> {
-    let points = read_coordinates::<N, 3>(text)?;
-    Ok(points
+/// The point on each line of `text`, one `x y` per line (none for blank and `#` comment lines).
+pub fn read_points<N: Num>(text: &str) -> Result<Vec<Option<Point<N>>>, ParseError> {
+    let lines = read_coordinates::<N, 2>(text)?;
+    Ok(lines
         .into_iter()
-        .map(|[x, y, z]| Point3::new(x, y, z))
+        .map(|p| p.map(|[x, y]| Point::new(x, y)))
         .collect())
 }
 
-/// The `D` coordinates on each line of `text`; blank lines and `#` comments are skipped.
-fn read_coordinates<N: Num, const D: usize>(text: &str) -> Result<Vec<[N; D]>, ParseError> {
+/// The point on each line of `text`, one `x y z` per line (none for blank and comment lines).
+pub fn read_points3<N: Num>(text: &str) -> Result<Vec<Option<Point3<N>>>, ParseError> {
+    let lines = read_coordinates::<N, 3>(text)?;
+    Ok(lines
+        .into_iter()
+        .map(|p| p.map(|[x, y, z]| Point3::new(x, y, z)))
+        .collect())
+}
+
+/// The `D` coordinates on each line of `text` (none for blank and `#` comment lines).
+fn read_coordinates<N: Num, const D: usize>(text: &str) -> Result<Vec<Option<[N; D]>>, ParseError> {
+    let text = crate::io::without_bom(text);
     let mut points = Vec::new();
     for (k, line) in text.lines().enumerate() {
         let trimmed = line.trim();
         if trimmed.is_empty() || trimmed.starts_with('#') {
+            points.push(None);
             continue;
         }
         let at = |token: &str, message: String| ParseError {
@@ -53,7 +59,7 @@ fn read_coordinates<N: Num, const D: usize>(text: &str) -> Result<Vec<[N; D]>, P
         for (c, t) in coordinates.iter_mut().zip(tokens) {
             *c = number(t)?;
         }
-        points.push(coordinates);
+        points.push(Some(coordinates));
     }
     Ok(points)
 }
@@ -67,11 +73,20 @@ fn word(l: Location) -> &'static str {
     }
 }
 
-/// One line per point: where it lies (`locations`, as the kernel's `locate` gives them).
-pub fn classify(locations: Vec<Location>) -> String {
-    locations
-        .into_iter()
-        .map(|l| format!("{}\n", word(l)))
+/// One line per input line: where its point lies, as `locate` (the kernel's, on all points
+/// at once) says, or nothing for a line without a point.
+pub fn aligned<P: Clone>(
+    lines: &[Option<P>],
+    locate: impl FnOnce(&[P]) -> Vec<Location>,
+) -> String {
+    let points: Vec<P> = lines.iter().flatten().cloned().collect();
+    let mut words = locate(&points).into_iter().map(word);
+    lines
+        .iter()
+        .map(|line| match line {
+            Some(_) => format!("{}\n", words.next().unwrap_or_default()),
+            None => "\n".to_string(),
+        })
         .collect()
 }
 
@@ -84,8 +99,15 @@ mod tests {
     #[test]
     fn reads_points_with_repeats_comments_and_fractions() {
         let pts = read_points::<Rational>("# p\n0 0\n\n 1/2  3\n0 0\n").unwrap();
-        assert_eq!(pts.len(), 3);
-        assert_eq!(pts[1].x, Rational::new(1.into(), 2.into()));
+        assert_eq!(pts.len(), 5);
+        assert_eq!(pts.iter().flatten().count(), 3);
+        assert!(pts[0].is_none() && pts[2].is_none());
+        assert_eq!(
+            pts[3].as_ref().unwrap().x,
+            Rational::new(1.into(), 2.into())
+        );
+        let bom = read_points::<Rational>("\u{feff}0 0\n").unwrap();
+        assert_eq!(bom, vec![Some(Point::int(0, 0))]);
     }
 
     #[test]
@@ -105,12 +127,14 @@ mod tests {
         assert_eq!(
             pts,
             vec![
-                Point3::new(
+                None,
+                Some(Point3::new(
                     Rational::from_i64(0),
                     Rational::from_i64(0),
                     Rational::new(1.into(), 2.into())
-                ),
-                Point3::int(1, 2, 3)
+                )),
+                None,
+                Some(Point3::int(1, 2, 3))
             ]
         );
         let e = read_points3::<Rational>("0 0\n").unwrap_err();
@@ -126,17 +150,18 @@ mod tests {
     fn classifies_inside_outside_boundary() {
         let p = |x, y| Point::int(x, y);
         let set = YinSet2::<Rational>::from_curves(vec![vec![p(0, 0), p(2, 0), p(0, 2)]]).unwrap();
+        let half = Rational::new(1.into(), 2.into());
+        let lines = [
+            Some(p(0, 0)),
+            None,
+            Some(p(1, 0)),
+            Some(p(3, 3)),
+            None,
+            Some(Point::new(half.clone(), half)),
+        ];
         assert_eq!(
-            classify(set.locate(&[
-                p(0, 0),
-                p(1, 0),
-                p(3, 3),
-                Point::new(
-                    Rational::new(1.into(), 2.into()),
-                    Rational::new(1.into(), 2.into())
-                )
-            ])),
-            "boundary\nboundary\noutside\ninside\n"
+            aligned(&lines, |points| set.locate(points)),
+            "boundary\n\nboundary\noutside\n\ninside\n"
         );
     }
 }

@@ -138,7 +138,7 @@ fn run_in<S: Set>(command: &Command, ctx: S::Ctx) -> Result<(), CliError> {
         Command::Locate(l) => {
             one_stdin([l.set.as_path(), l.points.as_path()])?;
             let set = S::load(&l.set, &l.read, ctx)?;
-            let text = read_text(&l.points)?;
+            let text = read_text(&l.points, &l.read)?;
             let words = set.locate_text(&text).map_err(|source| CliError::Parse {
                 name: name(&l.points),
                 source,

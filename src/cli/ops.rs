@@ -8,6 +8,7 @@ use super::input::one_stdin;
 use super::output::write_bytes;
 use super::progress;
 use super::set::Set;
+use crate::io::NumberStyle;
 use std::path::Path;
 
 /// A set-valued operation on one or more sets.
@@ -67,7 +68,12 @@ pub fn operate<S: Set>(
         )
     };
     let result = progress::while_working(message, vertices, || op.apply(first, rest));
-    write_bytes(write.output.as_deref(), &result.encode(format)?)
+    let style = if write.exact {
+        NumberStyle::Exact
+    } else {
+        NumberStyle::Decimal
+    };
+    write_bytes(write.output.as_deref(), &result.encode(format, style)?)
 }
 
 #[cfg(test)]

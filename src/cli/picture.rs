@@ -1,14 +1,17 @@
-//! `render`: which picture the output file asks for (SVG of 2D sets; PNG or HTML of 3D sets),
-//! and drawing it.
+//! `render`: which picture the output file asks for (SVG or PNG of 2D sets; PNG or HTML of 3D
+//! sets), and drawing it; any other extension is an error rather than bytes under a misleading
+//! name.
 
 use super::args::RenderArgs;
 use super::error::CliError;
 use super::format::is_std;
 use super::progress;
 use crate::io::html3::write_html;
+use crate::io::png::svg_to_png;
 use crate::io::png3::write_png;
 use crate::io::scene3::facets;
 use crate::io::svg::write_svg;
+use crate::io::WriteError;
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
@@ -39,27 +42,35 @@ fn picture(output: Option<&Path>) -> Result<Option<Picture>, CliError> {
         Some("png") => Ok(Some(Picture::Png)),
         Some("html" | "htm") => Ok(Some(Picture::Html)),
         _ => Err(CliError::Usage(format!(
-            "cannot tell the picture format from `{}`: use the extension .svg (2D sets), \
-             .png or .html (3D sets)",
+            "render cannot write `{}`: use the extension .svg or .png (2D sets), .png or .html \
+             (3D sets)",
             path.display()
         ))),
     }
 }
 
-/// The SVG picture of the 2D `layers`; a usage error for a PNG or HTML output or 3D options.
+/// The SVG picture of the 2D `layers`, rasterized (resvg) for a PNG output; a usage error for
+/// an HTML output or 3D options.
 pub fn render2<N: Num>(
     layers: &[(&str, &YinSet2<N>)],
     args: &RenderArgs,
 ) -> Result<Vec<u8>, CliError> {
     if args.view.is_some() || args.size.is_some() {
         return Err(CliError::Usage(
-            "--view and --size apply to pictures of 3D sets; 2D sets are drawn as SVG".to_string(),
+            "--view and --size apply to pictures of 3D sets; 2D sets are drawn as SVG or PNG"
+                .to_string(),
         ));
     }
     match picture(args.output.as_deref())? {
         None | Some(Picture::Svg) => Ok(write_svg(layers).into_bytes()),
-        Some(_) => Err(CliError::Usage(
-            "2D sets are drawn as SVG: give -o FILE.svg (or no -o for standard output)".to_string(),
+        Some(Picture::Png) => svg_to_png(&write_svg(layers)).map_err(|e| CliError::Unwritable {
+            format: "PNG",
+            source: WriteError(e),
+        }),
+        Some(Picture::Html) => Err(CliError::Usage(
+            "2D sets are drawn as SVG or PNG: give -o FILE.svg, -o FILE.png (or no -o for \
+             standard output)"
+                .to_string(),
         )),
     }
 }
@@ -100,5 +111,26 @@ pub fn render3<N: Num>(
              -o FILE.html"
                 .to_string(),
         )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_extension_picks_the_picture_and_refuses_others() {
+        let kind = |out: &str| picture(Some(Path::new(out)));
+        assert_eq!(kind("-").unwrap(), None);
+        assert_eq!(kind("a.SVG").unwrap(), Some(Picture::Svg));
+        assert_eq!(kind("d/a.png").unwrap(), Some(Picture::Png));
+        assert_eq!(kind("a.htm").unwrap(), Some(Picture::Html));
+        for bad in ["a.pdf", "a", "a.png.txt"] {
+            let e = kind(bad).unwrap_err().to_string();
+            assert!(
+                e.contains(&format!("`{bad}`")) && e.contains(".svg or .png"),
+                "{e}"
+            );
+        }
     }
 }

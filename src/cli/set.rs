@@ -8,7 +8,7 @@ use super::error::CliError;
 use super::format::{Dimension, Format};
 use super::input::{load, load3};
 use super::{info, locate, picture};
-use crate::io::ParseError;
+use crate::io::{NumberStyle, ParseError};
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
@@ -24,8 +24,8 @@ pub trait Set: Clone {
     const DIMENSION: Dimension;
     /// The set in `path`, read as `opts` say, with number context `ctx`.
     fn load(path: &Path, opts: &ReadOpts, ctx: Self::Ctx) -> Result<Self, CliError>;
-    /// The file of the set in `format`.
-    fn encode(&self, format: Format) -> Result<Vec<u8>, CliError>;
+    /// The file of the set in `format`, coordinates of the OGC formats in `style`.
+    fn encode(&self, format: Format, style: NumberStyle) -> Result<Vec<u8>, CliError>;
     /// A ∧ B.
     fn meet(&self, other: &Self) -> Self;
     /// A ∨ B.
@@ -42,7 +42,7 @@ pub trait Set: Clone {
     fn info(&self) -> Value;
     /// The one-line summary of `validate`.
     fn describe(&self) -> String;
-    /// The answer of `locate` for the points in `text`, one word per line.
+    /// The answer of `locate` for the points in `text`, one line per line of `text`.
     fn locate_text(&self, text: &str) -> Result<String, ParseError>;
     /// The picture of labelled sets that `render` asks for.
     fn render(layers: &[(&str, &Self)], args: &RenderArgs) -> Result<Vec<u8>, CliError>;
@@ -77,8 +77,8 @@ impl<N: Num> Set for YinSet2<N> {
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load(path, opts, ctx)
     }
-    fn encode(&self, format: Format) -> Result<Vec<u8>, CliError> {
-        encode(self, format).map(String::into_bytes)
+    fn encode(&self, format: Format, style: NumberStyle) -> Result<Vec<u8>, CliError> {
+        encode(self, format, style).map(String::into_bytes)
     }
     fn size(&self) -> usize {
         self.curves().iter().map(|c| c.len()).sum()
@@ -90,7 +90,9 @@ impl<N: Num> Set for YinSet2<N> {
         crate::demo::describe(self)
     }
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
-        Ok(locate::classify(self.locate(&locate::read_points(text)?)))
+        Ok(locate::aligned(&locate::read_points(text)?, |p| {
+            self.locate(p)
+        }))
     }
     fn render(layers: &[(&str, &Self)], args: &RenderArgs) -> Result<Vec<u8>, CliError> {
         picture::render2(layers, args)
@@ -105,7 +107,7 @@ impl<N: Num> Set for YinSet3<N> {
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load3(path, opts, ctx)
     }
-    fn encode(&self, format: Format) -> Result<Vec<u8>, CliError> {
+    fn encode(&self, format: Format, _: NumberStyle) -> Result<Vec<u8>, CliError> {
         encode3(self, format)
     }
     fn size(&self) -> usize {
@@ -118,7 +120,9 @@ impl<N: Num> Set for YinSet3<N> {
         crate::demo::describe3(self)
     }
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
-        Ok(locate::classify(self.locate(&locate::read_points3(text)?)))
+        Ok(locate::aligned(&locate::read_points3(text)?, |p| {
+            self.locate(p)
+        }))
     }
     fn render(layers: &[(&str, &Self)], args: &RenderArgs) -> Result<Vec<u8>, CliError> {
         picture::render3(layers, args)

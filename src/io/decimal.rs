@@ -1,33 +1,73 @@
-//! Number text for the writers: exact decimals wherever the expansion terminates.
+//! Number text for the writers of WKT, GeoJSON and OBJ: one rule for all of them
+//! ([`NumberStyle`]).
 
 use crate::num::{Literal, Num};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-/// Significant digits of a non-terminating number written as a rounded decimal (more than
-/// `f64` holds).
-const SIGNIFICANT: i64 = 17;
+/// How the OGC writers (WKT, GeoJSON) spell coordinates: the same rule for both.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum NumberStyle {
+    /// The shortest decimal that reads back as the coordinate's nearest `f64` (what OGC readers
+    /// such as GEOS, shapely or PostGIS hold); the default.
+    #[default]
+    Decimal,
+    /// The coordinate exactly: a decimal where its expansion terminates, else the fraction
+    /// `p/q` — which WKT writes (a yinset extension other readers reject) and GeoJSON refuses,
+    /// since JSON numbers are decimals.
+    Exact,
+}
+
+/// The text of coordinate `n` in `style`, or why it cannot be written: an `f64` overflow in
+/// [`NumberStyle::Decimal`], a non-terminating value in [`NumberStyle::Exact`] when
+/// `fractions` is false.
+pub(crate) fn coordinate_text<N: Num>(
+    n: &N,
+    style: NumberStyle,
+    fractions: bool,
+) -> Result<String, String> {
+    match style {
+        NumberStyle::Decimal => {
+            let f = n.to_f64();
+            if f.is_finite() {
+                Ok(f.to_string())
+            } else {
+                Err(format!(
+                    "the coordinate {n} is beyond the range of f64 decimals: write it exactly"
+                ))
+            }
+        }
+        NumberStyle::Exact => decimal_text(n, || {
+            if fractions {
+                Ok(n.to_string())
+            } else {
+                Err(format!(
+                    "the coordinate {n} has no finite decimal expansion, which JSON numbers \
+                     need: write decimals (the default) or another format"
+                ))
+            }
+        }),
+    }
+}
 
 /// `n` exactly: a decimal when its expansion terminates, its `Display` (`p/q`) otherwise.
 pub(crate) fn exact_text<N: Num>(n: &N) -> String {
-    decimal_text(n, |_, _| n.to_string())
+    let Ok(text) = decimal_text(n, || Ok::<_, std::convert::Infallible>(n.to_string()));
+    text
 }
 
-/// `n` as a JSON number: exact when its decimal expansion terminates, otherwise rounded (half
-/// away from zero) to [`SIGNIFICANT`] significant digits.
-pub(crate) fn json_text<N: Num>(n: &N) -> String {
-    decimal_text(n, rounded)
-}
-
-/// `n` as an exact decimal, or `inexact(p, q)` of its reduced fraction when none exists.
-fn decimal_text<N: Num>(n: &N, inexact: impl FnOnce(&BigInt, &BigInt) -> String) -> String {
+/// `n` as an exact decimal, or `inexact()` when its expansion does not terminate.
+fn decimal_text<N: Num, E>(
+    n: &N,
+    inexact: impl FnOnce() -> Result<String, E>,
+) -> Result<String, E> {
     let Some((p, q)) = fraction(n) else {
-        return n.to_string();
+        return Ok(n.to_string());
     };
     match terminating_scale(&q) {
-        Some(k) => scaled(&(p * ten_pow(k) / q), k),
-        None => inexact(&p, &q),
+        Some(k) => Ok(scaled(&(p * ten_pow(k) / q), k)),
+        None => inexact(),
     }
 }
 
@@ -63,14 +103,6 @@ fn terminating_scale(q: &BigInt) -> Option<u64> {
     rest.is_one().then_some(twos.max(fives))
 }
 
-/// `p/q` rounded half away from zero to [`SIGNIFICANT`] significant digits.
-fn rounded(p: &BigInt, q: &BigInt) -> String {
-    let magnitude = p.abs().to_string().len() as i64 - q.to_string().len() as i64;
-    let k = (SIGNIFICANT - magnitude).max(0).unsigned_abs();
-    let m = (p.abs() * ten_pow(k) * 2u8 + q) / (q * 2u8);
-    scaled(&if p.is_negative() { -m } else { m }, k)
-}
-
 /// The decimal text of `m / 10^k`, without trailing zeros after the point.
 fn scaled(m: &BigInt, k: u64) -> String {
     let sign = if m.is_negative() { "-" } else { "" };
@@ -100,28 +132,62 @@ mod tests {
         Rational::parse(s).unwrap()
     }
 
+    /// Both styles, fractions allowed and not.
+    fn texts(n: &Rational) -> [Result<String, String>; 3] {
+        [
+            coordinate_text(n, NumberStyle::Decimal, false),
+            coordinate_text(n, NumberStyle::Exact, true),
+            coordinate_text(n, NumberStyle::Exact, false),
+        ]
+    }
+
     #[test]
     fn terminating_rationals_are_exact_decimals() {
         for (s, want) in [("1/8", "0.125"), ("-5/2", "-2.5"), ("7", "7"), ("0", "0")] {
             assert_eq!(exact_text(&q(s)), want);
-            assert_eq!(json_text(&q(s)), want);
+            assert_eq!(texts(&q(s)), [0, 1, 2].map(|_| Ok(want.to_string())));
         }
         assert_eq!(exact_text(&q("-1/1024")), "-0.0009765625");
         assert_eq!(exact_text(&q("1e30")), format!("1{}", "0".repeat(30)));
     }
 
     #[test]
-    fn other_rationals_stay_fractions_or_round() {
+    fn decimal_style_is_the_shortest_round_trip_of_the_nearest_f64() {
+        // 1/3 and 0.1 + 10^-30 are not f64 values: their nearest f64s print as below, and
+        // those texts parse back to the same f64s (Rust's `str::parse` is correctly rounded).
+        for (s, want) in [
+            ("1/3", "0.3333333333333333"),
+            ("-2/3", "-0.6666666666666666"),
+            ("100000000000000000000000000000000000000000000000000000000000000001/10000000000000000000000000000000000000000000000000000000000000000", "10"),
+            ("1/10", "0.1"),
+        ] {
+            let [decimal, ..] = texts(&q(s));
+            assert_eq!(decimal.as_deref(), Ok(want), "{s}");
+            assert_eq!(want.parse::<f64>().unwrap(), q(s).to_f64());
+        }
+        let huge = q("1e400");
+        assert!(texts(&huge)[0]
+            .as_ref()
+            .unwrap_err()
+            .contains("beyond the range of f64"));
+        assert_eq!(texts(&huge)[1].as_ref().unwrap().len(), 401);
+    }
+
+    #[test]
+    fn exact_style_writes_fractions_only_where_allowed() {
         assert_eq!(exact_text(&q("-1/3")), "-1/3");
-        assert_eq!(json_text(&q("1/3")), "0.33333333333333333");
-        assert_eq!(json_text(&q("-2/3")), "-0.66666666666666667");
-        assert_eq!(json_text(&q("100/3")), "33.333333333333333");
-        assert_eq!(json_text(&q("1e20/3")), "33333333333333333333");
+        let [_, with, without] = texts(&q("-1/3"));
+        assert_eq!(with.as_deref(), Ok("-1/3"));
+        assert!(without.unwrap_err().contains("no finite decimal expansion"));
     }
 
     #[test]
     fn floats_print_their_shortest_decimal() {
-        assert_eq!(json_text(&Float::parse("0.1").unwrap()), "0.1");
+        let f = Float::parse("0.1").unwrap();
+        assert_eq!(
+            coordinate_text(&f, NumberStyle::Decimal, false).unwrap(),
+            "0.1"
+        );
         assert_eq!(exact_text(&Float::parse("-2.5e-3").unwrap()), "-0.0025");
     }
 }

@@ -13,6 +13,11 @@ pub struct ParseError {
     pub message: String,
 }
 
+/// A set that a writer cannot spell in the asked format and number style, and why.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct WriteError(pub String);
+
 impl ParseError {
     /// The error `message` at byte `offset` of `text`.
     pub(crate) fn at(text: &str, offset: usize, message: impl Into<String>) -> ParseError {

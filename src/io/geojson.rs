@@ -10,12 +10,12 @@
 //! located at the end of the innermost object that holds them, and name the offending member
 //! (e.g. `coordinates[0][3]`).
 //!
-//! Written: a `MultiPolygon` geometry object, each ring closed by repeating its first point.
-//! A number whose decimal expansion terminates is written exactly; any other (such as 1/3) is
-//! rounded half away from zero to 17 significant digits, so only those lose exactness.
+//! Written: a `MultiPolygon` geometry object, each ring closed by repeating its first point,
+//! coordinates as [`NumberStyle`] says: by default the shortest decimal of the nearest `f64`;
+//! exactly on request, which fails for a number without a finite decimal expansion (1/3),
+//! since JSON has no fractions.
 
-use super::decimal::json_text;
-use super::{closed, open_ring, ParseError, Polygon};
+use super::{open_ring, polygon_texts, without_bom, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use serde::de::value::MapAccessDeserializer;
@@ -39,7 +39,20 @@ pub struct Feature<N> {
 /// Read the features of a GeoJSON text: a `FeatureCollection`'s in order, a `Feature`, or a
 /// bare geometry as one feature without properties.
 pub fn read_features<N: Num>(text: &str) -> Result<Vec<Feature<N>>, ParseError> {
-    let object: Object<N> = serde_json::from_str(text).map_err(|e| json_error(text, &e))?;
+    read_with::<N, false>(text)
+}
+
+/// Read the features of a GeoJSON text as [`read_features`] does, but with the geometries that
+/// have no area (`Point`, `LineString`, …) read as empty instead of rejected.
+pub fn read_polygonal_features<N: Num>(text: &str) -> Result<Vec<Feature<N>>, ParseError> {
+    read_with::<N, true>(text)
+}
+
+/// Read the features of a GeoJSON text, skipping the geometries without area if `SKIP_LOWER`.
+fn read_with<N: Num, const SKIP_LOWER: bool>(text: &str) -> Result<Vec<Feature<N>>, ParseError> {
+    let text = without_bom(text);
+    let object: Object<N, SKIP_LOWER> =
+        serde_json::from_str(text).map_err(|e| json_error(text, &e))?;
     Ok(match object {
         Object::Geometry(polygons) => vec![Feature {
             properties: Map::new(),
@@ -52,28 +65,32 @@ pub fn read_features<N: Num>(text: &str) -> Result<Vec<Feature<N>>, ParseError> 
 
 /// Read all polygons of a GeoJSON text, features flattened in order.
 pub fn read_polygons<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, ParseError> {
-    Ok(read_features(text)?
-        .into_iter()
-        .flat_map(|f| f.polygons)
-        .collect())
+    Ok(flatten(read_features(text)?))
 }
 
-/// The GeoJSON `MultiPolygon` geometry object of `polys` (numbers as described in the module
-/// documentation: exact when the decimal expansion terminates).
-pub fn write_multipolygon<N: Num>(polys: &[Polygon<N>]) -> String {
-    let ring = |ring: &[Point<N>]| {
-        let points: Vec<String> = closed(ring)
-            .map(|p| format!("[{},{}]", json_text(&p.x), json_text(&p.y)))
-            .collect();
-        format!("[{}]", points.join(","))
-    };
-    let polygon =
-        |p: &Polygon<N>| format!("[{}]", p.rings().map(ring).collect::<Vec<_>>().join(","));
-    let parts: Vec<String> = polys.iter().map(polygon).collect();
-    format!(
+/// Read all polygons of a GeoJSON text, features flattened in order, skipping the geometries
+/// that have no area (such as the `Point`s of a `FeatureCollection`).
+pub fn read_polygonal_parts<N: Num>(text: &str) -> Result<Vec<Polygon<N>>, ParseError> {
+    Ok(flatten(read_polygonal_features(text)?))
+}
+
+/// The polygons of `features`, in order.
+fn flatten<N>(features: Vec<Feature<N>>) -> Vec<Polygon<N>> {
+    features.into_iter().flat_map(|f| f.polygons).collect()
+}
+
+/// The GeoJSON `MultiPolygon` geometry object of `polys`, coordinates in `style` (see the
+/// module documentation).
+pub fn write_multipolygon<N: Num>(
+    polys: &[Polygon<N>],
+    style: NumberStyle,
+) -> Result<String, WriteError> {
+    let point = |x, y| format!("[{x},{y}]");
+    let parts = polygon_texts(polys, style, false, point, ["[", "]"], ",")?;
+    Ok(format!(
         r#"{{"type":"MultiPolygon","coordinates":[{}]}}"#,
         parts.join(",")
-    )
+    ))
 }
 
 /// The [`ParseError`] of a `serde_json` error (whose columns count bytes) in `text`.
@@ -95,8 +112,9 @@ fn json_error(text: &str, e: &serde_json::Error) -> ParseError {
     ParseError::at(text, line_start + e.column().saturating_sub(1), message)
 }
 
-/// A GeoJSON object, checked as soon as its members are read.
-enum Object<N> {
+/// A GeoJSON object, checked as soon as its members are read; geometries without area are
+/// read as empty if `SKIP_LOWER`, else rejected.
+enum Object<N, const SKIP_LOWER: bool> {
     /// A polygonal geometry.
     Geometry(Vec<Polygon<N>>),
     /// A `Feature`.
@@ -105,33 +123,33 @@ enum Object<N> {
     Collection(Vec<Feature<N>>),
 }
 
-impl<'de, N: Num> Deserialize<'de> for Object<N> {
+impl<'de, N: Num, const SKIP_LOWER: bool> Deserialize<'de> for Object<N, SKIP_LOWER> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         deserializer.deserialize_map(ObjectVisitor(PhantomData))
     }
 }
 
 /// The members of a GeoJSON object that this reader uses.
-struct Members<N> {
+struct Members<N, const SKIP_LOWER: bool> {
     kind: Option<String>,
     coordinates: Option<Coords<N>>,
-    geometry: Option<Option<Object<N>>>,
-    geometries: Option<Vec<Object<N>>>,
-    features: Option<Vec<Object<N>>>,
+    geometry: Option<Option<Object<N, SKIP_LOWER>>>,
+    geometries: Option<Vec<Object<N, SKIP_LOWER>>>,
+    features: Option<Vec<Object<N, SKIP_LOWER>>>,
     properties: Option<Map<String, Value>>,
 }
 
 /// Reads a JSON object as an [`Object`].
-struct ObjectVisitor<N>(PhantomData<N>);
+struct ObjectVisitor<N, const SKIP_LOWER: bool>(PhantomData<N>);
 
-impl<'de, N: Num> Visitor<'de> for ObjectVisitor<N> {
-    type Value = Object<N>;
+impl<'de, N: Num, const SKIP_LOWER: bool> Visitor<'de> for ObjectVisitor<N, SKIP_LOWER> {
+    type Value = Object<N, SKIP_LOWER>;
 
     fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str("a GeoJSON object")
     }
 
-    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Object<N>, A::Error> {
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Object<N, SKIP_LOWER>, A::Error> {
         let mut m = Members {
             kind: None,
             coordinates: None,
@@ -157,9 +175,9 @@ impl<'de, N: Num> Visitor<'de> for ObjectVisitor<N> {
     }
 }
 
-impl<N: Num> Members<N> {
+impl<N: Num, const SKIP_LOWER: bool> Members<N, SKIP_LOWER> {
     /// The object these members make, or what is wrong with them.
-    fn build(self) -> Result<Object<N>, String> {
+    fn build(self) -> Result<Object<N, SKIP_LOWER>, String> {
         let kind = self.kind.ok_or("a GeoJSON object needs a `type` member")?;
         let missing = |member: &str| format!("a {kind} needs a `{member}` member");
         match kind.as_str() {
@@ -202,6 +220,9 @@ impl<N: Num> Members<N> {
                     });
                 Ok(Object::Collection(features.collect::<Result<_, _>>()?))
             }
+            "Point" | "MultiPoint" | "LineString" | "MultiLineString" if SKIP_LOWER => {
+                Ok(Object::Geometry(Vec::new()))
+            }
             "Point" | "MultiPoint" | "LineString" | "MultiLineString" => {
                 Err(format!("`{kind}` is not polygonal: {POLYGONAL_ONLY}"))
             }
@@ -211,7 +232,10 @@ impl<N: Num> Members<N> {
 }
 
 /// The polygons of the geometry member at `path` (none for `null`).
-fn geometry<N>(object: Option<Object<N>>, path: &str) -> Result<Vec<Polygon<N>>, String> {
+fn geometry<N, const SKIP_LOWER: bool>(
+    object: Option<Object<N, SKIP_LOWER>>,
+    path: &str,
+) -> Result<Vec<Polygon<N>>, String> {
     match object {
         None => Ok(Vec::new()),
         Some(Object::Geometry(polygons)) => Ok(polygons),
@@ -413,25 +437,24 @@ mod tests {
                 interiors: vec![],
             },
         ];
-        let text = write_multipolygon(&polys);
+        let text = write_multipolygon(&polys, NumberStyle::Exact).unwrap();
         assert!(text.starts_with(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[0.125,-0.1],[0.00000000000000000001,12345678901234567890123],[0,0]],"#), "{text}");
         assert_eq!(read(&text).unwrap(), polys);
         let third = vec![Polygon {
             exterior: vec![Point::new(q("1/3"), q("-2/3"))],
             interiors: vec![],
         }];
-        let text = write_multipolygon(&third);
+        let e = write_multipolygon(&third, NumberStyle::Exact).unwrap_err();
+        assert!(e.to_string().contains("1/3 has no finite decimal"), "{e}");
         assert_eq!(
-            text,
-            r#"{"type":"MultiPolygon","coordinates":[[[[0.33333333333333333,-0.66666666666666667],[0.33333333333333333,-0.66666666666666667]]]]}"#
+            write_multipolygon(&third, NumberStyle::Decimal).unwrap(),
+            r#"{"type":"MultiPolygon","coordinates":[[[[0.3333333333333333,-0.6666666666666666],[0.3333333333333333,-0.6666666666666666]]]]}"#
         );
-        assert_eq!(
-            write_multipolygon::<Rational>(&[]),
-            r#"{"type":"MultiPolygon","coordinates":[]}"#
-        );
-        assert!(read(&write_multipolygon::<Rational>(&[]))
-            .unwrap()
-            .is_empty());
+        for style in [NumberStyle::Exact, NumberStyle::Decimal] {
+            let empty = write_multipolygon::<Rational>(&[], style).unwrap();
+            assert_eq!(empty, r#"{"type":"MultiPolygon","coordinates":[]}"#);
+            assert!(read(&empty).unwrap().is_empty());
+        }
     }
 
     #[test]
@@ -557,6 +580,43 @@ mod tests {
     }
 
     #[test]
+    fn polygonal_parts_skip_points_and_lines() {
+        let text = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {"name": "capital"}, "geometry": {"type": "Point", "coordinates": [1, 2]}},
+            {"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1]]]}},
+            {"type": "Feature", "properties": null, "geometry": {"type": "GeometryCollection", "geometries": [
+                {"type": "LineString", "coordinates": [[0, 0], [1, 1]]},
+                {"type": "MultiPoint", "coordinates": [[0, 0], [1, 1]]},
+                {"type": "MultiLineString", "coordinates": [[[0, 0], [1, 1]]]},
+                {"type": "MultiPolygon", "coordinates": [[[[2,0],[3,0],[3,1]]]]}]}}
+        ]}"#;
+        let e = read(text).unwrap_err();
+        assert!(e.message.contains("`Point` is not polygonal"), "{e}");
+        let polys = read_polygonal_parts::<Rational>(text).unwrap();
+        assert_eq!(polys.len(), 2);
+        assert_eq!(polys[1].exterior[0], Point::int(2, 0));
+        let features = read_polygonal_features::<Rational>(text).unwrap();
+        assert_eq!(features[0].properties["name"], "capital");
+        assert!(features[0].polygons.is_empty());
+        // Still checked: the JSON, the types, the positions.
+        for bad in [
+            r#"{"type": "Point", "coordinates": [1, 2, 3]}"#,
+            r#"{"type": "Pointy", "coordinates": [1, 2]}"#,
+            r#"{"type": "Point", "coordinates": [1, 2]"#,
+        ] {
+            assert!(read_polygonal_parts::<Rational>(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let text = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1]]]}"#;
+        assert_eq!(read(&format!("\u{feff}{text}")), read(text));
+        let e = read("\u{feff}[1]").unwrap_err();
+        assert_eq!((e.line, e.column), (1, 1));
+    }
+
+    #[test]
     fn adversarial_inputs_never_panic() {
         for text in [
             "",
@@ -590,7 +650,10 @@ mod tests {
 
     #[test]
     fn martinez_fixtures_parse() {
-        let files = testdata::files("martinez", ".geojson");
+        if !testdata::available() {
+            return;
+        }
+        let files = testdata::files("2d/martinez", ".geojson");
         assert_eq!(files.len(), 25);
         let (mut features, mut polygons) = (0, 0);
         for (name, text) in &files {
@@ -609,7 +672,10 @@ mod tests {
 
     #[test]
     fn gis_fixtures_parse() {
-        let counts: Vec<(String, usize, usize, usize)> = testdata::files("gis", ".geojson")
+        if !testdata::available() {
+            return;
+        }
+        let counts: Vec<(String, usize, usize, usize)> = testdata::files("2d/gis", ".geojson")
             .into_iter()
             .map(|(name, text)| {
                 let features =

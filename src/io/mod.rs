@@ -12,12 +12,16 @@
 
 mod decimal;
 mod error;
+#[cfg(feature = "geo-types")]
+pub mod geo_interop;
 pub mod geojson;
 pub mod html3;
+mod limits;
 pub mod mesh;
 pub mod obj;
 pub mod off;
 pub mod ply;
+pub mod png;
 pub mod png3;
 pub mod scene3;
 pub mod stl;
@@ -27,9 +31,14 @@ mod testdata;
 pub mod wkt;
 pub mod yin2_text;
 
-pub use error::ParseError;
+pub use decimal::NumberStyle;
+pub use error::{ParseError, WriteError};
+pub use limits::check_digit_runs;
 
 use crate::kernel::Point;
+use crate::num::Num;
+use crate::yin2::YinSet2;
+use std::cmp::Ordering;
 
 /// A polygon as the GIS formats give it: an exterior ring and interior rings (holes), each open
 /// (without the closing repetition of its first point).
@@ -48,12 +57,90 @@ impl<N> Polygon<N> {
     }
 }
 
+impl<N: Num> Polygon<N> {
+    /// The rings oriented as boundary curves of a Yin set (interior on the left, seed 000): the
+    /// exterior counterclockwise, the holes clockwise; each with its index among the holes
+    /// (`None` for the exterior) and whether it was reversed to orient it.
+    pub fn oriented_rings(self) -> impl Iterator<Item = (Option<usize>, Vec<Point<N>>, bool)> {
+        let holes = self
+            .interiors
+            .into_iter()
+            .enumerate()
+            .map(|(k, r)| (Some(k), r));
+        std::iter::once((None, self.exterior))
+            .chain(holes)
+            .map(|(ring, mut points)| {
+                let want = if ring.is_none() {
+                    Ordering::Greater
+                } else {
+                    Ordering::Less
+                };
+                let reversed = twice_signed_area(&points).sign() == want.reverse();
+                if reversed {
+                    points.reverse();
+                }
+                (ring, points, reversed)
+            })
+    }
+}
+
+/// The polygons of a bounded Yin set: one per atom (seed 000, Def. of atoms), its positive
+/// curve the exterior and its negative curves the holes; `None` if the set is unbounded.
+pub fn polygons_of<N: Num>(set: &YinSet2<N>) -> Option<Vec<Polygon<N>>> {
+    if !set.is_bounded() {
+        return None;
+    }
+    let curve = |k: usize| set.curves()[k].vertices().to_vec();
+    let polygon = |atom: &crate::yin2::Atom| {
+        Some(Polygon {
+            exterior: curve(atom.outer?),
+            interiors: atom.holes.iter().map(|&h| curve(h)).collect(),
+        })
+    };
+    Some(set.atoms().iter().filter_map(polygon).collect())
+}
+
+/// Twice the signed area of a vertex cycle (positive iff counterclockwise).
+pub(crate) fn twice_signed_area<N: Num>(ring: &[Point<N>]) -> N {
+    let next = ring.iter().cycle().skip(1);
+    ring.iter().zip(next).fold(N::zero(), |acc, (p, q)| {
+        acc + p.x.clone() * q.y.clone() - q.x.clone() * p.y.clone()
+    })
+}
+
+/// `text` without a leading UTF-8 byte-order mark (which editors on Windows write), which
+/// every reader ignores.
+pub(crate) fn without_bom(text: &str) -> &str {
+    text.strip_prefix('\u{feff}').unwrap_or(text)
+}
+
 /// `ring` without the closing repetition of its first point, if it has one.
 fn open_ring<N: PartialEq>(mut ring: Vec<Point<N>>) -> Vec<Point<N>> {
     if ring.len() > 1 && ring.first() == ring.last() {
         ring.pop();
     }
     ring
+}
+
+/// Each of `polys` as the list of its rings, each ring the list of its points closed (its first
+/// point repeated at the end, as OGC requires), a point `point(x, y)` of its coordinates' texts
+/// in `style` (`p/q` only if `fractions`), lists between `brackets` and separated by `sep`.
+fn polygon_texts<N: Num>(
+    polys: &[Polygon<N>],
+    style: NumberStyle,
+    fractions: bool,
+    point: impl Fn(String, String) -> String,
+    [open, close]: [&str; 2],
+    sep: &str,
+) -> Result<Vec<String>, WriteError> {
+    let text = |n: &N| decimal::coordinate_text(n, style, fractions).map_err(WriteError);
+    let list = |items: Vec<String>| format!("{open}{}{close}", items.join(sep));
+    let ring = |ring: &[Point<N>]| {
+        let points = closed(ring).map(|p| Ok(point(text(&p.x)?, text(&p.y)?)));
+        Ok(list(points.collect::<Result<_, WriteError>>()?))
+    };
+    let polygon = |p: &Polygon<N>| Ok(list(p.rings().map(ring).collect::<Result<_, _>>()?));
+    polys.iter().map(polygon).collect()
 }
 
 /// The points of `ring` followed by its first point again (the closed form of the formats).

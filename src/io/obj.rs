@@ -239,8 +239,8 @@ pub fn write_obj<N: Num>(vertices: &[Point3<N>], groups: &[(String, Vec<[usize; 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::io::testdata;
     use crate::num::{Float, Rational};
-    use std::path::PathBuf;
 
     fn q(s: &str) -> Rational {
         Rational::parse(s).unwrap()
@@ -507,39 +507,16 @@ mod tests {
         assert_eq!((back.vertices, back.faces), (mesh.vertices, mesh.faces));
     }
 
-    /// The directory `../shared/data/3d` beside the crate; panics naming it if it is missing.
-    fn data_dir() -> PathBuf {
-        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/data/3d");
-        assert!(
-            dir.is_dir(),
-            "test data missing: {} (expected ../shared/data beside the repository)",
-            dir.display()
-        );
-        dir
-    }
-
-    /// Name and text of every `.obj` file of [`data_dir`], sorted by name.
+    /// Name and text of every `.obj` file of the shared data's `3d` directory, sorted by name.
     fn data_files() -> Vec<(String, String)> {
-        let dir = data_dir();
-        let mut names: Vec<String> = std::fs::read_dir(&dir)
-            .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))
-            .filter_map(|entry| entry.ok()?.file_name().into_string().ok())
-            .filter(|name| name.ends_with(".obj"))
-            .collect();
-        names.sort();
-        names
-            .into_iter()
-            .map(|name| {
-                let path = dir.join(&name);
-                let text = std::fs::read_to_string(&path)
-                    .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
-                (name, text)
-            })
-            .collect()
+        testdata::files("3d", ".obj")
     }
 
     #[test]
     fn shared_3d_meshes_have_their_listed_counts() {
+        if !testdata::available() {
+            return;
+        }
         // Vertex and face counts as ../shared/data/README.md lists them.
         let expected = [
             ("Rabbit_Lowpoly_2.obj", 690, 1376),
@@ -560,7 +537,7 @@ mod tests {
             let (_, text) = files
                 .iter()
                 .find(|(n, _)| n == name)
-                .unwrap_or_else(|| panic!("{name} missing from {}", data_dir().display()));
+                .unwrap_or_else(|| panic!("{name} missing from the shared 3d data"));
             let mesh = read(text).unwrap_or_else(|e| panic!("{name}: {e}"));
             assert_eq!(
                 (mesh.vertices.len(), mesh.faces.len()),
@@ -580,12 +557,15 @@ mod tests {
 
     #[test]
     fn shared_rabbit_and_heart_face_forms() {
+        if !testdata::available() {
+            return;
+        }
         let files = data_files();
         let text = |name: &str| {
             &files
                 .iter()
                 .find(|(n, _)| n == name)
-                .unwrap_or_else(|| panic!("{name} missing from {}", data_dir().display()))
+                .unwrap_or_else(|| panic!("{name} missing from the shared 3d data"))
                 .1
         };
         // The rabbit's faces are `i//k` triangles (no n-gons in this file, despite the README's

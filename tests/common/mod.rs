@@ -8,28 +8,25 @@ use yinset::yin2::YinSet2;
 
 pub type Y = YinSet2<Rational>;
 
-/// A directory of the shared data under `../shared/data/2d`; panics naming the path if it is
-/// missing.
+#[path = "../../src/io/testdata.rs"]
+mod testdata;
+
+/// True if the shared data is there; if not, a notice and false (outside CI: skip the test),
+/// or a panic (with `CI` set).
+pub fn data_available() -> bool {
+    testdata::available()
+}
+
+/// A directory of the shared data under `2d` (see [`data_available`]); panics naming the path
+/// if it is missing.
 pub fn data_dir(name: &str) -> PathBuf {
-    shared_data("2d", name, |p: &PathBuf| p.is_dir())
+    testdata::dir(&format!("2d/{name}"))
 }
 
-/// A file of the shared data under `../shared/data/3d`; panics naming the path if it is missing.
+/// A file of the shared data under `3d`; panics naming the path if it is missing.
 pub fn data_file_3d(name: &str) -> PathBuf {
-    shared_data("3d", name, |p: &PathBuf| p.is_file())
-}
-
-/// `../shared/data/<dim>/<name>`, asserted to exist.
-fn shared_data(dim: &str, name: &str, exists: fn(&PathBuf) -> bool) -> PathBuf {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data")
-        .join(dim)
-        .join(name);
-    assert!(
-        exists(&path),
-        "test data missing: {} (expected ../shared/data beside the repository)",
-        path.display()
-    );
+    let path = testdata::root().join("3d").join(name);
+    assert!(path.is_file(), "test data missing: {}", path.display());
     path
 }
 
