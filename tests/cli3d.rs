@@ -327,10 +327,10 @@ fn usage_errors_of_3d_input() {
     );
     let t2 = file(&dir, "t2.txt", "0 0\n1 0\n0 1\n");
     fails(
-        &["render", s(&t2), "-o", "t.png"],
+        &["render", s(&t2), "-o", "t.html"],
         "",
         2,
-        &["2D sets are drawn as SVG"],
+        &["2D sets are drawn as SVG or PNG"],
     );
     fails(&["render", s(&t2), "--view", "0,0"], "", 2, &["--view"]);
     fails(&["info", s(&a), "--fill", "nonzero"], "", 2, &["--fill"]);
