@@ -68,12 +68,16 @@ pub const MINIMUM_SHARES: [f64; 12] = [
 /// and the shrunk counterexample has at most one step per shape.
 #[test]
 fn shrinking_yields_small_counterexamples() {
-    let mut runner = TestRunner::new(Config {
+    // A fixed seed: how far shrinking gets depends on the cases drawn, and the bound below is
+    // a property of this search, not of every search (a random seed made the test flaky).
+    let config = Config {
         cases: 256,
         max_shrink_iters: 8192,
         failure_persistence: None,
         ..Config::default()
-    });
+    };
+    let rng = proptest::test_runner::TestRng::deterministic_rng(config.rng_algorithm);
+    let mut runner = TestRunner::new_with_rng(config, rng);
     let result = runner.run(&strategies::pair(), |(a, b)| {
         let (x, y) = (a.build(), b.build());
         let m = x.meet(&y);
