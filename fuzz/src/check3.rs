@@ -8,7 +8,7 @@ use crate::input3::{
 };
 use num_bigint::BigInt;
 use std::fmt::Debug;
-use yinset::io::mesh::Mesh;
+use yinset::io::mesh;
 use yinset::io::obj::{read_obj, write_obj};
 use yinset::io::ParseError;
 use yinset::kernel::Point3;
@@ -443,7 +443,7 @@ pub fn obj(text: &str) {
 }
 
 /// Faces of at least 3 in-range vertices, one line number each, increasing.
-fn check_mesh_shape(m: &Mesh<Rational>, text: &str) {
+fn check_mesh_shape(m: &mesh::Mesh<Rational>, text: &str) {
     let lines = text.split('\n').count();
     let ok = m.faces.len() == m.face_lines.len()
         && m.faces
@@ -461,7 +461,7 @@ fn check_mesh_shape(m: &Mesh<Rational>, text: &str) {
 
 /// The triangles of a mesh read, written with `write_obj` and read again: the same triangles
 /// (as point triples), in order.
-fn round_trip(m: &Mesh<Rational>, text: &str) {
+fn round_trip(m: &mesh::Mesh<Rational>, text: &str) {
     let tris: Vec<[usize; 3]> = m
         .faces
         .iter()
