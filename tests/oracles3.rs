@@ -264,23 +264,9 @@ const VOLUME: [&str; 6] = [
     "volume in W: |(a⊕b)∧W| = |a∧W| + |b∧W| − 2|(a∧b)∧W|",
 ];
 
-/// The box [lo, hi]³.
+/// The box [lo, hi]³ (an operand, built by the library's own box helper).
 fn cube(lo: i64, hi: i64) -> Y3 {
-    let pts = (0..8)
-        .map(|i: i64| {
-            let c = |k: i64| if i >> k & 1 == 1 { hi } else { lo };
-            Point3::int(c(0), c(1), c(2))
-        })
-        .collect();
-    let faces = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    YinSet3::from_triangles(pts, faces.iter().map(|f| f.to_vec()).collect()).unwrap()
+    YinSet3::cuboid(&Point3::int(lo, lo, lo), &Point3::int(hi, hi, hi)).unwrap()
 }
 
 /// The exact volume identities on random pairs: plainly for bounded operands, and inside a
