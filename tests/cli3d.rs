@@ -289,17 +289,27 @@ fn invalid_meshes_are_explained_with_their_obj_lines() {
     );
 }
 
+/// 3D float mode (`--eps`): 0.1 is the nearest f64, so the meet's volume is 1.9 to within
+/// rounding, and the written result reads back as a valid exact set.
+#[test]
+fn float_mode_meets_meshes() {
+    let dir = scratch();
+    let (a, b) = two_boxes(&dir);
+    let meet = dir.path().join("m.obj");
+    ok(&["meet", s(&a), s(&b), "--eps", "1e-9", "-o", s(&meet)], "");
+    let m = info(&["info", s(&meet)], "");
+    let v = m["volume"]["float"].as_f64().unwrap();
+    assert!((v - 1.9).abs() < 1e-12, "volume {v}");
+    let f = info(&["info", s(&meet), "--eps", "1e-9"], "");
+    assert_eq!(f["b0"], 1);
+    let out = ok(&["validate", s(&meet)], "");
+    assert!(out.contains("is a Yin set"), "{out}");
+}
+
 #[test]
 fn usage_errors_of_3d_input() {
     let dir = scratch();
     let (a, b) = two_boxes(&dir);
-    fails(
-        &["meet", s(&a), s(&b), "--eps", "1e-9"],
-        "",
-        2,
-        &["--eps", "3D float mode is not available yet"],
-    );
-    fails(&["info", s(&a), "--eps", "0.5"], "", 2, &["3D float mode"]);
     let t = file(&dir, "t.txt", "0 0\n1 0\n0 1\n");
     fails(
         &["join", s(&t), s(&a)],

@@ -6,7 +6,7 @@ use crate::yin2::FillRule;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::{Path, PathBuf};
 
-/// Boolean algebra of 2D and 3D Yin sets, exact on rationals (2D float mode with --eps).
+/// Boolean algebra of 2D and 3D Yin sets, exact on rationals (float mode with --eps).
 #[derive(Parser, Debug)]
 #[command(
     name = "yinset",
@@ -65,7 +65,7 @@ pub struct ReadOpts {
     /// Read the rings as polygon soup and take the region they cover under this rule.
     #[arg(long, value_enum, value_name = "RULE")]
     pub fill: Option<FillArg>,
-    /// Float mode with tolerance E > 0 (default: exact rational arithmetic; 2D only).
+    /// Float mode with tolerance E > 0 (default: exact rational arithmetic).
     #[arg(long, value_name = "E", value_parser = positive_eps, allow_hyphen_values = true)]
     pub eps: Option<f64>,
     /// Drop the points and lines of WKT and GeoJSON inputs (such as a FeatureCollection's

@@ -45,6 +45,10 @@ pub enum CliError {
         source: Reason,
         note: String,
     },
+    /// An operation without a valid result in the chosen mode (3D float mode: the exact result
+    /// rounded to `f64` is not a valid boundary).
+    #[error("{0}")]
+    Operation(String),
     /// An unbounded set asked for in a format of bounded polygons.
     #[error("the set is unbounded (it contains everything far enough out), so it cannot be written as {format} polygons: write yin2 instead (--to yin2)")]
     Unbounded { format: &'static str },

@@ -59,7 +59,7 @@ pub fn main() -> ExitCode {
 }
 
 /// Run one subcommand: on 2D or 3D sets as its inputs' formats say; exact unless it was given
-/// `--eps` (2D only).
+/// `--eps`.
 pub fn run(command: &Command) -> Result<(), CliError> {
     let no_options = ReadOpts::default();
     let read = command.read_opts().unwrap_or(&no_options);
@@ -67,11 +67,7 @@ pub fn run(command: &Command) -> Result<(), CliError> {
         (Dimension::Two, None) => run_in::<YinSet2<Exact>>(command, ()),
         (Dimension::Two, Some(eps)) => run_in::<YinSet2<Float>>(command, Tolerance::new(eps)),
         (Dimension::Three, None) => run_in::<YinSet3<Exact>>(command, ()),
-        (Dimension::Three, Some(_)) => Err(CliError::Usage(
-            "--eps: 3D float mode is not available yet; 3D sets (OBJ, STL, OFF, PLY) are \
-             computed exactly, without --eps"
-                .to_string(),
-        )),
+        (Dimension::Three, Some(eps)) => run_in::<YinSet3<Float>>(command, Tolerance::new(eps)),
     }
 }
 

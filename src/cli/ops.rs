@@ -30,16 +30,16 @@ pub enum Op {
 
 impl Op {
     /// The result on `first` and the `rest` (binary operations fold left over the rest).
-    pub fn apply<S: Set>(self, first: &S, rest: &[S]) -> S {
-        let step: fn(&S, &S) -> S = match self {
+    pub fn apply<S: Set>(self, first: &S, rest: &[S]) -> Result<S, CliError> {
+        let step: fn(&S, &S) -> Result<S, CliError> = match self {
             Op::Meet => S::meet,
             Op::Join => S::join,
             Op::Difference => S::difference,
             Op::Xor => S::symmetric_difference,
-            Op::Complement => return S::complement(first),
-            Op::Convert => return first.clone(),
+            Op::Complement => return Ok(S::complement(first)),
+            Op::Convert => return Ok(first.clone()),
         };
-        rest.iter().fold(first.clone(), |acc, s| step(&acc, s))
+        rest.iter().try_fold(first.clone(), |acc, s| step(&acc, s))
     }
 }
 
@@ -67,7 +67,7 @@ pub fn operate<S: Set>(
             format!("{op:?}").to_lowercase()
         )
     };
-    let result = progress::while_working(message, vertices, || op.apply(first, rest));
+    let result = progress::while_working(message, vertices, || op.apply(first, rest))?;
     let style = if write.exact {
         NumberStyle::Exact
     } else {
@@ -98,11 +98,11 @@ mod tests {
     fn each_op_is_the_kernel_operation() {
         let (a, b) = (square(0, 0, 2), square(1, 1, 2));
         let two = [b.clone()];
-        assert_eq!(Op::Meet.apply(&a, &two), &a & &b);
-        assert_eq!(Op::Join.apply(&a, &two), &a | &b);
-        assert_eq!(Op::Difference.apply(&a, &two), &a - &b);
-        assert_eq!(Op::Xor.apply(&a, &two), &a ^ &b);
-        assert_eq!(Op::Complement.apply(&a, &[]), !&a);
-        assert_eq!(Op::Convert.apply(&a, &[]), a);
+        assert_eq!(Op::Meet.apply(&a, &two).unwrap(), &a & &b);
+        assert_eq!(Op::Join.apply(&a, &two).unwrap(), &a | &b);
+        assert_eq!(Op::Difference.apply(&a, &two).unwrap(), &a - &b);
+        assert_eq!(Op::Xor.apply(&a, &two).unwrap(), &a ^ &b);
+        assert_eq!(Op::Complement.apply(&a, &[]).unwrap(), !&a);
+        assert_eq!(Op::Convert.apply(&a, &[]).unwrap(), a);
     }
 }

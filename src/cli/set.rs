@@ -11,7 +11,7 @@ use super::{info, locate, picture};
 use crate::io::{NumberStyle, ParseError};
 use crate::num::Num;
 use crate::yin2::YinSet2;
-use crate::yin3::YinSet3;
+use crate::yin3::{Yin3Error, YinSet3};
 use serde_json::Value;
 use std::path::Path;
 
@@ -26,14 +26,14 @@ pub trait Set: Clone {
     fn load(path: &Path, opts: &ReadOpts, ctx: Self::Ctx) -> Result<Self, CliError>;
     /// The file of the set in `format`, coordinates of the OGC formats in `style`.
     fn encode(&self, format: Format, style: NumberStyle) -> Result<Vec<u8>, CliError>;
-    /// A ∧ B.
-    fn meet(&self, other: &Self) -> Self;
+    /// A ∧ B (an error only where the kernel's `try_` operation gives one: 3D float mode).
+    fn meet(&self, other: &Self) -> Result<Self, CliError>;
     /// A ∨ B.
-    fn join(&self, other: &Self) -> Self;
+    fn join(&self, other: &Self) -> Result<Self, CliError>;
     /// A ∧ B′.
-    fn difference(&self, other: &Self) -> Self;
+    fn difference(&self, other: &Self) -> Result<Self, CliError>;
     /// (A ∧ B′) ∨ (A′ ∧ B).
-    fn symmetric_difference(&self, other: &Self) -> Self;
+    fn symmetric_difference(&self, other: &Self) -> Result<Self, CliError>;
     /// A′.
     fn complement(&self) -> Self;
     /// The number of boundary vertices (large inputs show progress).
@@ -48,31 +48,29 @@ pub trait Set: Clone {
     fn render(layers: &[(&str, &Self)], args: &RenderArgs) -> Result<Vec<u8>, CliError>;
 }
 
-/// The Boolean algebra of a `Set` impl: the kernel's operations of the same names.
+/// The Boolean algebra of a `Set` impl: the kernel's operations `$g` (each result lifted into
+/// a `Result` by `$lift`) as the operations `$f`, and its complement.
 macro_rules! algebra {
-    ($set:ident) => {
-        fn meet(&self, other: &Self) -> Self {
-            $set::meet(self, other)
-        }
-        fn join(&self, other: &Self) -> Self {
-            $set::join(self, other)
-        }
-        fn difference(&self, other: &Self) -> Self {
-            $set::difference(self, other)
-        }
-        fn symmetric_difference(&self, other: &Self) -> Self {
-            $set::symmetric_difference(self, other)
-        }
+    ($set:ident, $lift:expr, $($f:ident: $g:ident),*) => {
+        $(fn $f(&self, other: &Self) -> Result<Self, CliError> {
+            $lift($set::$g(self, other))
+        })*
         fn complement(&self) -> Self {
             $set::complement(self)
         }
     };
 }
 
+/// A 3D float-mode failure as the command's error.
+fn float3_failure<N: Num>(r: Result<YinSet3<N>, Yin3Error>) -> Result<YinSet3<N>, CliError> {
+    r.map_err(|e| CliError::Operation(e.to_string()))
+}
+
 impl<N: Num> Set for YinSet2<N> {
     type Ctx = N::Ctx;
     const DIMENSION: Dimension = Dimension::Two;
-    algebra!(YinSet2);
+    algebra!(YinSet2, Ok, meet: meet, join: join, difference: difference,
+        symmetric_difference: symmetric_difference);
 
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load(path, opts, ctx)
@@ -102,7 +100,8 @@ impl<N: Num> Set for YinSet2<N> {
 impl<N: Num> Set for YinSet3<N> {
     type Ctx = N::Ctx;
     const DIMENSION: Dimension = Dimension::Three;
-    algebra!(YinSet3);
+    algebra!(YinSet3, float3_failure, meet: try_meet, join: try_join,
+        difference: try_difference, symmetric_difference: try_symmetric_difference);
 
     fn load(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<Self, CliError> {
         load3(path, opts, ctx)

@@ -164,6 +164,21 @@ impl<N: Num> BBox3<N> {
     pub fn contains(&self, p: &Point3<N>) -> bool {
         (0..3).all(|k| self.min.coord(k) <= p.coord(k) && p.coord(k) <= self.max.coord(k))
     }
+
+    /// The larger side, as an `f64` (for float mode's default ε).
+    pub fn span(&self) -> f64 {
+        let side = |k: usize| self.max.coord(k).to_f64() / 2.0 - self.min.coord(k).to_f64() / 2.0;
+        (2.0 * side(0).max(side(1)).max(side(2))).min(f64::MAX)
+    }
+
+    /// The largest coordinate magnitude, as an `f64` (for float mode's representable ε).
+    pub fn extent(&self) -> f64 {
+        [&self.min, &self.max]
+            .iter()
+            .flat_map(|p| p.coords())
+            .map(|v| v.to_f64().abs())
+            .fold(0.0, f64::max)
+    }
 }
 
 fn coord_mut<N>(p: &mut Point3<N>, k: usize) -> &mut N {

@@ -54,6 +54,11 @@ impl Float {
 /// * **Location.** [`crate::yin2::YinSet2::locate`] reports a point as on the boundary when
 ///   its distance to the boundary is at most ε, whatever the direction of the nearest edge;
 ///   otherwise inside or outside exactly.
+/// * **3D.** [`crate::yin3::YinSet3`] in float mode computes every operation exactly on the
+///   operands' `f64` values and rounds the result's vertices to the nearest `f64`s (no grid):
+///   a valid rounded result or `Yin3Error::Unrepresentable`; ε decides `locate`'s boundary
+///   band (a point within ε of a face), the default and the representable ε as above (README,
+///   "3D float mode").
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Tolerance {
     eps: f64,
@@ -150,33 +155,102 @@ pub struct TooFine {
     pub representable: f64,
 }
 
-/// The sign of (b − a) × (c − a) for `f64` points, exactly: Shewchuk's adaptive determinant
-/// after an exact power-of-two scaling when every coordinate then lies where it neither
-/// overflows nor underflows, exact rationals otherwise.
+/// The exact sign of a determinant of the `f64` coordinates `all`: `robust_sign` (Shewchuk's
+/// adaptive arithmetic) on them, or on them scaled by an exact power of two, when every
+/// coordinate then has magnitude in `[2^lo, 2^hi]` or is 0 — where no product of the
+/// expansions overflows or underflows — and `rational` on their exact values otherwise.
+fn exact_sign_f64<const K: usize>(
+    all: [f64; K],
+    (lo, hi): (i32, i32),
+    robust_sign: impl Fn([f64; K]) -> Ordering,
+    rational: impl Fn([Rational; K]) -> Ordering,
+) -> Ordering {
+    let (lo, hi) = (ldexp(1.0, lo), ldexp(1.0, hi));
+    let safe = |v: &f64| *v == 0.0 || (lo..=hi).contains(&v.abs());
+    if all.iter().all(safe) {
+        return robust_sign(all);
+    }
+    let m = all.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let k = unit_scale(m);
+    let scaled = all.map(|v| ldexp(v, k));
+    if scaled.iter().all(safe) && scaled.iter().zip(&all).all(|(s, v)| ldexp(*s, -k) == *v) {
+        return robust_sign(scaled);
+    }
+    rational(all.map(|v| Rational::from_f64(v).unwrap_or_else(|_| Rational::zero())))
+}
+
+/// The sign of (b − a) × (c − a) for `f64` points, exactly ([`exact_sign_f64`]).
 fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
     // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
-    // product of Shewchuk's expansions stays a normal number, and none overflows.
-    const LO: f64 = f64::from_bits((1023 - 480) << 52);
-    const HI: f64 = f64::from_bits((1023 + 500) << 52);
-    let safe = |v: &f64| *v == 0.0 || (LO..=HI).contains(&v.abs());
-    let all = [a[0], a[1], b[0], b[1], c[0], c[1]];
+    // product of two stays representable, and none overflows.
     let robust_sign = |p: [f64; 6]| {
         let q = |x: f64, y: f64| robust::Coord { x, y };
         let det = robust::orient2d(q(p[0], p[1]), q(p[2], p[3]), q(p[4], p[5]));
         det.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
     };
-    if all.iter().all(safe) {
-        return robust_sign(all);
+    exact_sign_f64(
+        [a[0], a[1], b[0], b[1], c[0], c[1]],
+        (-480, 500),
+        robust_sign,
+        |r| super::exact_orient([&r[0], &r[1]], [&r[2], &r[3]], [&r[4], &r[5]]),
+    )
+}
+
+/// The sign of det[b − a, c − a, d − a] for `f64` points, exactly ([`exact_sign_f64`]), in
+/// the convention of [`Num::orient3d`].
+fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
+    // Coordinates of magnitude in [2^-300, 2^300] (or 0) are multiples of 2^-352: every
+    // product of three stays representable, and none overflows.
+    let robust_sign = |p: [f64; 12]| {
+        let q = |i: usize| robust::Coord3D {
+            x: p[i],
+            y: p[i + 1],
+            z: p[i + 2],
+        };
+        // Shewchuk's orient3d is positive when d lies below the plane abc (seen from above,
+        // a, b, c counterclockwise): the opposite of our convention.
+        let det = robust::orient3d(q(0), q(3), q(6), q(9));
+        0.0f64.partial_cmp(&det).unwrap_or(Ordering::Equal)
+    };
+    let all = [a, b, c, d]
+        .concat()
+        .try_into()
+        .expect("twelve coordinates");
+    exact_sign_f64(all, (-300, 300), robust_sign, |r| {
+        let p = |i: usize| [&r[i], &r[i + 1], &r[i + 2]];
+        super::exact_orient3d(p(0), p(3), p(6), p(9))
+    })
+}
+
+/// True if `d` is within distance `eps` of the plane through `a`, `b`, `c` (not collinear),
+/// on differences halved and scaled by a power of two so that nothing overflows.
+fn within_plane(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3], eps: f64) -> bool {
+    let half = |p: [f64; 3]| [0, 1, 2].map(|k| p[k] / 2.0 - a[k] / 2.0);
+    let (u, v, w) = (half(b), half(c), half(d));
+    let m = [u, v, w]
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    if m == 0.0 {
+        return true;
     }
-    let m = all.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let k = -(m.log2().floor() as i32);
-    let scaled = all.map(|v| ldexp(v, k));
-    if scaled.iter().all(safe) && scaled.iter().zip(&all).all(|(s, v)| ldexp(*s, -k) == *v) {
-        return robust_sign(scaled);
-    }
-    let r = |v: f64| Rational::from_f64(v).unwrap_or_else(|_| Rational::zero());
-    let (ra, rb, rc) = (a.map(r), b.map(r), c.map(r));
-    super::exact_orient([&ra[0], &ra[1]], [&rb[0], &rb[1]], [&rc[0], &rc[1]])
+    let k = unit_scale(m);
+    let s = |p: [f64; 3]| p.map(|x| ldexp(x, k));
+    let (u, v, w) = (s(u), s(v), s(w));
+    let n = [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let det = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+    // distance = |det| / |n| in scaled half units; ε in the same units is ε · 2^k / 2.
+    det.abs() <= len * ldexp(eps / 2.0, k)
+}
+
+/// The power of two 2^k that brings `m > 0` into [1, 2).
+fn unit_scale(m: f64) -> i32 {
+    -(m.log2().floor() as i32)
 }
 
 /// The half-differences b − a and c − a, scaled by the power of two 2^k that brings their
@@ -191,7 +265,7 @@ fn scaled_differences(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<([f64; 2]
     if m == 0.0 {
         return None;
     }
-    let k = -(m.log2().floor() as i32);
+    let k = unit_scale(m);
     Some((d.map(|v| ldexp(v, k)), e.map(|v| ldexp(v, k)), k))
 }
 
@@ -324,17 +398,16 @@ impl Num for Float {
         b: [&Self; 3],
         c: [&Self; 3],
         d: [&Self; 3],
-        _ctx: &Tolerance,
+        ctx: &Tolerance,
     ) -> Ordering {
-        let p = |q: [&Float; 3]| robust::Coord3D {
-            x: q[0].0,
-            y: q[1].0,
-            z: q[2].0,
-        };
-        // Shewchuk's orient3d is positive when d lies below the plane abc (seen from above, a,
-        // b, c counterclockwise): the opposite of our convention.
-        let det = robust::orient3d(p(a), p(b), p(c), p(d));
-        0.0f64.partial_cmp(&det).unwrap_or(Ordering::Equal)
+        let p = |q: [&Float; 3]| [q[0].0, q[1].0, q[2].0];
+        let (a, b, c, d) = (p(a), p(b), p(c), p(d));
+        let sign = exact_orient3d_f64(a, b, c, d);
+        if sign == Ordering::Equal || (ctx.eps > 0.0 && within_plane(a, b, c, d, ctx.eps)) {
+            Ordering::Equal
+        } else {
+            sign
+        }
     }
 
     fn grid(ctx: &Tolerance) -> Option<f64> {

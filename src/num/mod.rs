@@ -102,8 +102,8 @@ pub trait Num:
 
     /// Orientation of `d` relative to the plane through `a`, `b`, `c`: the sign of
     /// det[b − a, c − a, d − a], `Greater` on the side the normal (b − a) × (c − a) points to
-    /// (DESIGN-3D §2.1). Exact in every backend (float mode: Shewchuk's adaptive `orient3d`);
-    /// 3D float mode applies no tolerance yet.
+    /// (DESIGN-3D §2.1), `Equal` on the plane (in float mode: within ε of it; the sign
+    /// otherwise is exact, by Shewchuk's adaptive `orient3d`).
     fn orient3d(
         a: [&Self; 3],
         b: [&Self; 3],

@@ -1,6 +1,8 @@
 //! Why user data is not the boundary of a 3D Yin set (seed 003 Def. 7.1–7.8; DESIGN-3D §1,
 //! invariants I1–I4), naming the face or edge at fault.
 
+use crate::num::Float;
+
 /// A reason the faces given do not bound a 3D Yin set. Face and vertex indices are 0-based
 /// positions in the input as given.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -59,6 +61,16 @@ pub enum Yin3Error {
         winding: i64,
         expected: i64,
     },
+    /// Float mode: ε is too fine for the coordinates (as in 2D, `Tolerance`).
+    #[error("tolerance {requested} is too fine for coordinates of this magnitude: the smallest usable is {representable}")]
+    ToleranceTooFine {
+        requested: Float,
+        representable: Float,
+    },
+    /// Float mode: the result has no valid representation with `f64` vertices (the exact
+    /// result, rounded to the nearest `f64`s, is not a valid boundary).
+    #[error("the float result is not representable: the exact result rounded to f64 is not a valid boundary ({0}); use exact mode")]
+    Unrepresentable(String),
     /// `validate` found a stored set that breaks an invariant (an internal bug).
     #[error("internal invariant broken: {0}")]
     Internal(String),

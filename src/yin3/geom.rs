@@ -18,6 +18,16 @@ pub(crate) fn normal<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Poi
     b.sub(a).cross(&c.sub(a))
 }
 
+/// True if `a`, `b`, `c` lie on one line, decided exactly: the normal (b − a) × (c − a) is
+/// zero iff its three coordinates, the orientations of the three coordinate projections, are.
+pub(crate) fn collinear<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> bool {
+    let exact = N::exact_ctx();
+    [(1, 2), (2, 0), (0, 1)].iter().all(|&(i, j)| {
+        let pr = |p: &Point3<N>| Point::new(p.coord(i).clone(), p.coord(j).clone());
+        orient(&pr(a), &pr(b), &pr(c), &exact) == Ordering::Equal
+    })
+}
+
 /// det[a, b, c] = a · (b × c): six times the signed volume of the tetrahedron (0, a, b, c).
 pub(crate) fn det3<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> N {
     a.dot(&b.cross(c))

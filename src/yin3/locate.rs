@@ -1,7 +1,7 @@
 //! Point location by a symbolically perturbed ray (DESIGN-3D §2.11): deterministic and exact,
 //! with rays through edges and vertices decided by the perturbation q + (0, ε, ε²).
 
-use super::geom::in_triangle3;
+use super::geom::{f64_box, in_triangle3};
 use crate::kernel::{orient, orient3d, Point, Point3};
 use crate::num::Num;
 use std::cmp::Ordering;
@@ -17,14 +17,23 @@ pub(crate) fn winding<'a, N: Num>(
     tris.into_iter().map(|t| crossing(t, q, ctx)).sum()
 }
 
-/// True if `q` lies on one of the closed triangles.
+/// True if `q` lies on one of the closed triangles (float mode: within ε of one).
 pub(crate) fn on_triangles<'a, N: Num>(
     tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>,
     q: &Point3<N>,
     ctx: &N::Ctx,
 ) -> bool {
-    tris.into_iter()
-        .any(|t| in_box(t, q, [0, 1, 2]) && in_triangle3(t, q, ctx))
+    let eps = N::tolerance(ctx);
+    let near = |t: [&Point3<N>; 3]| {
+        if eps > 0.0 {
+            let box_ = f64_box(t);
+            let v = q.to_f64();
+            (0..3).all(|k| box_.lower()[k] - eps <= v[k] && v[k] <= box_.upper()[k] + eps)
+        } else {
+            in_box(t, q, [0, 1, 2])
+        }
+    };
+    tris.into_iter().any(|t| near(t) && in_triangle3(t, q, ctx))
 }
 
 /// True if `q`'s coordinates `axes` lie in the closed box of the triangle's.

@@ -4,8 +4,11 @@
 //! none if opposite), and paste the kept pieces into glued surfaces.
 
 use super::arrange::{arrange, Pairs, Soup};
+use super::error::Yin3Error;
+use super::float::float_meet;
 use super::geom::{f64_box, in_triangle3, plane_key};
 use super::locate::winding;
+use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
 use crate::kernel::Point3;
 use crate::num::Num;
@@ -29,12 +32,33 @@ enum Side {
 impl<N: Num> YinSet3<N> {
     /// The meet 𝒴 ∧ 𝒵 (seed 000 Def. 4.8 lifted to 3D by seed 004): the regularized
     /// intersection.
+    ///
+    /// # Panics
+    /// Only in float mode, when the result has no valid `f64` representation
+    /// ([`Yin3Error::Unrepresentable`]); [`YinSet3::try_meet`] returns that error instead.
     pub fn meet(&self, other: &YinSet3<N>) -> YinSet3<N> {
+        or_panic(self.try_meet(other), "meet")
+    }
+
+    /// The meet, or in float mode the error that it has no valid `f64` representation
+    /// (exact mode never fails). Float mode follows the contract of [`crate::num::Tolerance`]
+    /// in 3D ([`super::float`]).
+    pub fn try_meet(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
         let ctx = N::combine_ctx(self.ctx, other.ctx);
+        if N::EXACT {
+            self.meet_in(other, ctx)
+        } else {
+            float_meet(self, other, ctx)
+        }
+    }
+
+    /// The meet computed with the predicates of `ctx` (MRS-a..d in 3D); an error if the
+    /// arrangement or the kept pieces are inconsistent (never in exact mode).
+    pub(crate) fn meet_in(&self, other: &YinSet3<N>, ctx: N::Ctx) -> Result<YinSet3<N>, Yin3Error> {
         let (a, b) = match (self.brep(), other.brep()) {
-            _ if self.is_empty() || other.is_empty() => return YinSet3::empty(),
-            (None, _) => return other.clone(),
-            (_, None) => return self.clone(),
+            _ if self.is_empty() || other.is_empty() => return Ok(YinSet3::empty().with_ctx(ctx)),
+            (None, _) => return Ok(other.clone().with_ctx(ctx)),
+            (_, None) => return Ok(self.clone().with_ctx(ctx)),
             (Some(a), Some(b)) => (a, b),
         };
         if a.bounded
@@ -44,7 +68,7 @@ impl<N: Num> YinSet3<N> {
                 .zip(other.bbox())
                 .is_some_and(|(x, y)| x.meets(&y))
         {
-            return YinSet3::empty();
+            return Ok(YinSet3::empty().with_ctx(ctx));
         }
         let mut soup = Soup::new();
         for (operand, brep) in [a, b].into_iter().enumerate() {
@@ -52,9 +76,11 @@ impl<N: Num> YinSet3<N> {
                 soup.push(brep.corners(t), operand as u8);
             }
         }
-        let pieces = arrange(&mut soup, Pairs::Across, &ctx).unwrap_or_else(|e| {
-            panic!("the operands of a meet are valid Yin sets, yet their arrangement failed: {e:?}")
-        });
+        let pieces = arrange(&mut soup, Pairs::Across, &ctx).map_err(|e| {
+            Yin3Error::Internal(format!(
+                "the arrangement of a meet's operands failed: {e:?}"
+            ))
+        })?;
         let bounded = [a.bounded, b.bounded];
         let sides = classify(&soup, &pieces, bounded, &ctx);
         let kept: Vec<[usize; 3]> = pieces
@@ -69,11 +95,14 @@ impl<N: Num> YinSet3<N> {
             .map(|((t, _), _)| *t)
             .collect();
         if kept.is_empty() {
-            return YinSet3::empty();
+            return Ok(YinSet3::empty().with_ctx(ctx));
         }
-        let brep = Brep::assemble(soup.points, kept, &ctx)
-            .unwrap_or_else(|e| panic!("the kept pieces of a meet do not bound a Yin set: {e}"));
-        YinSet3::from_brep(brep, ctx)
+        let brep = Brep::assemble(soup.points, kept).map_err(|e| {
+            Yin3Error::Internal(format!(
+                "the kept pieces of a meet do not bound a Yin set: {e}"
+            ))
+        })?;
+        Ok(YinSet3::from_brep(brep, ctx))
     }
 }
 

@@ -7,6 +7,7 @@ mod betti;
 mod canonical;
 mod error;
 mod fins;
+mod float;
 mod geom;
 mod glue;
 mod hasse;

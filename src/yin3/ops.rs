@@ -1,6 +1,7 @@
 //! Complement (seed 000 Def. 4.4 in 3D), join by De Morgan (Def. 4.10), difference, symmetric
 //! difference, and the operators `!`, `&`, `|`, `-`, `^` (DESIGN-3D §2.9–2.10).
 
+use super::error::Yin3Error;
 use super::set::{Brep, Repr3, YinSet3};
 use crate::num::Num;
 use std::ops::{BitAnd, BitOr, BitXor, Not, Sub};
@@ -10,36 +11,67 @@ impl<N: Num> YinSet3<N> {
     /// glued surfaces regrouped.
     pub fn complement(&self) -> YinSet3<N> {
         match &self.repr {
-            Repr3::Empty => YinSet3::full(),
-            Repr3::Full => YinSet3::empty(),
+            Repr3::Empty => YinSet3::full().with_ctx(self.ctx),
+            Repr3::Full => YinSet3::empty().with_ctx(self.ctx),
             Repr3::Brep(b) => {
                 let tris = b.tris.iter().map(|&[p, q, r]| [p, r, q]).collect();
-                let brep = Brep::assemble(b.points.clone(), tris, &self.ctx)
+                let brep = Brep::assemble(b.points.clone(), tris)
                     .unwrap_or_else(|e| panic!("the reversed boundary of a Yin set is one: {e}"));
                 YinSet3::from_brep(brep, self.ctx)
             }
         }
     }
 
-    /// The join 𝒴 ∨ 𝒵 := (𝒴' ∧ 𝒵')' (seed 000 Def. 4.10), the regularized union.
+    /// The join 𝒴 ∨ 𝒵 := (𝒴' ∧ 𝒵')' (seed 000 Def. 4.10), the regularized union. Panics as
+    /// [`YinSet3::meet`] does; [`YinSet3::try_join`] returns the error.
     pub fn join(&self, other: &YinSet3<N>) -> YinSet3<N> {
-        self.complement().meet(&other.complement()).complement()
+        or_panic(self.try_join(other), "join")
     }
 
-    /// The difference 𝒴 ∧ 𝒵'.
+    /// The join, or float mode's error ([`YinSet3::try_meet`]).
+    pub fn try_join(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
+        Ok(self
+            .complement()
+            .try_meet(&other.complement())?
+            .complement())
+    }
+
+    /// The difference 𝒴 ∧ 𝒵'. Panics as [`YinSet3::meet`] does.
     pub fn difference(&self, other: &YinSet3<N>) -> YinSet3<N> {
-        self.meet(&other.complement())
+        or_panic(self.try_difference(other), "difference")
     }
 
-    /// The symmetric difference (𝒴 ∧ 𝒵') ∨ (𝒴' ∧ 𝒵).
+    /// The difference, or float mode's error ([`YinSet3::try_meet`]).
+    pub fn try_difference(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
+        self.try_meet(&other.complement())
+    }
+
+    /// The symmetric difference (𝒴 ∧ 𝒵') ∨ (𝒴' ∧ 𝒵). Panics as [`YinSet3::meet`] does.
     pub fn symmetric_difference(&self, other: &YinSet3<N>) -> YinSet3<N> {
-        self.difference(other).join(&other.difference(self))
+        or_panic(self.try_symmetric_difference(other), "symmetric difference")
+    }
+
+    /// The symmetric difference, or float mode's error ([`YinSet3::try_meet`]).
+    pub fn try_symmetric_difference(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
+        self.try_difference(other)?
+            .try_join(&other.try_difference(self)?)
     }
 
     /// True if `self` ≤ `other` in the Boolean algebra.
     pub fn is_subset(&self, other: &YinSet3<N>) -> bool {
         self.meet(other) == *self
     }
+
+    /// The same set under the number context `ctx`.
+    pub(crate) fn with_ctx(mut self, ctx: N::Ctx) -> YinSet3<N> {
+        self.ctx = ctx;
+        self
+    }
+}
+
+/// The result of an operation, or a panic naming it (float mode only; see `try_meet`).
+pub(crate) fn or_panic<N: Num>(r: Result<YinSet3<N>, Yin3Error>, op: &str) -> YinSet3<N> {
+    r.unwrap_or_else(|e| panic!("3D {op} failed (float mode: use the try_ method): {e}"))
 }
 
 macro_rules! binary_operator {

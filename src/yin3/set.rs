@@ -5,6 +5,7 @@ use super::betti::{betti, Betti3};
 use super::canonical::{canonical, Canon};
 use super::error::Yin3Error;
 use super::fins::{first_non_alternating, FinTable, Pairing};
+use super::float::{exact_brep, exact_points};
 use super::geom::det3;
 use super::glue::{corner_cycles, glued_surfaces};
 use super::hasse::{hasse, Atom3};
@@ -60,12 +61,22 @@ pub(crate) struct Brep<N: Num> {
 
 impl<N: Num> Brep<N> {
     /// Build from a conforming closed complex (points may be unused): fins, glued surfaces,
-    /// orientations, Hasse diagram, atoms. Errors name triangles by their index in `tris`.
+    /// orientations, Hasse diagram, atoms, decided by exact predicates (float mode too: a float
+    /// set is a valid set of its `f64` values read as rationals). Errors name triangles by
+    /// their index in `tris`.
     pub(crate) fn assemble(
         points: Vec<Point3<N>>,
         tris: Vec<[usize; 3]>,
-        ctx: &N::Ctx,
     ) -> Result<Brep<N>, Yin3Error> {
+        if !N::EXACT {
+            // The structure of a float set is its exact values' (the f64 arithmetic of signed
+            // volumes and fin orders is not exact); compaction renumbers both alike.
+            let (points, tris) = compact(points, tris);
+            let exact = Brep::assemble(exact_points(&points), tris)?;
+            let mut points = points.into_iter();
+            return Ok(exact.map_points(|_| points.next().expect("one point per exact point")));
+        }
+        let ctx = &N::exact_ctx();
         let (points, tris) = compact(points, tris);
         let table = FinTable::new(&points, &tris, ctx);
         if let Some((e, f, g)) = first_non_alternating(&table) {
@@ -114,6 +125,21 @@ impl<N: Num> Brep<N> {
         })
     }
 
+    /// The same structure over the points `f(p)` (which must keep every predicate's value).
+    pub(crate) fn map_points<M: Num>(self, f: impl FnMut(&Point3<N>) -> Point3<M>) -> Brep<M> {
+        Brep {
+            points: self.points.iter().map(f).collect(),
+            tris: self.tris,
+            table: self.table,
+            surfaces: self.surfaces,
+            parent: self.parent,
+            atoms: self.atoms,
+            bounded: self.bounded,
+            betti: OnceLock::new(),
+            canon: OnceLock::new(),
+        }
+    }
+
     /// The corners of triangle `t`.
     pub(crate) fn corners(&self, t: usize) -> [&Point3<N>; 3] {
         self.tris[t].map(|v| &self.points[v])
@@ -124,14 +150,16 @@ impl<N: Num> Brep<N> {
         (0..self.tris.len()).map(|t| self.corners(t))
     }
 
-    /// Locate each point (DESIGN-3D §2.11).
+    /// Locate each point (DESIGN-3D §2.11): on the boundary if on a triangle (float mode:
+    /// within ε of one), otherwise by the exact winding number.
     pub(crate) fn locate(&self, points: &[Point3<N>], ctx: &N::Ctx) -> Vec<Location> {
+        let exact = N::exact_ctx();
         points
             .iter()
             .map(|q| {
                 if on_triangles(self.all_corners(), q, ctx) {
                     Location::OnBoundary
-                } else if winding(self.all_corners(), q, ctx) + i64::from(!self.bounded) == 1 {
+                } else if winding(self.all_corners(), q, &exact) + i64::from(!self.bounded) == 1 {
                     Location::Inside
                 } else {
                     Location::Outside
@@ -140,10 +168,10 @@ impl<N: Num> Brep<N> {
             .collect()
     }
 
-    /// The canonical form deciding equality.
-    fn canon(&self, ctx: &N::Ctx) -> &Canon<N> {
+    /// The canonical form deciding equality (exact predicates).
+    fn canon(&self) -> &Canon<N> {
         self.canon
-            .get_or_init(|| canonical(&self.points, &self.tris, ctx))
+            .get_or_init(|| canonical(&self.points, &self.tris, &N::exact_ctx()))
     }
 }
 
@@ -282,14 +310,20 @@ impl<N: Num> YinSet3<N> {
                 b2: 0,
             },
             Repr3::Brep(b) => *b.betti.get_or_init(|| {
-                betti(
-                    &b.points,
-                    &b.tris,
-                    &b.table,
-                    b.atoms.len(),
-                    b.bounded,
-                    &self.ctx,
-                )
+                let (atoms, bounded) = (b.atoms.len(), b.bounded);
+                if N::EXACT {
+                    betti(
+                        &b.points,
+                        &b.tris,
+                        &b.table,
+                        atoms,
+                        bounded,
+                        &N::exact_ctx(),
+                    )
+                } else {
+                    let exact = exact_points(&b.points);
+                    betti(&exact, &b.tris, &b.table, atoms, bounded, &())
+                }
             }),
         }
     }
@@ -328,7 +362,9 @@ impl<N: Num> PartialEq for YinSet3<N> {
     fn eq(&self, other: &Self) -> bool {
         match (&self.repr, &other.repr) {
             (Repr3::Empty, Repr3::Empty) | (Repr3::Full, Repr3::Full) => true,
-            (Repr3::Brep(a), Repr3::Brep(b)) => a.canon(&self.ctx) == b.canon(&other.ctx),
+            (Repr3::Brep(a), Repr3::Brep(b)) if N::EXACT => a.canon() == b.canon(),
+            // Float sets are equal if their exact values are (plane keys need exact arithmetic).
+            (Repr3::Brep(a), Repr3::Brep(b)) => exact_brep(a).canon() == exact_brep(b).canon(),
             _ => false,
         }
     }
@@ -342,7 +378,11 @@ impl<N: Num> Hash for YinSet3<N> {
             Repr3::Full => 1u8.hash(state),
             Repr3::Brep(b) => {
                 2u8.hash(state);
-                b.canon(&self.ctx).hash(state);
+                if N::EXACT {
+                    b.canon().hash(state);
+                } else {
+                    exact_brep(b).canon().hash(state);
+                }
             }
         }
     }

@@ -19,6 +19,9 @@ pub(crate) enum TriangulateError {
     CrossingConstraints(usize, usize),
     /// Point `p` lies outside the triangle.
     PointOutside(usize),
+    /// The predicates contradicted each other (float mode's ε-predicates are not transitive):
+    /// the step that found it.
+    Inconsistent(&'static str),
 }
 
 /// Triangulate the triangle `corners` (indices into `points`, counterclockwise) using every
@@ -36,7 +39,7 @@ pub(crate) fn triangulate<N: Num>(
     constraints: &[(usize, usize)],
     ctx: &N::Ctx,
 ) -> Result<Vec<[usize; 3]>, TriangulateError> {
-    let mut mesh = Mesh::new(points, corners, ctx);
+    let mut mesh = Mesh::new(points, corners, ctx)?;
     let mut order: Vec<usize> = (0..points.len()).filter(|p| !corners.contains(p)).collect();
     // Golden-ratio scrambled order: the history of splits stays shallow for sorted input.
     order.sort_by_key(|&p| (p as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
@@ -150,13 +153,17 @@ struct Mesh<'a, N: Num> {
 
 impl<'a, N: Num> Mesh<'a, N> {
     /// The triangulation of the single triangle `corners`.
-    fn new(points: &'a [Point<N>], corners: [usize; 3], ctx: &'a N::Ctx) -> Self {
+    fn new(
+        points: &'a [Point<N>],
+        corners: [usize; 3],
+        ctx: &'a N::Ctx,
+    ) -> Result<Self, TriangulateError> {
         let [a, b, c] = corners.map(|i| &points[i]);
-        debug_assert_eq!(
-            orient(a, b, c, ctx),
-            Greater,
-            "corners must be counterclockwise"
-        );
+        if orient(a, b, c, ctx) != Greater {
+            return Err(TriangulateError::Inconsistent(
+                "the corners are not counterclockwise",
+            ));
+        }
         let mut mesh = Mesh {
             points,
             ctx,
@@ -166,7 +173,7 @@ impl<'a, N: Num> Mesh<'a, N> {
             edges: HashMap::new(),
         };
         mesh.add(corners);
-        mesh
+        Ok(mesh)
     }
 
     /// Add the counterclockwise triangle `t` to the current triangulation; its id.
@@ -219,9 +226,9 @@ impl<'a, N: Num> Mesh<'a, N> {
             Some(i) => {
                 let (a, b) = (t[i], t[(i + 1) % 3]);
                 let twin = self.edges.get(&(b, a)).copied();
-                self.split_edge(id, a, p);
+                self.split_edge(id, a, p)?;
                 if let Some(twin) = twin {
-                    self.split_edge(twin, b, p);
+                    self.split_edge(twin, b, p)?;
                 }
             }
         }
@@ -230,9 +237,12 @@ impl<'a, N: Num> Mesh<'a, N> {
 
     /// Split the current triangle `id`, `[x, y, z]` from its vertex `x`, at the point `p` of
     /// its edge `xy` into `[x, p, z]` and `[p, y, z]`.
-    fn split_edge(&mut self, id: usize, x: usize, p: usize) {
-        let [x, y, z] = from_vertex(self.tris[id], x).expect("the edge's start is a vertex");
+    fn split_edge(&mut self, id: usize, x: usize, p: usize) -> Result<(), TriangulateError> {
+        let [x, y, z] = from_vertex(self.tris[id], x).ok_or(TriangulateError::Inconsistent(
+            "the split edge's start is not a vertex",
+        ))?;
         self.replace(id, &[[x, p, z], [p, y, z]]);
+        Ok(())
     }
 
     /// Make the constraint piece `uv` of constraint `c` an edge: remove the triangles its open
@@ -258,15 +268,22 @@ impl<'a, N: Num> Mesh<'a, N> {
                     && orient(pu, pv, &self.points[b], self.ctx) == Greater;
                 crosses.then_some((a, b, id))
             })
-            .expect("the segment leaves u through a triangle");
+            .ok_or(TriangulateError::Inconsistent(
+                "no triangle at u meets the constraint",
+            ))?;
         let (mut doomed, mut right, mut left) = (vec![first], vec![a], vec![b]);
         loop {
             if let Some(&d) = owner.get(&key(a, b)) {
                 return Err(TriangulateError::CrossingConstraints(d.min(c), d.max(c)));
             }
-            let next = self.edges[&(b, a)];
+            let lost = TriangulateError::Inconsistent("the constraint leaves the triangle");
+            let next = *self.edges.get(&(b, a)).ok_or(lost.clone())?;
+            if doomed.len() > self.tris.len() {
+                // Each step removes a new triangle: more steps than triangles is a cycle.
+                return Err(TriangulateError::Inconsistent("the constraint walk cycles"));
+            }
             doomed.push(next);
-            let [_, _, w] = from_vertex(self.tris[next], b).expect("the twin holds the edge");
+            let [_, _, w] = from_vertex(self.tris[next], b).ok_or(lost)?;
             if w == v {
                 break;
             }
@@ -284,8 +301,9 @@ impl<'a, N: Num> Mesh<'a, N> {
         let left_poly: Vec<usize> = [u, v].into_iter().chain(left.into_iter().rev()).collect();
         let right_poly: Vec<usize> = [v, u].into_iter().chain(right).collect();
         for poly in [left_poly, right_poly] {
-            let ears = ear_clip(self.points, &poly, self.ctx)
-                .expect("a pseudo-polygon of constraint recovery is simple and has an ear");
+            let ears = ear_clip(self.points, &poly, self.ctx).ok_or(
+                TriangulateError::Inconsistent("a pseudo-polygon of recovery has no ear"),
+            )?;
             for t in ears {
                 self.add(t);
             }

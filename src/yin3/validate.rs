@@ -5,12 +5,13 @@
 
 use super::arrange::{arrange, ArrangeError, Pairs, Soup};
 use super::error::Yin3Error;
-use super::geom::{normal, Chart};
+use super::float::{exact_points, rounded_brep};
+use super::geom::{collinear, normal, Chart};
 use super::locate::winding;
 use super::set::{Brep, YinSet3};
 use super::triangulate::ear_clip;
-use crate::kernel::{orient3d, Point, Point3};
-use crate::num::Num;
+use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
+use crate::num::{Float, Num};
 use crate::union_find::UnionFind;
 use std::cmp::Ordering;
 
@@ -52,64 +53,56 @@ impl<N: Num> YinSet3<N> {
         {
             return Err(Yin3Error::NotFinite { vertex: v });
         }
-        let mut soup = Soup::new();
-        let mut face_of = Vec::new();
-        for (f, face) in faces.iter().enumerate() {
-            for tri in face_triangles(&vertices, face, f, &ctx)? {
-                soup.push(tri.map(|v| &vertices[v]), 0);
-                face_of.push(f);
-            }
-        }
-        let pieces = arrange(&mut soup, Pairs::All, &ctx).map_err(|e| match e {
-            ArrangeError::Clash {
-                a,
-                b,
-                coplanar,
-                point,
-            } => {
-                let (a, b, point) = (face_of[a], face_of[b], point.to_string());
-                if coplanar {
-                    Yin3Error::Overlap { a, b, point }
-                } else {
-                    Yin3Error::Crossing { a, b, point }
-                }
-            }
-            ArrangeError::Internal(m) => Yin3Error::Internal(m),
-        })?;
-        let origin: Vec<usize> = pieces.iter().map(|(_, t)| face_of[*t]).collect();
-        let tris: Vec<[usize; 3]> = pieces.into_iter().map(|(t, _)| t).collect();
-        let brep =
-            Brep::assemble(soup.points, tris, &ctx).map_err(|e| e.renumber_faces(&origin))?;
-        check_windings(&brep, &ctx).map_err(|e| e.renumber_faces(&origin))?;
+        let ctx = resolve_for(&vertices, ctx)?;
+        let brep = if N::EXACT {
+            build(&vertices, &faces)?
+        } else {
+            // Float mode: validity is decided on the exact values; a vertex that the
+            // conforming boundary adds (edges crossing on a face) is rounded like a result's.
+            rounded_brep(&build(&exact_points(&vertices), &faces)?)?
+        };
         Ok(YinSet3::from_brep(brep, ctx))
     }
 
     /// Check that the stored boundary is a valid boundary representation (I1–I4), as
     /// [`YinSet3::from_triangles`] would accept it unchanged; every operation's output passes.
+    /// Float sets are checked exactly, on their `f64` values read as rationals.
     pub fn validate(&self) -> Result<(), Yin3Error> {
         let Some(b) = self.brep() else {
             return Ok(());
         };
-        let faces = b.tris.iter().map(|t| t.to_vec()).collect();
-        let again = YinSet3::from_triangles_with(b.points.clone(), faces, self.ctx)?;
-        let rebuilt = again.brep().expect("a non-empty boundary");
-        if rebuilt.tris.len() != b.tris.len() {
-            return Err(Yin3Error::Internal(format!(
-                "the stored triangles are not conforming: validation re-cut {} triangles into {}",
-                b.tris.len(),
-                rebuilt.tris.len()
-            )));
+        if N::EXACT {
+            revalidate(b.points.clone(), b, self.ctx)
+        } else {
+            revalidate(exact_points(&b.points), b, ())
         }
-        if rebuilt.surfaces != b.surfaces
-            || rebuilt.parent != b.parent
-            || rebuilt.bounded != b.bounded
-        {
-            return Err(Yin3Error::Internal(
-                "the stored glued surfaces or Hasse diagram differ from the recomputed ones".into(),
-            ));
-        }
-        Ok(())
     }
+}
+
+/// Rebuild the boundary `b` from its triangles over `points` (its vertices in backend `M`) and
+/// compare: the same triangles, glued surfaces, Hasse diagram and boundedness.
+pub(crate) fn revalidate<M: Num, N: Num>(
+    points: Vec<Point3<M>>,
+    b: &Brep<N>,
+    ctx: M::Ctx,
+) -> Result<(), Yin3Error> {
+    let faces = b.tris.iter().map(|t| t.to_vec()).collect();
+    let again = YinSet3::from_triangles_with(points, faces, ctx)?;
+    let rebuilt = again.brep().expect("a non-empty boundary");
+    if rebuilt.tris.len() != b.tris.len() {
+        return Err(Yin3Error::Internal(format!(
+            "the stored triangles are not conforming: validation re-cut {} triangles into {}",
+            b.tris.len(),
+            rebuilt.tris.len()
+        )));
+    }
+    if rebuilt.surfaces != b.surfaces || rebuilt.parent != b.parent || rebuilt.bounded != b.bounded
+    {
+        return Err(Yin3Error::Internal(
+            "the stored glued surfaces or Hasse diagram differ from the recomputed ones".into(),
+        ));
+    }
+    Ok(())
 }
 
 impl Yin3Error {
@@ -148,6 +141,54 @@ impl Yin3Error {
     }
 }
 
+/// The boundary bounded by `faces` over `vertices`, every decision exact (float mode too: its
+/// ε applies to operations, not to validity).
+fn build<N: Num>(vertices: &[Point3<N>], faces: &[Vec<usize>]) -> Result<Brep<N>, Yin3Error> {
+    let exact = N::exact_ctx();
+    let mut soup = Soup::new();
+    let mut face_of = Vec::new();
+    for (f, face) in faces.iter().enumerate() {
+        for tri in face_triangles(vertices, face, f, &exact)? {
+            soup.push(tri.map(|v| &vertices[v]), 0);
+            face_of.push(f);
+        }
+    }
+    let pieces = arrange(&mut soup, Pairs::All, &exact).map_err(|e| match e {
+        ArrangeError::Clash {
+            a,
+            b,
+            coplanar,
+            point,
+        } => {
+            let (a, b, point) = (face_of[a], face_of[b], point.to_string());
+            if coplanar {
+                Yin3Error::Overlap { a, b, point }
+            } else {
+                Yin3Error::Crossing { a, b, point }
+            }
+        }
+        ArrangeError::Internal(m) => Yin3Error::Internal(m),
+    })?;
+    let origin: Vec<usize> = pieces.iter().map(|(_, t)| face_of[*t]).collect();
+    let tris: Vec<[usize; 3]> = pieces.into_iter().map(|(t, _)| t).collect();
+    let brep = Brep::assemble(soup.points, tris).map_err(|e| e.renumber_faces(&origin))?;
+    check_windings(&brep, &exact).map_err(|e| e.renumber_faces(&origin))?;
+    Ok(brep)
+}
+
+/// The context `ctx` resolved for `vertices` ([`Num::resolve_ctx`]: float mode's default ε
+/// from the bounding box, or the error that the requested one is too fine for them).
+pub(crate) fn resolve_for<N: Num>(
+    vertices: &[Point3<N>],
+    ctx: N::Ctx,
+) -> Result<N::Ctx, Yin3Error> {
+    let (span, magnitude) = BBox3::of(vertices).map_or((0.0, 0.0), |b| (b.span(), b.extent()));
+    N::resolve_ctx(ctx, span, magnitude).map_err(|e| Yin3Error::ToleranceTooFine {
+        requested: Float::new(e.requested),
+        representable: Float::new(e.representable),
+    })
+}
+
 /// The triangles of face `f` (a planar, simple polygon), as vertex index triples.
 fn face_triangles<N: Num>(
     vertices: &[Point3<N>],
@@ -175,8 +216,7 @@ fn face_triangles<N: Num>(
         }
     }
     let p = |k: usize| &vertices[face[k]];
-    let zero = Point3::int(0, 0, 0);
-    let Some(k) = (2..face.len()).find(|&k| normal(p(0), p(1), p(k)) != zero) else {
+    let Some(k) = (2..face.len()).find(|&k| !collinear(p(0), p(1), p(k))) else {
         return Err(degenerate("all its vertices are collinear".into()));
     };
     if let Some(i) =
@@ -220,10 +260,12 @@ fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yin3Error> {
     let (label, count) = uf.classes();
     let expected = if b.bounded { 0 } else { -1 };
     for c in 0..count {
-        // A triangle whose normal has a nonzero x: the ray along +x leaves it to one side.
+        // A triangle whose normal has a nonzero x (the orientation of its projection to the
+        // yz-plane): the ray along +x leaves it to one side.
+        let yz = |p: &Point3<N>| Point::new(p.y.clone(), p.z.clone());
         let Some((t, nx)) = (0..b.tris.len()).filter(|&t| label[t] == c).find_map(|t| {
             let [p, q, r] = b.corners(t);
-            let s = normal(p, q, r).x.sign();
+            let s = orient(&yz(p), &yz(q), &yz(r), ctx);
             (s != Ordering::Equal).then_some((t, s))
         }) else {
             continue;
