@@ -496,7 +496,8 @@ fn ternary_on_small_universes() {
 // polygons whose sides cross at points with non-trivial denominators
 
 /// The rotation by the Pythagorean angle with cos θ = 3/5, sin θ = 4/5, then a shift by
-/// (1/3, 1/7): no edge of a grid stays axis-parallel, and coordinates get denominators 210.
+/// (1/3, 1/7): no edge of a grid stays axis-parallel; abscissae get denominators dividing 30,
+/// ordinates dividing 70.
 fn rotation() -> Affine {
     Affine::new([[(3, 5), (-4, 5)], [(4, 5), (3, 5)]], [(1, 3), (1, 7)])
 }
