@@ -20,15 +20,16 @@ mod common;
 mod laws3;
 
 use cells3::{Grid3, Y3};
-use common::cells::{full_mask, Cells, Complex};
+use common::cells::{full_mask, Affine, Cells, Complex};
 use common::laws::{self, Res, Tally};
 use common::Y;
 use std::collections::HashSet;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
-use yinset::kernel::Point3;
+use yinset::kernel::{Point, Point3};
 use yinset::num::{Num, Rational};
+use yinset::yin2::YinSet2;
 
 /// True for the full run (`YINSET_PROOFS=full`).
 fn full() -> bool {
@@ -487,6 +488,144 @@ fn binary_on_closed_small_universes() {
 fn ternary_on_small_universes() {
     for cx in [Complex::grid(2, 2), Complex::cross()] {
         ternary_on(&Planar::new(cx));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2D in general position: the universes under rational affine maps, and arrangements of
+// polygons whose sides cross at points with non-trivial denominators
+
+/// The rotation by the Pythagorean angle with cos θ = 3/5, sin θ = 4/5, then a shift by
+/// (1/3, 1/7): no edge of a grid stays axis-parallel; abscissae get denominators dividing 30,
+/// ordinates dividing 70.
+fn rotation() -> Affine {
+    Affine::new([[(3, 5), (-4, 5)], [(4, 5), (3, 5)]], [(1, 3), (1, 7)])
+}
+
+/// The shear (x, y) ↦ (x + 3y/7, y): vertical edges become slanted, horizontal ones stay.
+fn shear() -> Affine {
+    Affine::new([[(1, 1), (3, 7)], [(0, 1), (1, 1)]], [(0, 1), (0, 1)])
+}
+
+/// The triangle and the quadrilateral of [`triangle_quad`].
+const TRIANGLE: [(i64, i64); 3] = [(0, 1), (5, 2), (2, 5)];
+const QUAD: [(i64, i64); 4] = [(1, 4), (3, 0), (6, 3), (4, 5)];
+
+/// The faces of a triangle crossing a quadrilateral: 6 pieces, crossings with denominators
+/// 2, 4, 5 and 11 (common denominator 220). The triangle and the quadrilateral themselves are
+/// sets of the universe, so their meet and join cross in general position.
+fn triangle_quad() -> Complex {
+    Complex::arrangement(
+        "triangle × quadrilateral (6 faces)",
+        &[TRIANGLE.to_vec(), QUAD.to_vec()],
+    )
+}
+
+/// The faces of two crossing triangles: 5 pieces, crossings with denominators 2, 3, 5, 9 and
+/// 18 (common denominator 90).
+fn two_triangles() -> Complex {
+    Complex::arrangement(
+        "two triangles (5 faces)",
+        &[vec![(0, 0), (6, 1), (2, 5)], vec![(1, 3), (5, 4), (4, 6)]],
+    )
+}
+
+/// Theorem U in general position: every set of the rotated pinwheel and of both arrangements
+/// (and in the full run of the sheared 3×3 grid).
+#[test]
+fn unary_in_general_position() {
+    let mut universes = vec![
+        Complex::pinwheel().mapped("rotated", rotation()),
+        triangle_quad(),
+        two_triangles(),
+    ];
+    if full() {
+        universes.push(Complex::grid(3, 3).mapped("sheared", shear()));
+    }
+    for cx in universes {
+        theorem_unary(&Planar::new(cx));
+    }
+}
+
+/// Theorem B in general position: the rotated pinwheel and both arrangements as
+/// [`binary_on`] (every pair in the full run, the arrangements with their unbounded sets),
+/// and every ordered pair of the closed rotated cross (and in the full run of the sheared 2×2
+/// grid).
+#[test]
+fn binary_in_general_position() {
+    binary_on(
+        &Planar::new(Complex::pinwheel().mapped("rotated", rotation())),
+        6,
+        false,
+    );
+    binary_on(&Planar::new(triangle_quad()), 6, true);
+    binary_on(&Planar::new(two_triangles()), 6, true);
+    binary_closed(&Planar::new(Complex::cross().mapped("rotated", rotation())));
+    if full() {
+        binary_closed(&Planar::new(Complex::grid(2, 2).mapped("sheared", shear())));
+    }
+}
+
+/// Theorem T in general position: every ordered triple of the two-triangle arrangement, the
+/// sheared 2×2 grid and the rotated cross (bounded and unbounded sets) in the full run; in the
+/// quick subset, the triples of a spread of 6 sets of each arrangement and of the rotated cross.
+#[test]
+fn ternary_in_general_position() {
+    let universes = [
+        Planar::new(two_triangles()),
+        Planar::new(triangle_quad()),
+        Planar::new(Complex::cross().mapped("rotated", rotation())),
+        Planar::new(Complex::grid(2, 2).mapped("sheared", shear())),
+    ];
+    for u in &universes[..if full() { 4 } else { 3 }] {
+        if full() && u.cx.len() <= 5 {
+            ternary_on(u);
+        } else if !full() {
+            let few = sample(&u.sets(true), 6);
+            let name = format!(
+                "{}, all {}³ ordered triples of a spread",
+                u.name(),
+                few.len()
+            );
+            theorem_ternary(u, triples(&few), &name);
+        }
+    }
+}
+
+/// The general-position universes are what they claim: the triangle and the quadrilateral are
+/// sets of the arrangement (built here from their corners alone), their meet has vertices with
+/// denominator 11 (crossings, not lattice points), and no edge of the rotated pinwheel is
+/// axis-parallel.
+#[test]
+fn general_position_universes_are_what_they_claim() {
+    let u = Planar::new(triangle_quad());
+    let corners = |c: &[(i64, i64)]| -> Vec<Point<Rational>> {
+        c.iter().map(|&(x, y)| Point::int(x, y)).collect()
+    };
+    let t = YinSet2::from_curves(vec![corners(&TRIANGLE)]).expect("a triangle");
+    let q = YinSet2::from_curves(vec![corners(&QUAD)]).expect("a quadrilateral");
+    let find = |y: &common::Y| u.expected.iter().position(|e| e == y);
+    let (it, iq) = (find(&t), find(&q));
+    assert!(
+        it.is_some() && iq.is_some(),
+        "T and Q are sets of the universe"
+    );
+    let meet = u.expected[it.unwrap() & iq.unwrap()].clone();
+    let zero = num_bigint::BigInt::from(0);
+    assert!(
+        meet.curves()
+            .iter()
+            .flat_map(|c| c.vertices())
+            .any(|p| p.x.denom() % 11u32 == zero || p.y.denom() % 11u32 == zero),
+        "T ∧ Q has a crossing with denominator 11: {meet:?}"
+    );
+    let pinwheel = Planar::new(Complex::pinwheel().mapped("rotated", rotation()));
+    for y in &pinwheel.expected {
+        for c in y.curves() {
+            for (a, b) in c.edges() {
+                assert!(a.x != b.x && a.y != b.y, "axis-parallel edge {a}–{b}");
+            }
+        }
     }
 }
 

@@ -188,3 +188,68 @@ fn coord_mut<N>(p: &mut Point3<N>, k: usize) -> &mut N {
         _ => &mut p.z,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    fn p(x: i64, y: i64, z: i64) -> Point3<Rational> {
+        Point3::int(x, y, z)
+    }
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn vector_algebra_by_hand() {
+        let (a, b) = (p(1, 2, 3), p(4, -5, 6));
+        assert_eq!(b.sub(&a), p(3, -7, 3));
+        // (1,2,3) × (4,−5,6) = (2·6 − 3·(−5), 3·4 − 1·6, 1·(−5) − 2·4)
+        assert_eq!(a.cross(&b), p(27, 6, -13));
+        assert_eq!(a.dot(&b), Rational::from_i64(12));
+        assert_eq!(a.midpoint(&b), Point3::new(q(5, 2), q(-3, 2), q(9, 2)));
+        assert_eq!(
+            a.lerp(&b, &q(1, 3)),
+            Point3::new(q(2, 1), q(-1, 3), q(4, 1))
+        );
+        assert_eq!(
+            Point3::centroid(&a, &b, &p(1, 0, 1)),
+            Point3::new(q(2, 1), q(-1, 1), q(10, 3))
+        );
+        assert_eq!([a.coord(0), a.coord(1), a.coord(2)], a.coords());
+        assert_eq!(a.to_string(), "(1, 2, 3)");
+    }
+
+    #[test]
+    fn orient3d_signs() {
+        let (o, x, y) = (p(0, 0, 0), p(1, 0, 0), p(0, 1, 0));
+        assert_eq!(orient3d(&o, &x, &y, &p(3, -2, 1), &()), Ordering::Greater);
+        assert_eq!(orient3d(&o, &x, &y, &p(3, -2, -1), &()), Ordering::Less);
+        assert_eq!(orient3d(&o, &x, &y, &p(3, -2, 0), &()), Ordering::Equal);
+    }
+
+    #[test]
+    fn boxes_meet_exactly_when_they_share_a_point() {
+        let a = BBox3::of(&[p(2, 2, 2), p(0, 1, 0), p(1, 0, 1)]).expect("three points");
+        assert_eq!((a.min.clone(), a.max.clone()), (p(0, 0, 0), p(2, 2, 2)));
+        assert!(BBox3::<Rational>::of(&[]).is_none());
+        let corner = BBox3::of(&[p(2, 2, 2), p(3, 3, 3)]).unwrap();
+        assert!(a.meets(&corner) && corner.meets(&a), "sharing a corner");
+        for k in 0..3 {
+            // Apart along one axis only, overlapping along the others.
+            let mut lo = [0, 0, 0];
+            lo[k] = 3;
+            let far = BBox3::of(&[p(lo[0], lo[1], lo[2]), p(lo[0] + 1, lo[1] + 1, lo[2] + 1)]);
+            let far = far.unwrap();
+            assert!(!a.meets(&far) && !far.meets(&a), "apart along axis {k}");
+            assert!(a.contains(&p(2 * (k == 0) as i64, 1, 0)));
+            let mut out = [1, 1, 1];
+            out[k] = 3;
+            assert!(!a.contains(&p(out[0], out[1], out[2])));
+            out[k] = -1;
+            assert!(!a.contains(&p(out[0], out[1], out[2])));
+        }
+    }
+}

@@ -440,6 +440,13 @@ mod tests {
     }
 
     #[test]
+    fn negation_flips_the_sign() {
+        assert_eq!(-Float::new(1.5), Float::new(-1.5));
+        assert_eq!(-Float::new(-0.25), Float::new(0.25));
+        assert_eq!(-Float::new(0.0), Float::new(0.0));
+    }
+
+    #[test]
     fn negative_zero_determinant_is_collinear() {
         let f = Float::new;
         let (a, b) = (

@@ -117,3 +117,40 @@ pub(crate) fn atoms(positive: &[bool], parent: &[Option<usize>]) -> Vec<Atom> {
     }
     atoms
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::kernel::Point;
+    use crate::num::{Num, Rational};
+    use crate::yin2::YinSet2;
+
+    fn ring(c: &[(i64, i64)]) -> Vec<Point<Rational>> {
+        c.iter().map(|&(x, y)| Point::int(x, y)).collect()
+    }
+
+    #[test]
+    fn a_hole_and_an_island_hang_below_their_curves() {
+        // A square with a square hole holding a square island, and a separate square.
+        let y = YinSet2::<Rational>::from_curves(vec![
+            ring(&[(0, 0), (9, 0), (9, 9), (0, 9)]),
+            ring(&[(1, 1), (1, 8), (8, 8), (8, 1)]),
+            ring(&[(3, 3), (6, 3), (6, 6), (3, 6)]),
+            ring(&[(20, 0), (21, 0), (21, 1), (20, 1)]),
+        ])
+        .expect("a valid set");
+        let (curves, parents) = (y.curves(), y.parents());
+        assert_eq!(parents.len(), 4);
+        let index = |x: i64| {
+            curves
+                .iter()
+                .position(|c| c.vertices().iter().any(|p| p.x == Rational::from_i64(x)))
+                .expect("a curve")
+        };
+        let (outer, hole, island, apart) = (index(0), index(1), index(3), index(20));
+        assert_eq!(parents[outer], None);
+        assert_eq!(parents[apart], None);
+        assert_eq!(parents[hole], Some(outer));
+        assert_eq!(parents[island], Some(hole));
+        assert!(YinSet2::<Rational>::empty().parents().is_empty());
+    }
+}

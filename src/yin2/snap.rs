@@ -432,6 +432,16 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
+    #[test]
+    fn a_segment_meets_the_pixels_it_passes_through() {
+        // Vertical, through the middle of pixel (1, 1), away from the origin.
+        assert!(meets_pixel((1, 0), (1, 2), (1, 1)));
+        assert!(!meets_pixel((1, 0), (1, 2), (2, 1)));
+        // Slanted, through the centre of pixel (5, 2) and clear of pixel (5, 4).
+        assert!(meets_pixel((3, 1), (7, 3), (5, 2)));
+        assert!(!meets_pixel((3, 1), (7, 3), (5, 4)));
+    }
+
     proptest! {
         /// The R-tree search along a segment finds exactly the pixels that `meets_pixel`
         /// accepts among all of them (segments through corners and along pixel edges included).

@@ -375,3 +375,25 @@ fn check_structure<N: Num>(
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::kernel::Point;
+    use crate::num::Rational;
+    use crate::yin2::{YinError, YinSet2};
+
+    #[test]
+    fn a_repeated_vertex_is_named_by_its_second_occurrence() {
+        let ring = |c: &[(i64, i64)]| c.iter().map(|&(x, y)| Point::int(x, y)).collect();
+        let square = ring(&[(5, 5), (6, 5), (6, 6), (5, 6)]);
+        let doubled = ring(&[(0, 0), (2, 0), (2, 0), (2, 2), (0, 2)]);
+        assert_eq!(
+            YinSet2::<Rational>::from_curves(vec![square, doubled]).err(),
+            Some(YinError::RepeatedVertex {
+                curve: 1,
+                vertex: 2,
+                point: "(2, 0)".to_string(),
+            })
+        );
+    }
+}

@@ -41,9 +41,10 @@ use yinset::kernel::Point;
 use yinset::num::Rational;
 use yinset::yin2::{Location, YinSet2};
 
+use super::arrangement;
 use super::Y;
 
-/// A vertex in doubled integer coordinates.
+/// A vertex in integer coordinates scaled by the complex's denominator (2 for the grids).
 type V = (i64, i64);
 
 /// How a unit cell of the window is cut into pieces.
@@ -59,19 +60,63 @@ pub enum Split {
     Cross,
 }
 
-/// A planar subdivision of a w×h window of unit cells into pieces. Coordinates are stored
-/// doubled (so the centre of a cell is an integer point) and mapped back by [`Complex::point`].
+/// A planar subdivision of a window into pieces: a w×h window of unit cells, or the faces of
+/// an arrangement of polygons. Coordinates are stored as integers over a common denominator
+/// `den` (2 for the grids, so that the centre of a cell is an integer point), and mapped to the
+/// plane by [`Complex::point`], through a rational affine map if the complex has one.
 #[derive(Clone, Debug)]
 pub struct Complex {
     pub name: String,
-    /// Each piece as a counterclockwise cycle of doubled integer coordinates.
+    /// Each piece as a counterclockwise cycle of scaled integer coordinates.
     pub pieces: Vec<Vec<(i64, i64)>>,
     /// For each piece and each of its edges, the neighbour across it (`None`: the exterior).
     adj: Vec<Vec<Option<usize>>>,
     /// The edges on the window's boundary, directed with the window on the left.
     border: Vec<((i64, i64), (i64, i64))>,
-    /// Each piece's twice-area, in doubled coordinates (so 8 × the true area).
-    area8: Vec<i64>,
+    /// Each piece's twice-area in scaled coordinates (so 2 den² × the true area).
+    area2: Vec<i64>,
+    /// The common denominator of the coordinates.
+    den: i64,
+    /// The map applied to every point, if any.
+    affine: Option<Affine>,
+}
+
+/// An orientation-preserving rational affine map p ↦ M p + t of the plane (det M > 0).
+#[derive(Clone, Debug)]
+pub struct Affine {
+    m: [[Rational; 2]; 2],
+    t: [Rational; 2],
+}
+
+impl Affine {
+    /// The map with matrix `m` and translation `t`, entries given as fractions (p, q).
+    pub fn new(m: [[(i64, i64); 2]; 2], t: [(i64, i64); 2]) -> Affine {
+        let q = |(p, d): (i64, i64)| Rational::new(p.into(), d.into());
+        let a = Affine {
+            m: m.map(|row| row.map(q)),
+            t: t.map(q),
+        };
+        assert!(
+            a.det() > Rational::new(0.into(), 1.into()),
+            "not orientation-preserving"
+        );
+        a
+    }
+
+    /// The image of a point.
+    pub fn apply(&self, p: Point<Rational>) -> Point<Rational> {
+        let [[a, b], [c, d]] = &self.m;
+        Point::new(
+            a.clone() * p.x.clone() + b.clone() * p.y.clone() + self.t[0].clone(),
+            c.clone() * p.x + d.clone() * p.y + self.t[1].clone(),
+        )
+    }
+
+    /// The determinant of M: the factor of areas.
+    pub fn det(&self) -> Rational {
+        let [[a, b], [c, d]] = &self.m;
+        a.clone() * d.clone() - b.clone() * c.clone()
+    }
 }
 
 /// A union of pieces of a [`Complex`], plus the exterior of the window if `outside`.
@@ -150,6 +195,11 @@ impl Complex {
                 }
             }
         }
+        Complex::from_pieces(name, pieces, 2)
+    }
+
+    /// The subdivision into `pieces` (counterclockwise cycles of integer coordinates over `den`).
+    pub fn from_pieces(name: &str, pieces: Vec<Vec<V>>, den: i64) -> Complex {
         assert!(pieces.len() <= 64, "masks are u64");
         let mut owner: HashMap<(V, V), usize> = HashMap::new();
         for (p, v) in pieces.iter().enumerate() {
@@ -172,7 +222,7 @@ impl Complex {
             }
             adj.push(row);
         }
-        let area8 = pieces
+        let area2 = pieces
             .iter()
             .map(|v| {
                 (0..v.len())
@@ -188,7 +238,34 @@ impl Complex {
             pieces,
             adj,
             border,
-            area8,
+            area2,
+            den,
+            affine: None,
+        }
+    }
+
+    /// The bounded faces of the arrangement of the sides of `polygons` (integer vertices, no two
+    /// sides collinear): pieces whose vertices include the sides' crossings, with their
+    /// non-trivial denominators (tests/common/arrangement.rs).
+    pub fn arrangement(name: &str, polygons: &[Vec<(i64, i64)>]) -> Complex {
+        let (faces, den) = arrangement::faces(polygons);
+        Complex::from_pieces(name, faces, den)
+    }
+
+    /// The same subdivision moved by the affine map `a`, named `<name>, <what>`.
+    pub fn mapped(mut self, what: &str, a: Affine) -> Complex {
+        assert!(self.affine.is_none(), "{} is mapped already", self.name);
+        self.name = format!("{}, {what}", self.name);
+        self.affine = Some(a);
+        self
+    }
+
+    /// A point of the plane from exact coordinates over `den`, through the affine map.
+    fn place(&self, x: Rational, y: Rational) -> Point<Rational> {
+        let p = Point::new(x, y);
+        match &self.affine {
+            Some(a) => a.apply(p),
+            None => p,
         }
     }
 
@@ -245,11 +322,11 @@ impl Complex {
         v
     }
 
-    /// A doubled integer coordinate pair as an exact point.
+    /// A scaled integer coordinate pair as an exact point.
     pub fn point(&self, p: (i64, i64)) -> Point<Rational> {
-        Point::new(
-            Rational::new(p.0.into(), 2.into()),
-            Rational::new(p.1.into(), 2.into()),
+        self.place(
+            Rational::new(p.0.into(), self.den.into()),
+            Rational::new(p.1.into(), self.den.into()),
         )
     }
 
@@ -414,33 +491,37 @@ impl Complex {
         if s.outside {
             return None;
         }
-        let a8: i64 = (0..self.len())
+        let a2: i64 = (0..self.len())
             .filter(|&p| s.mask >> p & 1 == 1)
-            .map(|p| self.area8[p])
+            .map(|p| self.area2[p])
             .sum();
-        Some(Rational::new(a8.into(), 8.into()))
+        let area = Rational::new(a2.into(), (2 * self.den * self.den).into());
+        Some(match &self.affine {
+            Some(a) => area * a.det(),
+            None => area,
+        })
     }
 
-    /// An interior point of each piece (its centroid), and a point outside the window.
+    /// An interior point of each piece (see [`interior`]), and a point outside the window (the
+    /// image of (−1, −1): every window has x, y ≥ 0).
     pub fn probes(&self) -> Vec<(Option<usize>, Point<Rational>)> {
         let mut v: Vec<(Option<usize>, Point<Rational>)> = self
             .pieces
             .iter()
             .enumerate()
             .map(|(p, c)| {
-                let k = c.len() as i64;
-                let sx: i64 = c.iter().map(|q| q.0).sum();
-                let sy: i64 = c.iter().map(|q| q.1).sum();
+                let (sx, sy, k) = interior(c);
                 (
                     Some(p),
-                    Point::new(
-                        Rational::new(sx.into(), (2 * k).into()),
-                        Rational::new(sy.into(), (2 * k).into()),
+                    self.place(
+                        Rational::new(sx.into(), (self.den * k).into()),
+                        Rational::new(sy.into(), (self.den * k).into()),
                     ),
                 )
             })
             .collect();
-        v.push((None, Point::int(-1, -1)));
+        let minus_one = Rational::new((-1).into(), 1.into());
+        v.push((None, self.place(minus_one.clone(), minus_one)));
         v
     }
 
@@ -457,4 +538,34 @@ impl Complex {
             })
             .collect()
     }
+}
+
+/// An interior point of a counterclockwise polygon, as coordinate sums and their count: the
+/// vertex centroid if the polygon is convex, else the centroid of an ear (a convex corner whose
+/// triangle holds no other vertex).
+fn interior(c: &[V]) -> (i64, i64, i64) {
+    let n = c.len();
+    let orient = |a: V, b: V, d: V| (b.0 - a.0) * (d.1 - a.1) - (b.1 - a.1) * (d.0 - a.0);
+    let corner = |k: usize| (c[(k + n - 1) % n], c[k], c[(k + 1) % n]);
+    if (0..n).all(|k| {
+        let (a, b, d) = corner(k);
+        orient(a, b, d) >= 0
+    }) {
+        let sx = c.iter().map(|q| q.0).sum();
+        let sy = c.iter().map(|q| q.1).sum();
+        return (sx, sy, n as i64);
+    }
+    (0..n)
+        .map(corner)
+        .find(|&(a, b, d)| {
+            orient(a, b, d) > 0
+                && c.iter().all(|&p| {
+                    [a, b, d].contains(&p)
+                        || orient(a, b, p) < 0
+                        || orient(b, d, p) < 0
+                        || orient(d, a, p) < 0
+                })
+        })
+        .map(|(a, b, d)| (a.0 + b.0 + d.0, a.1 + b.1 + d.1, 3))
+        .expect("a simple polygon has an ear")
 }

@@ -68,6 +68,7 @@ pub fn valid(y: &Y) -> &Y {
     y
 }
 
+pub mod arrangement;
 pub mod cells;
 pub mod cells3;
 pub mod gen;
