@@ -78,7 +78,7 @@ impl<N: Num> Set for YinSet2<N> {
         load(path, opts, ctx)
     }
     fn encode(&self, format: Format, style: NumberStyle) -> Result<Vec<u8>, CliError> {
-        encode(self, format, style).map(String::into_bytes)
+        encode(self, format, style)
     }
     fn size(&self) -> usize {
         self.curves().iter().map(|c| c.len()).sum()
