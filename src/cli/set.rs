@@ -87,7 +87,7 @@ impl<N: Num> Set for YinSet2<N> {
         info::report(self)
     }
     fn describe(&self) -> String {
-        crate::demo::describe(self)
+        info::summary(self)
     }
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
         Ok(locate::aligned(&locate::read_points(text)?, |p| {
