@@ -606,3 +606,81 @@ fn render_writes_png_for_png_names_and_refuses_other_extensions() {
         assert!(!dir.path().join(bad).exists(), "{bad} written");
     }
 }
+
+#[test]
+fn wkb_round_trips_binary_and_hex_and_is_told_apart_from_yin2() {
+    let dir = scratch();
+    let a = file(&dir, "a.txt", FRAME);
+    let wkb = dir.path().join("a.wkb");
+    ok(&["convert", s(&a), "-o", s(&wkb)], "");
+    let bytes = std::fs::read(&wkb).unwrap();
+    // Little-endian MultiPolygon (type 6) of one polygon.
+    assert_eq!(&bytes[..9], &[1, 6, 0, 0, 0, 1, 0, 0, 0]);
+    assert_eq!(parse(&ok(&["convert", s(&wkb)], "")), parse(FRAME));
+    // Hex: to standard output; read back from standard input without --from, and from a
+    // .wkb file holding hex digits.
+    let hex = ok(&["convert", s(&a), "--to", "wkb-hex"], "");
+    assert!(
+        hex.starts_with("010600000001000000") && hex.ends_with('\n'),
+        "{hex}"
+    );
+    assert_eq!(parse(&ok(&["convert", "-"], &hex)), parse(FRAME));
+    let hex_file = file(&dir, "h.wkb", &hex.to_lowercase());
+    assert_eq!(parse(&ok(&["convert", s(&hex_file)], "")), parse(FRAME));
+    // A yin2 text of hex-looking numbers is still yin2.
+    assert_eq!(
+        parse(&ok(&["convert", "-"], "0 0\n10 0\n0 10\n"))
+            .curves()
+            .len(),
+        1
+    );
+}
+
+#[test]
+fn malformed_wkb_is_refused_at_its_byte() {
+    let dir = scratch();
+    let a = file(&dir, "a.txt", FRAME);
+    let hex = ok(&["convert", s(&a), "--to", "wkb-hex"], "");
+    let cut = &hex.trim()[..hex.trim().len() - 6];
+    fails(
+        &["info", "--from", "wkb-hex", "-"],
+        cut,
+        1,
+        // Bytes 0–17 the headers, 18 the exterior's count, 22–117 its 6 points, 118 the hole's.
+        &["standard input: wkb-hex: byte 118: truncated: 4 points need at least 64 bytes, 61 remain"],
+    );
+    fails(
+        &["info", "-"],
+        "0103",
+        1,
+        &["byte 1: truncated: the geometry type needs 4 bytes, 1 remain"],
+    );
+    fails(
+        &["info", "--from", "wkb-hex", "-"],
+        "01 003",
+        1,
+        &["` ` (character 3 of the text) is not a hex digit"],
+    );
+    // A point is not polygonal, but is dropped with --polygonal-only.
+    let point = "0101000000000000000000F03F000000000000F03F";
+    fails(
+        &["info", "-"],
+        point,
+        1,
+        &["byte 1: a Point is not polygonal"],
+    );
+    let collection = format!("010700000002000000{point}{}", &hex.trim()[18..]);
+    let info: Value =
+        serde_json::from_str(&ok(&["info", "--polygonal-only", "-"], &collection)).unwrap();
+    assert_eq!(info["area"]["exact"], "14", "{info}");
+    // WKB holds f64s: --exact refuses 1/3 instead of rounding it.
+    let third = file(&dir, "t.txt", "0 0\n1/3 0\n0 1\n");
+    fails(
+        &["convert", s(&third), "--to", "wkb", "--exact"],
+        "",
+        1,
+        &["cannot write the result as WKB: the coordinate 1/3 is not an f64"],
+    );
+    let rounded = ok(&["convert", s(&third), "--to", "wkb-hex"], "");
+    assert_eq!(rounded.trim().len(), 2 * (9 + 9 + 4 + 4 * 16));
+}

@@ -1,10 +1,11 @@
-//! Issue 20 item 1: the command's WKT and GeoJSON output read by independent readers (the `wkt`
-//! and `geojson` crates, as shapely or GEOS would): numbers parse, rings are closed, exteriors
-//! run counterclockwise and holes clockwise (OGC SFA, RFC 7946 §3.1.6), and geo finds the
-//! polygons valid.
+//! Issue 20 items 1 and 2: the command's WKT, GeoJSON and WKB output read by independent
+//! readers (the `wkt`, `geojson` and `wkb` crates, as shapely or GEOS would): numbers parse,
+//! rings are closed, exteriors run counterclockwise and holes clockwise (OGC SFA, RFC 7946
+//! §3.1.6), and geo finds the polygons valid; and WKB written by the `wkb` crate read back.
 
 use assert_cmd::Command;
 use geo::{Area, Validation};
+use geo_traits::to_geo::ToGeoGeometry;
 use std::str::FromStr;
 use tempfile::TempDir;
 
@@ -199,4 +200,57 @@ fn exact_output_on_request() {
         square.contains("[[0,0],[6,0],[6,6],[0,6],[0,0]]"),
         "{square}"
     );
+}
+
+/// The rings of a geo multipolygon as (x, y) lists.
+fn geo_rings(geometry: &geo::Geometry<f64>) -> Rings {
+    let geo::Geometry::MultiPolygon(mp) = geometry else {
+        panic!("not a MultiPolygon: {geometry:?}")
+    };
+    let ring = |r: &geo::LineString<f64>| r.coords().map(|c| (c.x, c.y)).collect();
+    mp.iter()
+        .map(|p| {
+            std::iter::once(p.exterior())
+                .chain(p.interiors())
+                .map(ring)
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn wkb_output_reads_in_the_wkb_crate_as_valid_ogc_polygons() {
+    let dir = tempfile::tempdir().unwrap();
+    let [a, b] = operands(&dir);
+    let file = dir.path().join("meet.wkb");
+    run(&["meet", &a, &b, "-o", file.to_str().unwrap()]);
+    let bytes = std::fs::read(&file).unwrap();
+    let geometry = wkb::reader::read_wkb(&bytes).unwrap().to_geometry();
+    check_meet(&geo_rings(&geometry));
+    check_geometry(geometry);
+    // The hex form spells the same bytes.
+    let hex = run(&["meet", &a, &b, "--to", "wkb-hex"]);
+    assert_eq!(hex::decode(hex.trim()).unwrap(), bytes);
+}
+
+#[test]
+fn wkb_of_the_wkb_crate_reads_in_either_byte_order() {
+    let dir = tempfile::tempdir().unwrap();
+    let [a, _] = operands(&dir);
+    // The square [0,6]² with the hole [1,2]×[3,4], as geo_types, the hole counterclockwise.
+    let ring = |points: Vec<(f64, f64)>| geo::LineString::from(points);
+    let square = geo::Polygon::new(
+        ring(vec![(0.0, 0.0), (6.0, 0.0), (6.0, 6.0), (0.0, 6.0)]),
+        vec![ring(vec![(1.0, 3.0), (2.0, 3.0), (2.0, 4.0), (1.0, 4.0)])],
+    );
+    let want = run(&["convert", &a, "--to", "wkt"]);
+    for endianness in [wkb::Endianness::BigEndian, wkb::Endianness::LittleEndian] {
+        let mut bytes = Vec::new();
+        let options = wkb::writer::WriteOptions { endianness };
+        wkb::writer::write_geometry(&mut bytes, &square, &options).unwrap();
+        let file = dir.path().join("square.wkb");
+        std::fs::write(&file, &bytes).unwrap();
+        let got = run(&["convert", file.to_str().unwrap(), "--to", "wkt"]);
+        assert_eq!(got, want, "{endianness:?}");
+    }
 }

@@ -58,8 +58,9 @@ pub enum Command {
 /// How inputs are read.
 #[derive(Args, Debug, Clone)]
 pub struct ReadOpts {
-    /// Input format (default: from the file extension; for standard input, yin2, or OBJ if
-    /// the other inputs are 3D).
+    /// Input format (default: from the file extension; for standard input, WKB hex if it is
+    /// all hex digits, else yin2, or OBJ if the other inputs are 3D). A .wkb file or --from
+    /// wkb of hex digits is read as wkb-hex.
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub from: Option<Format>,
     /// Read the rings as polygon soup and take the region they cover under this rule.
@@ -68,7 +69,7 @@ pub struct ReadOpts {
     /// Float mode with tolerance E > 0 (default: exact rational arithmetic).
     #[arg(long, value_name = "E", value_parser = positive_eps, allow_hyphen_values = true)]
     pub eps: Option<f64>,
-    /// Drop the points and lines of WKT and GeoJSON inputs (such as a FeatureCollection's
+    /// Drop the points and lines of WKT, GeoJSON and WKB inputs (such as a FeatureCollection's
     /// Points) instead of rejecting them; only the polygons are read.
     #[arg(long)]
     pub polygonal_only: bool,
@@ -113,7 +114,8 @@ pub struct WriteOpts {
     pub to: Option<Format>,
     /// Write WKT and GeoJSON coordinates exactly (decimals where they terminate, else `p/q` in
     /// WKT and an error in GeoJSON) instead of the shortest decimals of the nearest f64s, which
-    /// other GIS tools read; yin2 and OBJ are always exact.
+    /// other GIS tools read; yin2 and OBJ are always exact. WKB holds f64s: with --exact, a
+    /// coordinate that is not one is an error instead of rounded.
     #[arg(long)]
     pub exact: bool,
 }

@@ -122,7 +122,8 @@ fn dump<N: Num>(sets: &[YinSet2<N>; 3]) -> String {
         .iter()
         .zip(sets)
         .map(|(name, s)| {
-            let text = encode(s, Format::Yin2, NumberStyle::Exact).unwrap_or_default();
+            let bytes = encode(s, Format::Yin2, NumberStyle::Exact).unwrap_or_default();
+            let text = String::from_utf8_lossy(&bytes);
             format!("{name}:\n{text}")
         })
         .collect()

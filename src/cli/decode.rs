@@ -1,9 +1,10 @@
-//! Text of any format → oriented rings (2D) or faces (3D: OBJ, STL, OFF, PLY), remembering where
-//! each ring or face came from for messages.
+//! Text or WKB of any format → oriented rings (2D) or faces (3D: OBJ, STL, OFF, PLY), remembering
+//! where each ring or face came from for messages.
 
 use super::format::Format;
 use crate::io::mesh::{Mesh, MeshError};
 use crate::io::obj::read_obj;
+use crate::io::wkb::{self, WkbError};
 use crate::io::yin2_text::{self, Yin2Text};
 use crate::io::{geojson, wkt, ParseError, Polygon};
 use crate::io::{off::read_off, ply::read_ply, stl::read_stl};
@@ -68,10 +69,39 @@ pub fn decode<N: Num>(
         (Format::Geojson, false) => geojson::read_polygons(text)?,
         (Format::Geojson, true) => geojson::read_polygonal_parts(text)?,
         (Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply, _) => {
-            return Err(mesh_is_3d(format))
+            return Err(not_here(format, "holds 3D sets, not 2D rings"))
+        }
+        (Format::Wkb | Format::WkbHex, _) => {
+            return Err(not_here(format, "is binary: decoded from bytes, not text"))
         }
     };
     Ok(Decoded::Boundary(Rings::of_polygons(polygons)))
+}
+
+/// Decode WKB `bytes` (their hex digits if `hex`); with `polygonal_only`, points and line
+/// strings are dropped instead of rejected.
+pub fn decode_wkb<N: Num>(
+    bytes: &[u8],
+    hex: bool,
+    polygonal_only: bool,
+) -> Result<Rings<N>, WkbError> {
+    let digits;
+    let bytes = if hex {
+        let text = std::str::from_utf8(bytes).map_err(|e| WkbError {
+            offset: e.valid_up_to() / 2,
+            message: "not hex digits: this byte is not even UTF-8 text".to_string(),
+        })?;
+        digits = wkb::from_hex(text)?;
+        &digits
+    } else {
+        bytes
+    };
+    let polygons = if polygonal_only {
+        wkb::read_polygonal_parts(bytes)?
+    } else {
+        wkb::read_polygons(bytes)?
+    };
+    Ok(Rings::of_polygons(polygons))
 }
 
 /// Decode the file `bytes` in `format`, a format of 3D sets: its mesh (no faces: the empty set),
@@ -98,7 +128,7 @@ pub fn decode_mesh<N: Num>(bytes: &[u8], format: Format) -> Result<Decoded<Mesh<
         Format::Stl | Format::StlBinary => read_stl(bytes)?,
         Format::Off => read_off(text()?)?,
         Format::Ply => read_ply(bytes)?,
-        Format::Yin2 | Format::Wkt | Format::Geojson => {
+        Format::Yin2 | Format::Wkt | Format::Geojson | Format::Wkb | Format::WkbHex => {
             return Err(MeshError::Text(ParseError {
                 line: 1,
                 column: 1,
@@ -114,12 +144,13 @@ fn has_line(text: &str, line: &str) -> bool {
     text.lines().any(|l| l.trim() == line)
 }
 
-/// The error of decoding a 3D `format` as a 2D one (the command line never asks for it).
-fn mesh_is_3d(format: Format) -> ParseError {
+/// The error of decoding `format` as 2D text, which it is not (`why`; the command line never
+/// asks for it).
+fn not_here(format: Format, why: &str) -> ParseError {
     ParseError {
         line: 1,
         column: 1,
-        message: format!("{} holds 3D sets, not 2D rings", format.name()),
+        message: format!("{} {why}", format.name()),
     }
 }
 

@@ -1,4 +1,5 @@
-//! A Yin set → a file of any format (yin2 exactly; OGC polygons only for bounded sets; OBJ, one
+//! A Yin set → a file of any format (yin2 exactly; OGC polygons — WKT, GeoJSON, WKB — only for
+//! bounded sets; OBJ, one
 //! object per glued surface, STL, OFF and PLY for 3D sets).
 
 use super::decode::WHOLE_SPACE;
@@ -8,34 +9,42 @@ use crate::io::obj::write_obj;
 use crate::io::off::write_off;
 use crate::io::ply::write_ply;
 use crate::io::stl::{write_stl_ascii, write_stl_binary};
-use crate::io::{geojson, polygons_of, wkt, yin2_text, NumberStyle, Polygon, WriteError};
+use crate::io::{geojson, polygons_of, wkb, wkt, yin2_text, NumberStyle, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
 
-/// A writer of OGC polygons (WKT or GeoJSON).
-type Writer<N> = fn(&[Polygon<N>], NumberStyle) -> Result<String, WriteError>;
+/// A writer of OGC polygons (WKT, GeoJSON or WKB) to bytes.
+type Writer<N> = fn(&[Polygon<N>], NumberStyle) -> Result<Vec<u8>, WriteError>;
 
-/// The text of `set` in `format`, WKT and GeoJSON coordinates in `style`.
+/// The file of `set` in `format`, WKT, GeoJSON and WKB coordinates in `style`.
 pub fn encode<N: Num>(
     set: &YinSet2<N>,
     format: Format,
     style: NumberStyle,
-) -> Result<String, CliError> {
+) -> Result<Vec<u8>, CliError> {
     let (name, write): (_, Writer<N>) = match format {
-        Format::Yin2 => return Ok(yin2(set)),
+        Format::Yin2 => return Ok(yin2(set).into_bytes()),
         Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply => {
             return Err(wrong_dimension(format, Dimension::Two))
         }
-        Format::Wkt => ("WKT", wkt::write_multipolygon),
-        Format::Geojson => ("GeoJSON", geojson::write_multipolygon),
+        Format::Wkt => ("WKT", |p, s| line(wkt::write_multipolygon(p, s)?)),
+        Format::Geojson => ("GeoJSON", |p, s| line(geojson::write_multipolygon(p, s)?)),
+        Format::Wkb => ("WKB", wkb::write_multipolygon),
+        Format::WkbHex => ("WKB", |p, s| {
+            line(wkb::to_hex(&wkb::write_multipolygon(p, s)?))
+        }),
     };
-    let text = write(&polygons(set, name)?, style).map_err(|source| CliError::Unwritable {
+    write(&polygons(set, name)?, style).map_err(|source| CliError::Unwritable {
         format: name,
         source,
-    })?;
-    Ok(text + "\n")
+    })
+}
+
+/// `text` as the bytes of a line.
+fn line(text: String) -> Result<Vec<u8>, WriteError> {
+    Ok((text + "\n").into_bytes())
 }
 
 /// The file of the 3D `set` in `format`. Only OBJ can hold 1̂, by its whole-space comment
@@ -57,7 +66,7 @@ pub fn encode3<N: Num>(set: &YinSet3<N>, format: Format) -> Result<Vec<u8>, CliE
         Format::StlBinary => Ok(write_stl_binary(v, t)?),
         Format::Off => Ok(write_off(v, t).into_bytes()),
         Format::Ply => Ok(write_ply(v, t).into_bytes()),
-        Format::Yin2 | Format::Wkt | Format::Geojson => {
+        Format::Yin2 | Format::Wkt | Format::Geojson | Format::Wkb | Format::WkbHex => {
             Err(wrong_dimension(format, Dimension::Three))
         }
     }
@@ -140,7 +149,7 @@ mod tests {
         let wkt = encode(&square_with_hole(), Format::Wkt, NumberStyle::Decimal).unwrap();
         assert_eq!(
             wkt,
-            "MULTIPOLYGON (((0 0, 2 0, 4 0, 4 4, 0 4, 0 0), (1 2, 3 2, 2 0, 1 2)))\n"
+            b"MULTIPOLYGON (((0 0, 2 0, 4 0, 4 4, 0 4, 0 0), (1 2, 3 2, 2 0, 1 2)))\n"
         );
         let empty = encode(
             &YinSet2::<Rational>::empty(),
@@ -148,7 +157,13 @@ mod tests {
             NumberStyle::Decimal,
         )
         .unwrap();
-        assert_eq!(empty, "{\"type\":\"MultiPolygon\",\"coordinates\":[]}\n");
+        assert_eq!(empty, b"{\"type\":\"MultiPolygon\",\"coordinates\":[]}\n");
+        let hex = encode(&square_with_hole(), Format::WkbHex, NumberStyle::Exact).unwrap();
+        let bytes = encode(&square_with_hole(), Format::Wkb, NumberStyle::Exact).unwrap();
+        // One polygon of two rings, 6 and 4 points: 9 + 9 + (4 + 6·16) + (4 + 4·16) bytes.
+        assert_eq!(bytes.len(), 186);
+        assert_eq!(hex.len(), 2 * 186 + 1);
+        assert!(hex.starts_with(b"0106000000010000000103000000"));
     }
 
     #[test]
@@ -158,9 +173,9 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("unbounded") && e.contains("--to yin2"), "{e}");
-        assert!(encode(&outside, Format::Yin2, NumberStyle::Exact)
-            .unwrap()
-            .contains("\n\n"));
+        let yin2 = encode(&outside, Format::Yin2, NumberStyle::Exact).unwrap();
+        assert!(String::from_utf8(yin2).unwrap().contains("\n\n"));
+        assert!(encode(&outside, Format::Wkb, NumberStyle::Exact).is_err());
     }
 
     #[test]
@@ -172,7 +187,7 @@ mod tests {
         )
         .unwrap();
         assert!(matches!(
-            decode::<Rational>(&full, Format::Yin2, false),
+            decode::<Rational>(std::str::from_utf8(&full).unwrap(), Format::Yin2, false),
             Ok(Decoded::Full)
         ));
         let empty = encode(
@@ -181,7 +196,7 @@ mod tests {
             NumberStyle::Decimal,
         )
         .unwrap();
-        match decode::<Rational>(&empty, Format::Yin2, false) {
+        match decode::<Rational>(std::str::from_utf8(&empty).unwrap(), Format::Yin2, false) {
             Ok(Decoded::Boundary(r)) => assert!(r.rings.is_empty()),
             _ => panic!("not empty"),
         }

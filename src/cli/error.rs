@@ -2,6 +2,7 @@
 
 use crate::io::mesh::MeshError;
 use crate::io::stl::NotF32;
+use crate::io::wkb::WkbError;
 use crate::io::{ParseError, WriteError};
 use std::process::ExitCode;
 
@@ -32,6 +33,13 @@ pub enum CliError {
     /// Malformed text.
     #[error("{name}: {source}")]
     Parse { name: String, source: ParseError },
+    /// Malformed WKB (binary or hex).
+    #[error("{name}: {format}: {source}")]
+    Wkb {
+        name: String,
+        format: &'static str,
+        source: WkbError,
+    },
     /// A malformed mesh file (text or binary).
     #[error("{name}: {source}")]
     Mesh { name: String, source: MeshError },

@@ -1,4 +1,4 @@
-//! The file formats — three of 2D sets, four of 3D sets — and how a file's format is chosen: by
+//! The file formats — five of 2D sets, four of 3D sets — and how a file's format is chosen: by
 //! option, else by extension.
 
 use super::error::CliError;
@@ -14,6 +14,11 @@ pub enum Format {
     Wkt,
     /// GeoJSON: Polygon, MultiPolygon, Feature, FeatureCollection.
     Geojson,
+    /// Well-known binary (f64 coordinates): Polygon, MultiPolygon, GeometryCollection; read
+    /// as hex too when the input is all hex digits.
+    Wkb,
+    /// Well-known binary as hex digits (as PostGIS prints it).
+    WkbHex,
     /// Wavefront OBJ: the triangles bounding a 3D set, one object per glued surface.
     Obj,
     /// STL, ASCII or binary when read; ASCII (exact) when written.
@@ -28,14 +33,15 @@ pub enum Format {
 }
 
 /// The extensions of the formats, for messages.
-pub const EXTENSIONS: &str = ".txt/.yin2, .wkt, .geojson/.json (2D); .obj, .stl, .off, .ply (3D)";
+pub const EXTENSIONS: &str =
+    ".txt/.yin2, .wkt, .geojson/.json, .wkb (2D); .obj, .stl, .off, .ply (3D)";
 /// The format names, for messages.
-pub const NAMES: &str = "yin2|wkt|geojson|obj|stl|stl-binary|off|ply";
+pub const NAMES: &str = "yin2|wkt|geojson|wkb|wkb-hex|obj|stl|stl-binary|off|ply";
 
 /// The dimension of the sets a format holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Dimension {
-    /// Plane sets: yin2, WKT, GeoJSON.
+    /// Plane sets: yin2, WKT, GeoJSON, WKB.
     Two,
     /// Sets in space: OBJ, STL, OFF, PLY.
     Three,
@@ -73,6 +79,7 @@ impl Format {
             "txt" | "yin2" => Some(Format::Yin2),
             "wkt" => Some(Format::Wkt),
             "geojson" | "json" => Some(Format::Geojson),
+            "wkb" => Some(Format::Wkb),
             "obj" => Some(Format::Obj),
             "stl" => Some(Format::Stl),
             "off" => Some(Format::Off),
@@ -114,7 +121,9 @@ impl Format {
             Format::Obj | Format::Stl | Format::StlBinary | Format::Off | Format::Ply => {
                 Dimension::Three
             }
-            Format::Yin2 | Format::Wkt | Format::Geojson => Dimension::Two,
+            Format::Yin2 | Format::Wkt | Format::Geojson | Format::Wkb | Format::WkbHex => {
+                Dimension::Two
+            }
         }
     }
 
@@ -124,7 +133,7 @@ impl Format {
             return Ok(());
         }
         let instead = match dimension {
-            Dimension::Two => "yin2, wkt or geojson",
+            Dimension::Two => "yin2, wkt, geojson, wkb or wkb-hex",
             Dimension::Three => "obj, stl, stl-binary, off or ply",
         };
         Err(CliError::Usage(format!(
@@ -178,9 +187,26 @@ impl Format {
     }
 
     /// True if output in this format may have the extension of format `ext` (binary STL is
-    /// `.stl` too).
+    /// `.stl` too, WKB hex `.wkb`).
     fn writes_extension_of(self, ext: Format) -> bool {
-        self == ext || (self, ext) == (Format::StlBinary, Format::Stl)
+        self == ext
+            || [
+                (Format::StlBinary, Format::Stl),
+                (Format::WkbHex, Format::Wkb),
+            ]
+            .contains(&(self, ext))
+    }
+
+    /// The format of input `bytes` declared `self`: WKB hex if they are all hex digits and
+    /// were declared WKB, or came from standard input without `--from` (as yin2 by default:
+    /// a yin2 text has blanks between its numbers, WKB hex none).
+    pub fn sniffed(self, bytes: &[u8], path: &Path, from: Option<Format>) -> Format {
+        let may_be_hex = self == Format::Wkb || (is_std(path) && from.is_none());
+        if may_be_hex && crate::io::wkb::is_hex(bytes) {
+            Format::WkbHex
+        } else {
+            self
+        }
     }
 
     /// The name used on the command line.
@@ -189,6 +215,8 @@ impl Format {
             Format::Yin2 => "yin2",
             Format::Wkt => "wkt",
             Format::Geojson => "geojson",
+            Format::Wkb => "wkb",
+            Format::WkbHex => "wkb-hex",
             Format::Obj => "obj",
             Format::Stl => "stl",
             Format::StlBinary => "stl-binary",
@@ -271,5 +299,31 @@ mod tests {
         let e = Format::of_output(None, Some(Format::Obj), Two).unwrap_err();
         assert!(e.to_string().contains("obj holds 3D sets"), "{e}");
         assert!(Format::of_input(p("a.obj"), None, Two).is_err());
+    }
+
+    #[test]
+    fn wkb_by_extension_and_hex_by_content() {
+        let wkb = Format::of_input(p("a.WKB"), None, Two).unwrap();
+        assert_eq!(wkb, Format::Wkb);
+        let hex = b"0106000000\n";
+        assert_eq!(wkb.sniffed(hex, p("a.wkb"), None), Format::WkbHex);
+        assert_eq!(wkb.sniffed(&[1, 6, 0], p("a.wkb"), None), Format::Wkb);
+        assert_eq!(Format::Yin2.sniffed(hex, p("-"), None), Format::WkbHex);
+        assert_eq!(
+            Format::Yin2.sniffed(b"0 0\n1 0\n", p("-"), None),
+            Format::Yin2
+        );
+        let yin2 = Some(Format::Yin2);
+        assert_eq!(Format::Yin2.sniffed(hex, p("-"), yin2), Format::Yin2);
+        assert_eq!(Format::Yin2.sniffed(hex, p("a.txt"), None), Format::Yin2);
+        assert_eq!(
+            Format::of_output(Some(p("o.wkb")), None, Two).unwrap(),
+            Format::Wkb
+        );
+        assert_eq!(
+            Format::of_output(Some(p("o.wkb")), Some(Format::WkbHex), Two).unwrap(),
+            Format::WkbHex
+        );
+        assert!(Format::of_output(Some(p("o.wkt")), Some(Format::Wkb), Two).is_err());
     }
 }

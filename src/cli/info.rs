@@ -53,6 +53,25 @@ pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
     })
 }
 
+/// The one-line summary `validate` gives of `set`: curves, Betti numbers, boundedness. Not its
+/// exact area, which `info` reports: an exact result's area can have far more digits than its
+/// coordinates (320 576 characters for the meet of two 10⁴-vertex stars) and summing it took
+/// 80% of the time of reading such a result back (benches/BENCHMARKS.md).
+pub fn summary<N: Num>(set: &YinSet2<N>) -> String {
+    let b = set.betti();
+    let extent = if set.is_bounded() {
+        "bounded (its area: yinset info)"
+    } else {
+        "unbounded"
+    };
+    format!(
+        "{} curves, b0 = {}, holes per component {:?}, {extent}",
+        set.curves().len(),
+        b.components,
+        b.holes
+    )
+}
+
 /// The JSON report on the 3D `set`, in the terms of the 2D one: volume for area, surfaces
 /// (glued surfaces, each with its parent in the Hasse diagram) for curves.
 pub fn report3<N: Num>(set: &YinSet3<N>) -> Value {
@@ -138,6 +157,10 @@ mod tests {
         );
         assert_eq!(r["homology"], json!({"b0": 1, "b1": 1}));
         assert_eq!(r["area"]["exact"], "35/2");
+        assert_eq!(
+            summary(&set),
+            "2 curves, b0 = 1, holes per component [1], bounded (its area: yinset info)"
+        );
         assert_eq!(r["area"]["float"], 17.5);
         assert_eq!(r["hasse"][1]["parent"], 0);
         assert_eq!(r["hasse"][0]["parent"], Value::Null);

@@ -1,8 +1,8 @@
 //! Files and standard input → Yin sets: read, decode, validate (or fill), with located errors;
-//! 2D sets from yin2, WKT and GeoJSON, 3D sets from OBJ, STL, OFF and PLY.
+//! 2D sets from yin2, WKT, GeoJSON and WKB, 3D sets from OBJ, STL, OFF and PLY.
 
 use super::args::{FillArg, ReadOpts};
-use super::decode::{decode, decode_mesh, locate_faces, Decoded, Rings};
+use super::decode::{decode, decode_mesh, decode_wkb, locate_faces, Decoded, Rings};
 use super::error::CliError;
 use super::format::{is_std, Dimension, Format};
 use super::progress;
@@ -36,7 +36,12 @@ pub fn one_stdin<'a>(paths: impl IntoIterator<Item = &'a Path>) -> Result<(), Cl
 /// The text of `path` (`-`: standard input), refused as [`read_bytes`] does, if it is not
 /// UTF-8, or if a number has more than `opts.max_digits` digits in a row.
 pub fn read_text(path: &Path, opts: &ReadOpts) -> Result<String, CliError> {
-    let text = String::from_utf8(read_bytes(path, opts)?).map_err(|e| CliError::Read {
+    text_of(path, read_bytes(path, opts)?, opts)
+}
+
+/// The text of `bytes` read from `path`, refused as [`read_text`] says.
+fn text_of(path: &Path, bytes: Vec<u8>, opts: &ReadOpts) -> Result<String, CliError> {
+    let text = String::from_utf8(bytes).map_err(|e| CliError::Read {
         name: name(path),
         source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
     })?;
@@ -78,8 +83,20 @@ pub fn read_bytes(path: &Path, opts: &ReadOpts) -> Result<Vec<u8>, CliError> {
 
 /// The Yin set in `path`, read as `opts` say, with number context `ctx`.
 pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2<N>, CliError> {
-    let format = Format::of_input(path, opts.from, Dimension::Two)?;
-    let text = read_text(path, opts)?;
+    let declared = Format::of_input(path, opts.from, Dimension::Two)?;
+    let bytes = read_bytes(path, opts)?;
+    let format = declared.sniffed(&bytes, path, opts.from);
+    if let Format::Wkb | Format::WkbHex = format {
+        let hex = format == Format::WkbHex;
+        let rings =
+            decode_wkb(&bytes, hex, opts.polygonal_only).map_err(|source| CliError::Wkb {
+                name: name(path),
+                format: format.name(),
+                source,
+            })?;
+        return from_rings(path, rings, opts, ctx);
+    }
+    let text = text_of(path, bytes, opts)?;
     let rings = match decode::<N>(&text, format, opts.polygonal_only) {
         Ok(Decoded::Full) => return Ok(YinSet2::full().with_ctx(ctx)),
         Ok(Decoded::Boundary(rings)) => rings,
@@ -90,6 +107,16 @@ pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2
             return Err(parse_error(path, source));
         }
     };
+    from_rings(path, rings, opts, ctx)
+}
+
+/// The Yin set bounded by `rings` read from `path` (or covered by them, under `opts.fill`).
+fn from_rings<N: Num>(
+    path: &Path,
+    rings: Rings<N>,
+    opts: &ReadOpts,
+    ctx: N::Ctx,
+) -> Result<YinSet2<N>, CliError> {
     if rings.rings.is_empty() {
         return Ok(YinSet2::empty().with_ctx(ctx));
     }

@@ -76,7 +76,7 @@ impl<N: Num> Set for YinSet2<N> {
         load(path, opts, ctx)
     }
     fn encode(&self, format: Format, style: NumberStyle) -> Result<Vec<u8>, CliError> {
-        encode(self, format, style).map(String::into_bytes)
+        encode(self, format, style)
     }
     fn size(&self) -> usize {
         self.curves().iter().map(|c| c.len()).sum()
@@ -85,7 +85,7 @@ impl<N: Num> Set for YinSet2<N> {
         info::report(self)
     }
     fn describe(&self) -> String {
-        crate::demo::describe(self)
+        info::summary(self)
     }
     fn locate_text(&self, text: &str) -> Result<String, ParseError> {
         Ok(locate::aligned(&locate::read_points(text)?, |p| {

@@ -28,16 +28,9 @@ pub(crate) fn coordinate_text<N: Num>(
     fractions: bool,
 ) -> Result<String, String> {
     match style {
-        NumberStyle::Decimal => {
-            let f = n.to_f64();
-            if f.is_finite() {
-                Ok(f.to_string())
-            } else {
-                Err(format!(
-                    "the coordinate {n} is beyond the range of f64 decimals: write it exactly"
-                ))
-            }
-        }
+        NumberStyle::Decimal => nearest_f64(n)
+            .map(|f| f.to_string())
+            .map_err(|e| format!("{e}: write it exactly")),
         NumberStyle::Exact => decimal_text(n, || {
             if fractions {
                 Ok(n.to_string())
@@ -48,6 +41,16 @@ pub(crate) fn coordinate_text<N: Num>(
                 ))
             }
         }),
+    }
+}
+
+/// The `f64` nearest to `n`, or why there is none: `n` is beyond the range of `f64`.
+pub(crate) fn nearest_f64<N: Num>(n: &N) -> Result<f64, String> {
+    let f = n.to_f64();
+    if f.is_finite() {
+        Ok(f)
+    } else {
+        Err(format!("the coordinate {n} is beyond the range of f64"))
     }
 }
 

@@ -1,6 +1,6 @@
-//! Formats read and written exactly: the `yin2` curve lists ([`yin2_text`]), WKT ([`wkt`]) and
-//! GeoJSON ([`geojson`]) in 2D; the meshes ([`mesh`]) of Wavefront OBJ ([`obj`]), STL
-//! ([`stl`]), OFF ([`off`]) and PLY ([`ply`]) in 3D. Pictures: SVG of 2D sets ([`svg`]); PNG
+//! Formats read and written exactly: the `yin2` curve lists ([`yin2_text`]), WKT ([`wkt`]),
+//! GeoJSON ([`geojson`]) and WKB ([`wkb`], binary `f64` coordinates) in 2D; the meshes
+//! ([`mesh`]) of Wavefront OBJ ([`obj`]), STL ([`stl`]), OFF ([`off`]) and PLY ([`ply`]) in 3D. Pictures: SVG of 2D sets ([`svg`]); PNG
 //! ([`png3`]) and interactive HTML ([`html3`]) of 3D sets, from a [`scene3`].
 //!
 //! Readers parse every coordinate with [`crate::num::Num::parse`], so exact backends get the
@@ -28,6 +28,7 @@ pub mod stl;
 pub mod svg;
 #[cfg(test)]
 mod testdata;
+pub mod wkb;
 pub mod wkt;
 pub mod yin2_text;
 

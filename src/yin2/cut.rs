@@ -3,6 +3,7 @@
 use super::intersect::{intersections, Edge};
 use crate::kernel::{Contact, Point};
 use crate::num::Num;
+use rayon::prelude::*;
 
 /// For each edge `i`, its pieces between consecutive points where it meets an edge `j` with
 /// `wanted(i, j)` (MRS-a by the sweep, then MRS-b), in the edge's direction.
@@ -21,8 +22,9 @@ pub(crate) fn cut_at_contacts<N: Num>(
         cuts[i].extend(points.iter().cloned());
         cuts[j].extend(points);
     }
+    // Each edge is cut on its own: in parallel, in the edges' order.
     edges
-        .iter()
+        .par_iter()
         .zip(cuts)
         .map(|(e, cut)| cut_edge(e, cut))
         .collect()

@@ -2,6 +2,7 @@
 
 use crate::kernel::{orient, Point};
 use crate::num::{segment_distance, Num};
+use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 use std::cmp::Ordering;
@@ -127,7 +128,15 @@ pub(crate) fn locate_within<N: Num>(
     queries: &[Point<N>],
     eps: f64,
 ) -> Vec<Location> {
-    let mut out = locate_in_edges(edges, unbounded, queries, &N::exact_ctx());
+    // Chunks of queries swept in parallel, each over all edges: worth it once there are more
+    // queries than edges. Results concatenated in the queries' order.
+    let chunks = rayon::current_num_threads().min(queries.len() / edges.len().max(1));
+    let size = queries.len().div_ceil(chunks.max(1)).max(1);
+    let mut out: Vec<Location> = queries
+        .par_chunks(size)
+        .map(|part| locate_in_edges(edges, unbounded, part, &N::exact_ctx()))
+        .collect::<Vec<_>>()
+        .concat();
     if eps <= 0.0 {
         return out;
     }
@@ -145,9 +154,9 @@ pub(crate) fn locate_within<N: Num>(
         })
         .collect();
     let tree = RTree::bulk_load(boxes);
-    for (q, loc) in queries.iter().zip(&mut out) {
+    out.par_iter_mut().zip(queries).for_each(|(loc, q)| {
         if *loc == Location::OnBoundary {
-            continue;
+            return;
         }
         let p = q.to_f64();
         let near = AABB::from_corners(
@@ -160,7 +169,7 @@ pub(crate) fn locate_within<N: Num>(
         {
             *loc = Location::OnBoundary;
         }
-    }
+    });
     out
 }
 
@@ -279,6 +288,28 @@ mod tests {
 
     fn p(x: i64, y: i64) -> Point<Rational> {
         Point::int(x, y)
+    }
+
+    #[test]
+    fn many_queries_are_located_in_chunks_in_their_order() {
+        // The diamond |x| + |y| < 4; queries on a 21×21 grid, far more than its 4 edges, so
+        // they are swept in parallel chunks. Oracle: the inequality itself.
+        let v = [p(4, 0), p(0, 4), p(-4, 0), p(0, -4)];
+        let edges: Vec<_> = (0..4).map(|k| (&v[k], &v[(k + 1) % 4])).collect();
+        let grid: Vec<(i64, i64)> = (-10..=10)
+            .flat_map(|x| (-10..=10).map(move |y| (x, y)))
+            .collect();
+        let queries: Vec<_> = grid.iter().map(|&(x, y)| p(x, y)).collect();
+        let got = locate_within(&edges, false, &queries, 0.0);
+        let want: Vec<Location> = grid
+            .iter()
+            .map(|&(x, y)| match (x.abs() + y.abs()).cmp(&4) {
+                Ordering::Less => Location::Inside,
+                Ordering::Equal => Location::OnBoundary,
+                Ordering::Greater => Location::Outside,
+            })
+            .collect();
+        assert_eq!(got, want);
     }
 
     #[test]
