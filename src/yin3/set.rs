@@ -94,7 +94,7 @@ impl<N: Num> Brep<N> {
         let mut surfaces: Vec<GluedSurface> = (0..count)
             .map(|s| GluedSurface {
                 triangles: Vec::new(),
-                positive: h.volume6[s].sign() == std::cmp::Ordering::Greater,
+                positive: h.positive[s],
                 genus: genus[s],
             })
             .collect();
