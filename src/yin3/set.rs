@@ -8,7 +8,7 @@ use super::fins::{first_non_alternating, FinTable, Pairing};
 use super::geom::det3;
 use super::glue::{corner_cycles, glued_surfaces};
 use super::hasse::{hasse, Atom3};
-use super::locate::{on_triangles, winding};
+use super::locate::{on_triangles, winding, TriBoxes};
 use crate::kernel::{BBox3, Point3};
 use crate::num::Num;
 use crate::yin2::Location;
@@ -125,13 +125,19 @@ impl<N: Num> Brep<N> {
     }
 
     /// Locate each point (DESIGN-3D §2.11).
+    /// The triangles' boxes are put in an R-tree first, so that each point meets only the
+    /// triangles near it and near its ray.
     pub(crate) fn locate(&self, points: &[Point3<N>], ctx: &N::Ctx) -> Vec<Location> {
+        let boxes = TriBoxes::new((0..self.tris.len()).map(|t| (t, self.corners(t))));
         points
             .iter()
             .map(|q| {
-                if on_triangles(self.all_corners(), q, ctx) {
+                if on_triangles(boxes.at(q).map(|t| self.corners(t)), q, ctx) {
                     Location::OnBoundary
-                } else if winding(self.all_corners(), q, ctx) + i64::from(!self.bounded) == 1 {
+                } else if winding(boxes.along_x(q).map(|t| self.corners(t)), q, ctx)
+                    + i64::from(!self.bounded)
+                    == 1
+                {
                     Location::Inside
                 } else {
                     Location::Outside
