@@ -14,6 +14,7 @@
 //! error instead of a time when it rejects the input or fails, and "vol≠" when its volume
 //! differs from our exact one by more than 10⁻⁶ relative (a mangled result).
 
+#[allow(dead_code)] // only the thread clock is used here
 #[path = "peers/cpu_time.rs"]
 mod cpu_time;
 #[path = "yin3_work/mod.rs"]
@@ -80,16 +81,19 @@ struct Opts {
     max_m: usize,
 }
 
-/// Our meet of the files in backend `N`: best CPU ms over `reps` and the volume.
-fn ours<N: Num>(a: &Path, b: &Path, reps: usize) -> Cell {
+/// Our meet of the files in backend `N`: best CPU ms over `reps` and (if `volume`) the
+/// volume of the result, NaN otherwise.
+fn ours<N: Num>(a: &Path, b: &Path, reps: usize, volume: bool) -> Cell {
     let (x, y) = (work::load::<N>(a), work::load::<N>(b));
     let mut best = f64::INFINITY;
-    let mut vol = 0.0;
+    let mut vol = f64::NAN;
     for _ in 0..reps {
         let t0 = thread_cpu();
         let m: YinSet3<N> = x.meet(&y);
         best = best.min((thread_cpu() - t0).as_secs_f64() * 1e3);
-        vol = m.volume().map_or(f64::NAN, |v| v.to_f64());
+        if volume {
+            vol = m.volume().map_or(f64::NAN, |v| v.to_f64());
+        }
         if best > 2000.0 {
             break;
         }
@@ -165,11 +169,11 @@ fn row(label: &str, a: &Path, b: &Path, o: &Opts, exact: bool) -> (Vec<Cell>, Op
     let cgal = target("cgal3d/cgal3d");
     let bm = target("mesh_peers/release/mesh_peers");
     let e = if exact {
-        ours::<Rational>(a, b, o.reps)
+        ours::<Rational>(a, b, o.reps, true)
     } else {
         Cell::Status("skipped".into())
     };
-    let f = ours::<Float>(a, b, o.reps);
+    let f = ours::<Float>(a, b, o.reps, true);
     let reference = match (&e, &f) {
         (Cell::Time(_, v), _) => Some(*v),
         (_, Cell::Time(_, v)) => Some(*v),
@@ -183,28 +187,28 @@ fn row(label: &str, a: &Path, b: &Path, o: &Opts, exact: bool) -> (Vec<Cell>, Op
             a,
             b,
             &["--reps", &reps],
-            600,
+            60,
         ),
         peer(
             &[cgal.to_str().unwrap()],
             a,
             b,
             &["--engine", "corefine", "--reps", &reps],
-            600,
+            60,
         ),
         peer(
             &[cgal.to_str().unwrap()],
             a,
             b,
             &["--engine", "nef", "--reps", "1"],
-            600,
+            60,
         ),
         peer(
             &[bm.to_str().unwrap(), "boolmesh"],
             a,
             b,
             &["--reps", &reps],
-            600,
+            60,
         ),
     ];
     eprintln!("done: {label}");
@@ -235,6 +239,12 @@ fn line(label: &str, cells: &[Cell], reference: Option<f64>) -> String {
     )
 }
 
+/// Print a line of the table as soon as it is measured (the run is long), and return it.
+fn say(l: String) -> String {
+    print!("{l}");
+    l
+}
+
 /// The octasphere sizes of V1: m = 8·√2^i, so that n = 8m² about doubles per step.
 fn v1_sizes(max_m: usize) -> Vec<usize> {
     (0..)
@@ -251,9 +261,9 @@ fn peak(mode: &str, m: usize) {
         work::write(&format!("v1_b_{m}"), &b),
     );
     let cell = if mode == "exact" {
-        ours::<Rational>(&pa, &pb, 1)
+        ours::<Rational>(&pa, &pb, 1, false)
     } else {
-        ours::<Float>(&pa, &pb, 1)
+        ours::<Float>(&pa, &pb, 1, false)
     };
     println!(
         "V1 m={m} n={} {mode} meet: {} ms",
@@ -284,7 +294,7 @@ fn main() {
             .unwrap_or(60.0),
         max_m: get("--max-m").and_then(|s| s.parse().ok()).unwrap_or(128),
     };
-    let mut table = String::from(HEAD);
+    let mut table = say(HEAD.to_string());
     let mut v1_times: Vec<(usize, Option<f64>, Option<f64>, Option<f64>)> = Vec::new();
     let mut exact = true;
     for m in v1_sizes(o.max_m) {
@@ -296,7 +306,7 @@ fn main() {
         );
         let label = format!("V1 n={n}");
         let (cells, r) = row(&label, &pa, &pb, &o, exact);
-        table += &line(&label, &cells, r);
+        table += &say(line(&label, &cells, r));
         v1_times.push((n, cells[0].ms(), cells[1].ms(), cells[2].ms()));
         if cells[0].ms().is_some_and(|ms| ms > o.max_exact_s * 1e3) {
             exact = false;
@@ -309,13 +319,13 @@ fn main() {
             let label = format!("V2 {name} k={k}");
             let pm = work::write(&format!("v2_{name}_{k}"), &m);
             let (cells, r) = row(&label, &pg, &pm, &o, true);
-            table += &line(&label, &cells, r);
+            table += &say(line(&label, &cells, r));
         }
     }
     for (label, a, b) in work::v3_files() {
         let label = format!("V3 {label}");
         let (cells, r) = row(&label, &a, &b, &o, true);
-        table += &line(&label, &cells, r);
+        table += &say(line(&label, &cells, r));
     }
     let n4 = 4;
     let sphere = work::write("v4_sphere_968", &work::v4_sphere(1000));
@@ -348,11 +358,11 @@ fn main() {
             (None, st) => Cell::Status(st.clone().unwrap_or_default()),
         })
         .collect();
-    table += &line(
+    table += &say(line(
         &format!("V4 sphere n=968, {} cells (sum)", n4 * n4 * n4),
         &v4,
         None,
-    );
+    ));
     let mut scaling =
         String::from("\n| V1 n → 2n | ours exact | ours float | Manifold |\n|---|---|---|---|\n");
     for w in v1_times.windows(2) {
@@ -372,7 +382,7 @@ fn main() {
         .expect("writing to a String");
     }
     table += &scaling;
-    println!("{table}");
+    println!("{scaling}");
     let out = target("yin3_table.md");
     std::fs::write(&out, &table).unwrap_or_else(|e| panic!("{}: {e}", out.display()));
 }
