@@ -84,6 +84,22 @@ struct Opts {
 /// Our meet of the files in backend `N`: best CPU ms over `reps` and (if `volume`) the
 /// volume of the result, NaN otherwise.
 fn ours<N: Num>(a: &Path, b: &Path, reps: usize, volume: bool) -> Cell {
+    // A panic is a defect to show in the table, not a reason to lose the run.
+    std::panic::catch_unwind(|| ours_unguarded::<N>(a, b, reps, volume)).unwrap_or_else(|e| {
+        let msg = e
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+            .unwrap_or_default();
+        Cell::Status(format!(
+            "panicked: {}",
+            msg.chars().take(90).collect::<String>()
+        ))
+    })
+}
+
+/// [`ours`] without the guard.
+fn ours_unguarded<N: Num>(a: &Path, b: &Path, reps: usize, volume: bool) -> Cell {
     let (x, y) = (work::load::<N>(a), work::load::<N>(b));
     let mut best = f64::INFINITY;
     let mut vol = f64::NAN;
