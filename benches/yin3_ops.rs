@@ -71,7 +71,9 @@ fn probes<N: Num>(s: &YinSet3<N>) -> Vec<Point3<N>> {
                     .map(|(a, &t)| lo[a] + (hi[a] - lo[a]) * (t as f64 * 0.113 - 0.01))
                     .map(|x| N::from_f64(x).expect("finite"))
                     .collect::<Vec<N>>();
-                let [x, y, z]: [N; 3] = c.try_into().ok().expect("three coordinates");
+                let Ok([x, y, z]) = <[N; 3]>::try_from(c) else {
+                    unreachable!("three coordinates")
+                };
                 out.push(Point3::new(x, y, z));
             }
         }

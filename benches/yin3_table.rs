@@ -261,6 +261,9 @@ fn say(l: String) -> String {
     l
 }
 
+/// A V1 size n with our exact, our float and Manifold's times.
+type V1Times = (usize, Option<f64>, Option<f64>, Option<f64>);
+
 /// The octasphere sizes of V1: m = 8·√2^i, so that n = 8m² about doubles per step.
 fn v1_sizes(max_m: usize) -> Vec<usize> {
     (0..)
@@ -311,7 +314,7 @@ fn main() {
         max_m: get("--max-m").and_then(|s| s.parse().ok()).unwrap_or(128),
     };
     let mut table = say(HEAD.to_string());
-    let mut v1_times: Vec<(usize, Option<f64>, Option<f64>, Option<f64>)> = Vec::new();
+    let mut v1_times: Vec<V1Times> = Vec::new();
     let mut exact = true;
     for m in v1_sizes(o.max_m) {
         let n = 8 * m * m;
