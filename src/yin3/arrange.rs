@@ -98,6 +98,10 @@ pub(crate) fn arrange<N: Num>(
     );
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut contact: BTreeSet<usize> = BTreeSet::new();
+    // The contact points each triangle is known to contain: in exact mode those of its own
+    // intersections (constructed exactly on both triangles), which the distribution below need
+    // not test again; float mode's constructed points are rounded and are tested like others.
+    let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
     for i in 0..n {
         let b = f64_box(soup.corners(i));
         let mut others: Vec<usize> = tree
@@ -123,7 +127,13 @@ pub(crate) fn arrange<N: Num>(
                 });
             }
             for p in &c.points {
-                contact.insert(soup.intern(p));
+                let v = soup.intern(p);
+                contact.insert(v);
+                for t in [i, j] {
+                    if N::EXACT && !soup.tris[t].contains(&v) {
+                        extra[t].insert(v);
+                    }
+                }
             }
             for (p, q) in &c.cuts_t {
                 let e = (soup.intern(p), soup.intern(q));
@@ -136,12 +146,14 @@ pub(crate) fn arrange<N: Num>(
         }
     }
     // Every contact point goes to every triangle containing it.
-    let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
     for &v in &contact {
         let b = f64_box([&soup.points[v]]);
         for g in tree.locate_in_envelope_intersecting(&b) {
             let t = g.data;
-            if !soup.tris[t].contains(&v) && in_triangle3(soup.corners(t), &soup.points[v], ctx) {
+            if !soup.tris[t].contains(&v)
+                && !extra[t].contains(&v)
+                && in_triangle3(soup.corners(t), &soup.points[v], ctx)
+            {
                 extra[t].insert(v);
             }
         }

@@ -4,7 +4,54 @@
 use super::geom::{f64_box, in_triangle3};
 use crate::kernel::{orient, orient3d, Point, Point3};
 use crate::num::Num;
+use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree, AABB};
 use std::cmp::Ordering;
+
+/// An R-tree of the `f64` boxes of triangles, each widened to contain the exact box (a
+/// bounding-volume hierarchy): the broad phase of point location, so that a point or a ray
+/// meets only the triangles near it instead of all of them.
+pub(crate) struct TriBoxes(RTree<GeomWithData<Rectangle<[f64; 3]>, usize>>);
+
+impl TriBoxes {
+    /// The boxes of the triangles `tris`, each named by the index given with it.
+    pub(crate) fn new<'a, N: Num>(
+        tris: impl IntoIterator<Item = (usize, [&'a Point3<N>; 3])>,
+    ) -> TriBoxes {
+        TriBoxes(RTree::bulk_load(
+            tris.into_iter()
+                .map(|(i, t)| GeomWithData::new(Rectangle::from_aabb(f64_box(t)), i))
+                .collect(),
+        ))
+    }
+
+    /// The triangles whose box, widened by `slack` (float mode's ε; 0 in exact mode),
+    /// contains `q`: all that [`on_triangles`] can find `q` on.
+    pub(crate) fn at<N: Num>(&self, q: &Point3<N>, slack: f64) -> impl Iterator<Item = usize> + '_ {
+        let b = f64_box([q]);
+        let widen = |v: [f64; 3], by: f64| v.map(|x| x + by);
+        let near = AABB::from_corners(widen(b.lower(), -slack), widen(b.upper(), slack));
+        self.0
+            .locate_in_envelope_intersecting(&near)
+            .map(|g| g.data)
+    }
+
+    /// True if some triangle's box meets the box `b`.
+    pub(crate) fn meets(&self, b: &AABB<[f64; 3]>) -> bool {
+        self.0.locate_in_envelope_intersecting(b).next().is_some()
+    }
+
+    /// The triangles whose box meets the ray from `q` along +x: all that can count in
+    /// [`winding`] at `q` (a crossing needs q's y and z in the triangle's closed box and a
+    /// corner with x ≥ q's).
+    pub(crate) fn along_x<N: Num>(&self, q: &Point3<N>) -> impl Iterator<Item = usize> + '_ {
+        let b = f64_box([q]);
+        let mut hi = b.upper();
+        hi[0] = f64::MAX;
+        self.0
+            .locate_in_envelope_intersecting(&AABB::from_corners(b.lower(), hi))
+            .map(|g| g.data)
+    }
+}
 
 /// The winding number at `q` of the oriented triangles `tris`: the sum of sign(n_x) over the
 /// triangles that the ray from q + (0, ε, ε²) in direction +x crosses. `q` must lie on none of
@@ -23,17 +70,7 @@ pub(crate) fn on_triangles<'a, N: Num>(
     q: &Point3<N>,
     ctx: &N::Ctx,
 ) -> bool {
-    let eps = N::tolerance(ctx);
-    let near = |t: [&Point3<N>; 3]| {
-        if eps > 0.0 {
-            let box_ = f64_box(t);
-            let v = q.to_f64();
-            (0..3).all(|k| box_.lower()[k] - eps <= v[k] && v[k] <= box_.upper()[k] + eps)
-        } else {
-            in_box(t, q, [0, 1, 2])
-        }
-    };
-    tris.into_iter().any(|t| near(t) && in_triangle3(t, q, ctx))
+    tris.into_iter().any(|t| in_triangle3(t, q, ctx))
 }
 
 /// True if `q`'s coordinates `axes` lie in the closed box of the triangle's.

@@ -7,13 +7,13 @@ use super::arrange::{arrange, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::float_meet;
 use super::geom::{f64_box, in_triangle3, plane_key};
-use super::locate::winding;
+use super::locate::{winding, TriBoxes};
 use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
 use crate::kernel::Point3;
 use crate::num::Num;
 use crate::union_find::UnionFind;
-use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
+use std::cell::OnceCell;
 use std::collections::HashMap;
 
 /// Where a piece of one operand lies relative to the other operand.
@@ -115,19 +115,17 @@ fn classify<N: Num>(
     ctx: &N::Ctx,
 ) -> Vec<Side> {
     let op = |i: usize| soup.operand[pieces[i].1] as usize;
-    let trees: [RTree<GeomWithData<Rectangle<[f64; 3]>, usize>>; 2] = [0u8, 1].map(|o| {
-        RTree::bulk_load(
+    let trees: [TriBoxes; 2] = [0u8, 1].map(|o| {
+        TriBoxes::new(
             (0..soup.tris.len())
                 .filter(|&t| soup.operand[t] == o)
-                .map(|t| GeomWithData::new(Rectangle::from_aabb(f64_box(soup.corners(t))), t))
-                .collect(),
+                .map(|t| (t, soup.corners(t))),
         )
     });
     let on_operand = |o: usize, q: &Point3<N>| {
         trees[o]
-            .locate_in_envelope_intersecting(&f64_box([q]))
-            .find(|g| in_triangle3(soup.corners(g.data), q, ctx))
-            .map(|g| g.data)
+            .at(q, N::tolerance(ctx))
+            .find(|&t| in_triangle3(soup.corners(t), q, ctx))
     };
     // True if triangle t's normal points along its plane key's normal.
     let along = |t: usize| {
@@ -144,10 +142,16 @@ fn classify<N: Num>(
     }
     let mut uf = UnionFind::new(pieces.len());
     for ((u, v), at) in &edges {
-        let mid = soup.points[*u].midpoint(&soup.points[*v]);
+        let (pu, pv) = (&soup.points[*u], &soup.points[*v]);
+        // The midpoint is constructed only if the edge's box meets one of the other's.
+        let mid = OnceCell::new();
+        let off = |o: usize| {
+            !trees[o].meets(&f64_box([pu, pv]))
+                || on_operand(o, mid.get_or_init(|| pu.midpoint(pv))).is_none()
+        };
         for o in 0..2 {
             let mine: Vec<usize> = at.iter().copied().filter(|&i| op(i) == o).collect();
-            if mine.len() > 1 && on_operand(1 - o, &mid).is_none() {
+            if mine.len() > 1 && off(1 - o) {
                 for w in &mine[1..] {
                     uf.union(mine[0], *w);
                 }
@@ -160,20 +164,24 @@ fn classify<N: Num>(
             let (t, parent) = &pieces[i];
             let o = op(i);
             let [a, b, c] = t.map(|v| &soup.points[v]);
-            let q = Point3::centroid(a, b, c);
-            if let Some(s) = on_operand(1 - o, &q) {
-                return if along(*parent) == along(s) {
-                    Side::Same
-                } else {
-                    Side::Opposite
-                };
+            // The centroid is constructed only if the piece's box meets one of the other's,
+            // or for the ray of a new patch.
+            let q = OnceCell::new();
+            let centroid = || q.get_or_init(|| Point3::centroid(a, b, c));
+            if trees[1 - o].meets(&f64_box([a, b, c])) {
+                if let Some(s) = on_operand(1 - o, centroid()) {
+                    return if along(*parent) == along(s) {
+                        Side::Same
+                    } else {
+                        Side::Opposite
+                    };
+                }
             }
             let root = uf.find(i);
             *memo.entry(root).or_insert_with(|| {
-                let others = (0..soup.tris.len())
-                    .filter(|&s| soup.operand[s] as usize == 1 - o)
-                    .map(|s| soup.corners(s));
-                if winding(others, &q, ctx) + i64::from(!bounded[1 - o]) == 1 {
+                let q = centroid();
+                let others = trees[1 - o].along_x(q).map(|s| soup.corners(s));
+                if winding(others, q, ctx) + i64::from(!bounded[1 - o]) == 1 {
                     Side::Inside
                 } else {
                     Side::Outside

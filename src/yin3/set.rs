@@ -9,7 +9,7 @@ use super::float::{exact_brep, exact_points};
 use super::geom::det3;
 use super::glue::{corner_cycles, glued_surfaces};
 use super::hasse::{hasse, Atom3};
-use super::locate::{on_triangles, winding};
+use super::locate::{on_triangles, winding, TriBoxes};
 use crate::kernel::{BBox3, Point3};
 use crate::num::Num;
 use crate::yin2::Location;
@@ -105,7 +105,7 @@ impl<N: Num> Brep<N> {
         let mut surfaces: Vec<GluedSurface> = (0..count)
             .map(|s| GluedSurface {
                 triangles: Vec::new(),
-                positive: h.volume6[s].sign() == std::cmp::Ordering::Greater,
+                positive: h.positive[s],
                 genus: genus[s],
             })
             .collect();
@@ -151,15 +151,24 @@ impl<N: Num> Brep<N> {
     }
 
     /// Locate each point (DESIGN-3D §2.11): on the boundary if on a triangle (float mode:
-    /// within ε of one), otherwise by the exact winding number.
+    /// within ε of one), otherwise by the exact winding number. The triangles' boxes are put
+    /// in an R-tree first, so that each point meets only the triangles near it and its ray.
     pub(crate) fn locate(&self, points: &[Point3<N>], ctx: &N::Ctx) -> Vec<Location> {
         let exact = N::exact_ctx();
+        let boxes = TriBoxes::new((0..self.tris.len()).map(|t| (t, self.corners(t))));
         points
             .iter()
             .map(|q| {
-                if on_triangles(self.all_corners(), q, ctx) {
+                if on_triangles(
+                    boxes.at(q, N::tolerance(ctx)).map(|t| self.corners(t)),
+                    q,
+                    ctx,
+                ) {
                     Location::OnBoundary
-                } else if winding(self.all_corners(), q, &exact) + i64::from(!self.bounded) == 1 {
+                } else if winding(boxes.along_x(q).map(|t| self.corners(t)), q, &exact)
+                    + i64::from(!self.bounded)
+                    == 1
+                {
                     Location::Inside
                 } else {
                     Location::Outside
