@@ -1,6 +1,7 @@
-//! The exact 3D meet on the shared meshes (issue 16's closing figures): ballmid ∧ ballright
-//! (no contact, a ball 10⁻⁶ inside another) and torus ∧ innerball (touching along a closed
-//! polygon of shared edges), operands built beforehand. Where ../shared/tools/cgal3d is built
+//! The exact and float 3D meet on the shared meshes (issue 16's closing figures, issue 18's
+//! float/exact ratio): ballmid ∧ ballright (no contact, a ball 10⁻⁶ inside another) and
+//! torus ∧ innerball (touching along a closed polygon of shared edges), operands built
+//! beforehand. Where ../shared/tools/cgal3d is built
 //! at target/cgal3d/cgal3d, its exact Nef-polyhedron and corefinement CPU times on the same
 //! files are printed beside ours, as a peer column.
 //!
@@ -10,7 +11,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use std::path::PathBuf;
 use yinset::io::obj::read_obj;
-use yinset::num::Rational;
+use yinset::num::{Float, Num, Rational};
 use yinset::yin3::YinSet3;
 
 /// A mesh of ../shared/data/3d.
@@ -22,8 +23,8 @@ fn data(name: &str) -> PathBuf {
     p
 }
 
-fn load(name: &str) -> YinSet3<Rational> {
-    let mesh = read_obj::<Rational>(&std::fs::read_to_string(data(name)).unwrap()).unwrap();
+fn load<N: Num>(name: &str) -> YinSet3<N> {
+    let mesh = read_obj::<N>(&std::fs::read_to_string(data(name)).unwrap()).unwrap();
     YinSet3::from_triangles(mesh.vertices, mesh.faces).unwrap()
 }
 
@@ -47,15 +48,20 @@ fn cgal_ms(a: &str, b: &str, engine: &str) -> Option<f64> {
 }
 
 fn meets(c: &mut Criterion) {
-    let mut g = c.benchmark_group("yin3 exact meet");
+    let mut g = c.benchmark_group("yin3 meet");
     g.sample_size(20);
     for (a, b) in [
         ("ballmid.obj", "ballright.obj"),
         ("torus.obj", "innerball.obj"),
     ] {
-        let (x, y) = (load(a), load(b));
+        let (x, y) = (load::<Rational>(a), load::<Rational>(b));
         g.bench_function(format!("{a} ∧ {b}"), |bench| {
             bench.iter(|| black_box(&x & &y))
+        });
+        // 3D float mode (README): exact on the f64 values, the result rounded.
+        let (x, y) = (load::<Float>(a), load::<Float>(b));
+        g.bench_function(format!("float {a} ∧ {b}"), |bench| {
+            bench.iter(|| black_box(x.try_meet(&y).unwrap()))
         });
         for engine in ["nef", "corefine"] {
             if let Some(ms) = cgal_ms(a, b, engine) {
