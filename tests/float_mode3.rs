@@ -187,7 +187,7 @@ fn cases() -> u32 {
     std::env::var("FLOAT3_CASES")
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(24)
+        .unwrap_or(16)
 }
 
 /// Generated pairs rounded to f64, the second also shifted by (δ, 2δ, 3δ), δ ∈ {0, ε/8, 3ε}
