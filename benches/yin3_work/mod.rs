@@ -20,7 +20,9 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use yinset::io::obj::read_obj;
-use yinset::num::Num;
+use yinset::kernel::Point3;
+use yinset::num::{Num, Rational};
+use yinset::yin3::shapes::cuboid;
 use yinset::yin3::YinSet3;
 
 /// A closed triangle mesh, outward oriented.
@@ -113,15 +115,10 @@ pub fn v1(n: usize) -> (Mesh3, Mesh3) {
 fn boxes(cells: &[[i64; 3]], size: f64, origin: [f64; 3]) -> Mesh3 {
     let mut index: HashMap<[i64; 3], usize> = HashMap::new();
     let mut mesh = Mesh3::default();
-    // The faces of the unit cube as corner bit patterns (x + 2y + 4z), outward.
-    const FACES: [[usize; 4]; 6] = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
+    // The faces of the unit cube as corner bit patterns (x + 2y + 4z), outward: the library's
+    // box face list, whose corner i takes the upper coordinate where bit k of i is set.
+    let unit = |v: i64| Point3::<Rational>::int(v, v, v);
+    let (_, faces) = cuboid(&unit(0), &unit(1));
     for cell in cells {
         let corner: Vec<usize> = (0..8)
             .map(|b| {
@@ -133,9 +130,9 @@ fn boxes(cells: &[[i64; 3]], size: f64, origin: [f64; 3]) -> Mesh3 {
                 })
             })
             .collect();
-        for [a, b, c, d] in FACES {
-            mesh.tris.push([corner[a], corner[b], corner[c]]);
-            mesh.tris.push([corner[a], corner[c], corner[d]]);
+        for f in &faces {
+            mesh.tris.push([corner[f[0]], corner[f[1]], corner[f[2]]]);
+            mesh.tris.push([corner[f[0]], corner[f[2]], corner[f[3]]]);
         }
     }
     mesh
