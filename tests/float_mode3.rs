@@ -102,11 +102,6 @@ fn boundary_area<N: Num>(y: &YinSet3<N>) -> f64 {
         .sum()
 }
 
-/// vol(x △ y), exactly; through the complements when both are unbounded.
-fn sym_diff_volume(x: &Y3, y: &Y3) -> Option<Rational> {
-    (x ^ y).volume()
-}
-
 /// The comparison tally of a campaign.
 #[derive(Default, Debug)]
 struct Tally {
@@ -156,7 +151,8 @@ fn compare(t: &mut Tally, (ea, fa): &(Y3, F3), (eb, fb): &(Y3, F3), eps: f64, se
             .unwrap_or_else(|err| panic!("{op}: float result invalid: {err}"));
         let fx = exact_of(&f).unwrap_or_else(|err| panic!("{op}: float values invalid: {err}"));
         let area = boundary_area(ea) + boundary_area(eb) + boundary_area(&e);
-        let gap = sym_diff_volume(&fx, &e)
+        let gap = (&fx ^ &e)
+            .volume()
             .unwrap_or_else(|| panic!("{op}: float and exact results differ in boundedness"));
         let ratio = if area > 0.0 {
             gap.to_f64() / (eps * area)

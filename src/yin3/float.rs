@@ -20,13 +20,15 @@ pub(crate) fn float_meet<N: Num>(
     rounded_set(&exact_set(a).meet(&exact_set(b)), ctx)
 }
 
+/// The exact value of a float vertex.
+fn exact_point<N: Num>(p: &Point3<N>) -> Point3<Rational> {
+    let r = |v: &N| Rational::from_f64(v.to_f64()).expect("float sets have finite coordinates");
+    Point3::new(r(&p.x), r(&p.y), r(&p.z))
+}
+
 /// The exact values of a float set's vertices.
 pub(crate) fn exact_points<N: Num>(points: &[Point3<N>]) -> Vec<Point3<Rational>> {
-    let r = |v: &N| Rational::from_f64(v.to_f64()).expect("float sets have finite coordinates");
-    points
-        .iter()
-        .map(|p| Point3::new(r(&p.x), r(&p.y), r(&p.z)))
-        .collect()
+    points.iter().map(exact_point).collect()
 }
 
 /// The boundary of a float set over its exact values: the same triangles, which form a valid
@@ -45,21 +47,33 @@ fn exact_set<N: Num>(y: &YinSet3<N>) -> YinSet3<Rational> {
     }
 }
 
-/// The exact boundary `b` with every vertex rounded to the nearest `f64`: vertices that round
-/// to one point are merged and triangles that collapse to a segment or a point are dropped
-/// (each takes a pair of opposite fins off an edge, so closed surfaces stay closed). If a
-/// vertex moved, the rounded boundary is validated exactly; any failure is
-/// [`Yin3Error::Unrepresentable`].
+/// The exact boundary `b` with every vertex rounded to the nearest `f64`. If none moved, the
+/// exact structure is kept as it is. Otherwise vertices that round to one point are merged,
+/// triangles that collapse to a segment or a point are dropped (each takes a pair of opposite
+/// fins off an edge, so closed surfaces stay closed), and the rounded boundary is validated
+/// exactly; any failure is [`Yin3Error::Unrepresentable`].
 pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Error> {
     let unrepresentable = |e: &dyn std::fmt::Display| Yin3Error::Unrepresentable(e.to_string());
+    let round = |p: &Point3<Rational>| {
+        let f = |v: &Rational| N::from_f64(v.to_f64()).map_err(|e| unrepresentable(&e));
+        Ok(Point3::new(f(&p.x)?, f(&p.y)?, f(&p.z)?))
+    };
+    let rounded = b.points.iter().map(round).collect::<Result<Vec<_>, _>>()?;
+    if rounded
+        .iter()
+        .zip(&b.points)
+        .all(|(q, p)| exact_point(q) == *p)
+    {
+        // Distinct exact points, each an f64 already: the same boundary, no work to redo.
+        let mut points = rounded.into_iter();
+        return Ok(b
+            .clone()
+            .map_points(|_| points.next().expect("one rounded point per point")));
+    }
     let mut index: HashMap<Point3<N>, usize> = HashMap::new();
     let mut points = Vec::new();
-    let mut new = Vec::with_capacity(b.points.len());
-    let mut moved = false;
-    for p in &b.points {
-        let f = |v: &Rational| N::from_f64(v.to_f64()).map_err(|e| unrepresentable(&e));
-        let q = Point3::new(f(&p.x)?, f(&p.y)?, f(&p.z)?);
-        moved |= exact_points(std::slice::from_ref(&q))[0] != *p;
+    let mut new = Vec::with_capacity(rounded.len());
+    for q in rounded {
         let next = points.len();
         let i = *index.entry(q.clone()).or_insert(next);
         if i == next {
@@ -77,9 +91,7 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
         return Err(unrepresentable(&"every triangle collapsed when rounded"));
     }
     let brep = Brep::assemble(points, tris).map_err(|e| unrepresentable(&e))?;
-    if moved {
-        revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
-    }
+    revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
     Ok(brep)
 }
 
