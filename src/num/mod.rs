@@ -7,6 +7,7 @@
 //! Exact backends parse decimal strings ("4.5040114e+00", "0.1") and fractions ("1/3")
 //! without rounding, and convert from `f64` losslessly.
 
+mod big;
 mod float;
 #[cfg(feature = "gmp")]
 mod gmp;
