@@ -77,6 +77,47 @@ fn grid_cell_oracle() {
     }
 }
 
+/// The n-ary join and meet ([`YinSet2::join_all`], [`YinSet2::meet_all`]: one fill of all
+/// boundaries by the count of containing operands) on 0 to 5 operands against the cell oracle
+/// (the set traced from the OR / AND of the masks) and against the fold of the binary
+/// operations (a different algorithm: the meet's location and pasting).
+#[test]
+fn nary_cell_oracle() {
+    for cx in [Complex::mixed(), Complex::grid(4, 4)] {
+        let n = cx.len();
+        let name = format!("n-ary join and meet on {} ({n} pieces)", cx.name);
+        let none = Cells::new(0, false);
+        let all = none.not(n);
+        run(
+            &name,
+            cases(64),
+            proptest::collection::vec(cells_strategy(n), 0..=5),
+            |t, sets| {
+                let ys: Vec<Y> = sets.iter().map(|&s| cx.yin(s)).collect();
+                let join = ok(YinSet2::join_all(&ys), "join_all")?;
+                let meet = ok(YinSet2::meet_all(&ys), "meet_all")?;
+                let (or, and) = sets
+                    .iter()
+                    .fold((none, all), |(o, a), &s| (o.or(s), a.and(s)));
+                law(t, "join_all = cell oracle", join == cx.yin(or), || {
+                    format!("{sets:?}: got {join:?}")
+                })?;
+                law(t, "meet_all = cell oracle", meet == cx.yin(and), || {
+                    format!("{sets:?}: got {meet:?}")
+                })?;
+                let fold_join = ys.iter().fold(Y::empty(), |a, b| a.join(b));
+                let fold_meet = ys.iter().fold(Y::full(), |a, b| a.meet(b));
+                law(
+                    t,
+                    "n-ary = fold of binary",
+                    join == fold_join && meet == fold_meet,
+                    || format!("{sets:?}"),
+                )
+            },
+        );
+    }
+}
+
 /// The cell oracle after an affine map with non-integer rational coefficients: coordinates are
 /// no longer small integers, and the kernel must still agree exactly.
 #[test]

@@ -15,7 +15,8 @@
 //! [`FillRule::NonZero`].
 //!
 //! Float mode (a context with an ε-grid) hands the ring edges to the snap rounding of the
-//! `snap` module, which applies the same rule to the snapped arrangement.
+//! `snap` module, which applies the same rule to the snapped arrangement. [`fill_edges`] is
+//! the fill by any predicate on winding numbers, also behind the n-ary join and meet.
 //!
 //! Cost: O((n + I) log n) for n ring edges with I contacts (two sweeps: contacts, then the
 //! winding numbers of the P ≤ n + 2I pieces' sides).
@@ -99,26 +100,43 @@ impl<N: Num> YinSet2<N> {
             }
         }
         let ctx = resolve_for(&rings, ctx)?;
-        let edges = ring_edges(&rings);
-        if N::grid(&ctx).is_some() {
-            // Float mode: the same rule after snap rounding to the grid of ε (seed 000 §5.2).
-            let labelled: Vec<(Edge<N>, usize)> = edges.into_iter().map(|e| (e, 0)).collect();
-            return regularize(&labelled, ctx, |w| rule.inside(w[0]));
-        }
-        let mut g = Segmented::new();
-        let pieces = merged_pieces(&edges, &mut g, &ctx);
-        let ends: Vec<(&Point<N>, &Point<N>)> = pieces.iter().map(|p| (&p.from, &p.to)).collect();
-        let mult: Vec<i64> = pieces.iter().map(|p| p.mult).collect();
-        for (piece, left) in pieces.iter().zip(left_windings(&ends, &mult, &ctx)?) {
-            let right = left - piece.mult;
-            match (rule.inside(left), rule.inside(right)) {
-                (true, false) => g.push(piece.ids.0, piece.ids.1),
-                (false, true) => g.push(piece.ids.1, piece.ids.0),
-                _ => {}
-            }
-        }
-        g.paste_exact(ctx)
+        fill_edges(ring_edges(&rings), ctx, |w| rule.inside(w))
     }
+}
+
+/// The regularized set {p off the edges : inside(w(p))} for w the winding number of the
+/// directed `edges` (seed 000 Def. 3.1, regularization): S_V of all edges in one sweep, the
+/// winding numbers of the pieces' sides in a second, then the pasting map; float mode (a
+/// context with an ε-grid) hands the edges to the snap rounding of the `snap` module, which
+/// applies `inside` to the snapped arrangement. With no piece between an inside and an outside
+/// face, the far face (w = 0) decides between 0̂ and 1̂.
+pub(crate) fn fill_edges<N: Num>(
+    edges: Vec<Edge<N>>,
+    ctx: N::Ctx,
+    inside: impl Fn(i64) -> bool,
+) -> Result<YinSet2<N>, YinError> {
+    if N::grid(&ctx).is_some() {
+        let labelled: Vec<(Edge<N>, usize)> = edges.into_iter().map(|e| (e, 0)).collect();
+        return regularize(&labelled, ctx, |w| inside(w[0]));
+    }
+    let mut g = Segmented::new();
+    let pieces = merged_pieces(&edges, &mut g, &ctx);
+    let ends: Vec<(&Point<N>, &Point<N>)> = pieces.iter().map(|p| (&p.from, &p.to)).collect();
+    let mult: Vec<i64> = pieces.iter().map(|p| p.mult).collect();
+    let mut boundary = false;
+    for (piece, left) in pieces.iter().zip(left_windings(&ends, &mult, &ctx)?) {
+        let right = left - piece.mult;
+        match (inside(left), inside(right)) {
+            (true, false) => g.push(piece.ids.0, piece.ids.1),
+            (false, true) => g.push(piece.ids.1, piece.ids.0),
+            _ => continue,
+        }
+        boundary = true;
+    }
+    if !boundary && inside(0) {
+        return Ok(YinSet2::full().with_ctx(ctx));
+    }
+    g.paste_exact(ctx)
 }
 
 /// The directed edges of all rings, each ring closed, zero-length edges dropped.

@@ -11,6 +11,7 @@ mod homology;
 pub mod intersect;
 mod locate;
 mod meet;
+mod nary;
 mod ops;
 mod paste;
 mod set;
