@@ -118,6 +118,32 @@ fn nary_cell_oracle() {
     }
 }
 
+/// The cut by control volumes (`meet_each`, parallel): a random set met with each piece of the
+/// complex, against the set traced from the mask AND that piece's bit.
+#[test]
+fn meet_each_piece_against_the_cell_oracle() {
+    let cx = Complex::mixed();
+    let n = cx.len();
+    let pieces: Vec<Cells> = (0..n).map(|k| Cells::new(1 << k, false)).collect();
+    let cells: Vec<Y> = pieces.iter().map(|&c| cx.yin(c)).collect();
+    run(
+        "meet_each on the pieces of the mixed complex",
+        cases(32),
+        cells_strategy(n),
+        |t, a| {
+            for (k, (got, &c)) in cx.yin(a).meet_each(&cells).iter().zip(&pieces).enumerate() {
+                law(
+                    t,
+                    "meet_each = cell oracle",
+                    *got == cx.yin(a.and(c)),
+                    || format!("{a:?}, piece {k}"),
+                )?;
+            }
+            Ok(())
+        },
+    );
+}
+
 /// The cell oracle after an affine map with non-integer rational coefficients: coordinates are
 /// no longer small integers, and the kernel must still agree exactly.
 #[test]

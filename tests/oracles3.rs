@@ -119,6 +119,35 @@ fn cell_oracle_3x3x3() {
     );
 }
 
+/// The cut by control volumes (`meet_each`, parallel): a random set of the 3×3×3 grid met with
+/// each of its 27 unit cells, against the mask algebra (cell k of 𝒴 is 𝒴's mask AND bit k).
+#[test]
+fn meet_each_cell_against_the_mask_algebra() {
+    let o = Oracle3::new(3, Rot::None, false);
+    let cells: Vec<Cells> = (0..27).map(|k| Cells::new(1 << k, false)).collect();
+    let unit_cells: Vec<Y3> = cells.iter().map(|&c| o.expected(c)).collect();
+    run(
+        "meet_each on the 3x3x3 grid's cells",
+        cases3(16),
+        cells_strategy(27),
+        |t, a| {
+            let cut = o
+                .expected(a)
+                .meet_each(&unit_cells)
+                .map_err(|e| e.to_string())?;
+            for (k, (got, &c)) in cut.iter().zip(&cells).enumerate() {
+                law(
+                    t,
+                    "meet_each = mask algebra",
+                    *got == o.expected(a.and(c)),
+                    || format!("{a:?}, cell {k}"),
+                )?;
+            }
+            Ok(())
+        },
+    );
+}
+
 /// The 2×2×2 grid turned about an oblique axis (rational rotation, denominator 65): no vertex
 /// on the lattice, every face slanted; the kernel must agree with the mask algebra exactly.
 #[test]

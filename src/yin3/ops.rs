@@ -4,6 +4,7 @@
 use super::error::Yin3Error;
 use super::set::{Brep, Repr3, YinSet3};
 use crate::num::Num;
+use rayon::prelude::*;
 use std::ops::{BitAnd, BitOr, BitXor, Not, Sub};
 
 impl<N: Num> YinSet3<N> {
@@ -20,6 +21,13 @@ impl<N: Num> YinSet3<N> {
                 YinSet3::from_brep(brep, self.ctx)
             }
         }
+    }
+
+    /// The meets 𝒴 ∧ 𝒵ᵢ with every cell 𝒵ᵢ, in order, on rayon's threads: the cut of a fluid
+    /// by control volumes (seed 000 §5.5 in 3D); the first error of [`YinSet3::try_meet`] (float
+    /// mode only). `RAYON_NUM_THREADS=1` runs it on one thread.
+    pub fn meet_each(&self, cells: &[YinSet3<N>]) -> Result<Vec<YinSet3<N>>, Yin3Error> {
+        cells.par_iter().map(|c| self.try_meet(c)).collect()
     }
 
     /// The join 𝒴 ∨ 𝒵 := (𝒴' ∧ 𝒵')' (seed 000 Def. 4.10), the regularized union. Panics as
