@@ -508,6 +508,77 @@ mod tests {
         }
     }
 
+    /// The sign of the orientation determinant of a, b, c in plain `num-rational` arithmetic,
+    /// without any filter: the oracle of the filtered predicates.
+    fn plain_orient(a: [&BigRational; 2], b: [&BigRational; 2], c: [&BigRational; 2]) -> Ordering {
+        let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        det.cmp(&BigRational::zero())
+    }
+
+    /// `v` moved by `k` units in the last place.
+    fn ulps(v: f64, k: i64) -> f64 {
+        let bits = v.to_bits() as i64 + if v >= 0.0 { k } else { -k };
+        f64::from_bits(bits as u64)
+    }
+
+    /// The exact value of a finite `f64`.
+    fn exact(v: f64) -> BigRational {
+        BigRational::from_float(v).expect("finite")
+    }
+
+    proptest::proptest! {
+        /// The filtered `orient2d` (f64 filter, i128 and rational fallbacks) agrees with plain
+        /// rational arithmetic on near-degenerate inputs: c on the line through a and b as
+        /// rounded to f64 and then moved a few ulps, and the exact crossing point of two nearly
+        /// parallel segments (directions d and d + a few ulps) against either segment, a third
+        /// line through it, and the line of the other segment moved by an ulp.
+        #[test]
+        fn filtered_orient2d_is_plain_rational_on_near_degenerate_inputs(
+            a in (-1e3f64..1e3, -1e3f64..1e3),
+            d in (-1e3f64..1e3, -1e3f64..1e3),
+            t in 0.0f64..1.0,
+            k in (-3i64..=3, -3i64..=3),
+            q in (-1e3f64..1e3, -1e3f64..1e3),
+            tilt in (-4i64..=4, -4i64..=4),
+        ) {
+            let a = [a.0, a.1];
+            let b = [a[0] + d.0, a[1] + d.1];
+            let c = [ulps(a[0] + t * d.0, k.0), ulps(a[1] + t * d.1, k.1)];
+            let [ea, eb, ec] = [a, b, c].map(|p| p.map(exact));
+            let [ra, rb, rc] = [&ea, &eb, &ec].map(|p| p.clone().map(Rational::from));
+            proptest::prop_assert_eq!(
+                Rational::orient2d(ra.each_ref(), rb.each_ref(), rc.each_ref(), &()),
+                plain_orient(ea.each_ref(), eb.each_ref(), ec.each_ref())
+            );
+            // Segment 2 from q along d tilted by a few ulps: nearly parallel to segment 1.
+            let q2 = [q.0 + ulps(d.0, tilt.0), q.1 + ulps(d.1, tilt.1)];
+            let [eq, eq2] = [[q.0, q.1], q2].map(|p| p.map(exact));
+            let (u, v) = ([&eb[0] - &ea[0], &eb[1] - &ea[1]], [&eq2[0] - &eq[0], &eq2[1] - &eq[1]]);
+            let den = &u[0] * &v[1] - &u[1] * &v[0];
+            proptest::prop_assume!(!den.is_zero());
+            let s = ((&eq[0] - &ea[0]) * &v[1] - (&eq[1] - &ea[1]) * &v[0]) / den;
+            let ex = [&ea[0] + &s * &u[0], &ea[1] + &s * &u[1]];
+            let rx = ex.clone().map(Rational::from);
+            // Degenerate by construction: the crossing lies on both segments' lines.
+            proptest::prop_assert_eq!(plain_orient(ea.each_ref(), eb.each_ref(), ex.each_ref()), Ordering::Equal);
+            let [rq, rq2] = [&eq, &eq2].map(|p| p.clone().map(Rational::from));
+            let eq_moved = [exact(ulps(q.0, 1)), eq[1].clone()];
+            let rq_moved = eq_moved.clone().map(Rational::from);
+            let cases = [
+                (ra.each_ref(), rb.each_ref(), ea.each_ref(), eb.each_ref()),
+                (rq.each_ref(), rq2.each_ref(), eq.each_ref(), eq2.each_ref()),
+                (ra.each_ref(), rq2.each_ref(), ea.each_ref(), eq2.each_ref()),
+                (rq_moved.each_ref(), rq2.each_ref(), eq_moved.each_ref(), eq2.each_ref()),
+            ];
+            for (p1, p2, e1, e2) in cases {
+                proptest::prop_assert_eq!(
+                    Rational::orient2d(p1, p2, rx.each_ref(), &()),
+                    plain_orient(e1, e2, ex.each_ref())
+                );
+            }
+        }
+    }
+
     #[test]
     fn huge_denominators_defer_to_exact_comparison() {
         // (10³⁰⁰ + 1)/10⁴⁰⁰ ≈ 10⁻¹⁰⁰ has a finite numerator over a denominator that overflows
