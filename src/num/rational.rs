@@ -27,13 +27,52 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 pub struct Rational(Repr);
 
 /// The two representations of a [`Rational`].
-#[derive(Clone, PartialEq, Eq)]
+#[derive(Clone)]
 enum Repr {
     /// `n / d` with |n| < 2⁶² and 0 < d < 2⁶², in lowest terms.
     Small(i64, i64),
-    /// Any other value, in lowest terms.
-    Big(BigRational),
+    /// Any other value, in lowest terms (boxed: small values stay three words).
+    Big(Box<Big>),
 }
+
+/// A big value with its `f64` approximation, computed once: the filters of `cmp` and the
+/// orientation predicates read it on every call.
+#[derive(Clone)]
+struct Big {
+    value: BigRational,
+    /// See [`approx`].
+    approx: f64,
+}
+
+impl Big {
+    /// `value` (in lowest terms) with its approximation: numerator and denominator rounded, then
+    /// divided, so within 3 ulps; NaN when either is out of `f64`'s range, which the filters
+    /// reject. (A finite numerator over an overflowing denominator would read as 0 and decide
+    /// orders wrongly: found by fuzzing, pinned in tests/fuzz_regressions.rs.)
+    fn boxed(value: BigRational) -> Box<Big> {
+        let n = ToPrimitive::to_f64(value.numer()).unwrap_or(f64::NAN);
+        let d = ToPrimitive::to_f64(value.denom()).unwrap_or(f64::NAN);
+        let approx = if n.is_finite() && d.is_finite() {
+            n / d
+        } else {
+            f64::NAN
+        };
+        Box::new(Big { value, approx })
+    }
+}
+
+/// Equality of values: both representations are canonical.
+impl PartialEq for Repr {
+    fn eq(&self, o: &Repr) -> bool {
+        match (self, o) {
+            (Repr::Small(a, b), Repr::Small(c, d)) => a == c && b == d,
+            (Repr::Big(x), Repr::Big(y)) => x.value == y.value,
+            _ => false,
+        }
+    }
+}
+
+impl Eq for Repr {}
 
 /// The hash of the value's lowest terms (both representations are canonical); `num-rational`'s
 /// own `Hash` expands a continued fraction to serve unreduced values, a cost lowest terms do
@@ -42,7 +81,7 @@ impl Hash for Repr {
     fn hash<H: Hasher>(&self, h: &mut H) {
         match self {
             Repr::Small(n, d) => (0u8, n, d).hash(h),
-            Repr::Big(r) => (1u8, r.numer(), r.denom()).hash(h),
+            Repr::Big(b) => (1u8, b.value.numer(), b.value.denom()).hash(h),
         }
     }
 }
@@ -56,7 +95,7 @@ fn lowest(n: i128, d: i128) -> Rational {
     if -LIMIT < n && n < LIMIT && d < LIMIT {
         Rational(Repr::Small(n as i64, d as i64))
     } else {
-        Rational(Repr::Big(BigRational::new_raw(n.into(), d.into())))
+        Rational(Repr::Big(Big::boxed(BigRational::new_raw(n.into(), d.into()))))
     }
 }
 
@@ -73,7 +112,7 @@ fn reduce(n: i128, d: i128) -> Rational {
 fn from_big(r: BigRational) -> Rational {
     match (r.numer().to_i128(), r.denom().to_i128()) {
         (Some(n), Some(d)) => lowest(n, d),
-        _ => Rational(Repr::Big(r)),
+        _ => Rational(Repr::Big(Big::boxed(r))),
     }
 }
 
@@ -97,7 +136,7 @@ impl Rational {
     pub fn numer(&self) -> BigInt {
         match &self.0 {
             Repr::Small(n, _) => BigInt::from(*n),
-            Repr::Big(r) => r.numer().clone(),
+            Repr::Big(b) => b.value.numer().clone(),
         }
     }
 
@@ -105,7 +144,7 @@ impl Rational {
     pub fn denom(&self) -> BigInt {
         match &self.0 {
             Repr::Small(_, d) => BigInt::from(*d),
-            Repr::Big(r) => r.denom().clone(),
+            Repr::Big(b) => b.value.denom().clone(),
         }
     }
 
@@ -113,7 +152,7 @@ impl Rational {
     fn big(&self) -> Cow<'_, BigRational> {
         match &self.0 {
             Repr::Small(n, d) => Cow::Owned(BigRational::new_raw((*n).into(), (*d).into())),
-            Repr::Big(r) => Cow::Borrowed(r),
+            Repr::Big(b) => Cow::Borrowed(&b.value),
         }
     }
 }
@@ -135,7 +174,7 @@ impl fmt::Display for Rational {
         match &self.0 {
             Repr::Small(n, 1) => write!(f, "{n}"),
             Repr::Small(n, d) => write!(f, "{n}/{d}"),
-            Repr::Big(r) => fmt::Display::fmt(r, f),
+            Repr::Big(b) => fmt::Display::fmt(&b.value, f),
         }
     }
 }
@@ -250,7 +289,13 @@ impl Neg for Rational {
     fn neg(self) -> Rational {
         match self.0 {
             Repr::Small(n, d) => Rational(Repr::Small(-n, d)),
-            Repr::Big(r) => Rational(Repr::Big(-r)),
+            Repr::Big(b) => {
+                let Big { value, approx } = *b;
+                Rational(Repr::Big(Box::new(Big {
+                    value: -value,
+                    approx: -approx,
+                })))
+            }
         }
     }
 }
@@ -261,21 +306,12 @@ fn digits(s: &str) -> BigInt {
 }
 
 /// `v` within 3 ulps (numerator and denominator rounded, then divided: cheaper than the
-/// correctly rounded `to_f64`); NaN when the numerator or the denominator is out of `f64`'s
-/// range, which the filters reject. (A finite numerator over an overflowing denominator would
-/// read as 0 and decide orders wrongly: found by fuzzing, pinned in tests/fuzz_regressions.rs.)
+/// correctly rounded `to_f64`); NaN for a big value out of `f64`'s range ([`Big::boxed`]).
 fn approx(v: &Rational) -> f64 {
-    let r = match &v.0 {
-        Repr::Small(n, 1) => return *n as f64,
-        Repr::Small(n, d) => return *n as f64 / *d as f64,
-        Repr::Big(r) => r,
-    };
-    let n = ToPrimitive::to_f64(r.numer()).unwrap_or(f64::NAN);
-    let d = ToPrimitive::to_f64(r.denom()).unwrap_or(f64::NAN);
-    if n.is_finite() && d.is_finite() {
-        n / d
-    } else {
-        f64::NAN
+    match &v.0 {
+        Repr::Small(n, 1) => *n as f64,
+        Repr::Small(n, d) => *n as f64 / *d as f64,
+        Repr::Big(b) => b.approx,
     }
 }
 
@@ -306,8 +342,8 @@ impl Num for Rational {
         match &self.0 {
             Repr::Small(n, d) if n % 2 == 0 => lowest((n / 2).into(), (*d).into()),
             Repr::Small(n, d) => lowest((*n).into(), 2 * *d as i128),
-            Repr::Big(r) => {
-                let (n, d) = (r.numer(), r.denom());
+            Repr::Big(b) => {
+                let (n, d) = (b.value.numer(), b.value.denom());
                 from_big(if n.is_even() {
                     BigRational::new_raw(n / 2, d.clone())
                 } else {
@@ -338,8 +374,8 @@ impl Num for Rational {
     fn sign(&self) -> Ordering {
         match &self.0 {
             Repr::Small(n, _) => n.cmp(&0),
-            Repr::Big(r) if r.is_zero() => Ordering::Equal,
-            Repr::Big(r) if r.is_positive() => Ordering::Greater,
+            Repr::Big(b) if b.value.is_zero() => Ordering::Equal,
+            Repr::Big(b) if b.value.is_positive() => Ordering::Greater,
             Repr::Big(_) => Ordering::Less,
         }
     }
