@@ -896,3 +896,61 @@ pub fn construct(input: &ConstructInput) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::panic::{catch_unwind, AssertUnwindSafe};
+
+    /// The unit square as float curves.
+    fn square(side: f64) -> Vec<Vec<Point<Float>>> {
+        let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+        vec![vec![p(0.0, 0.0), p(side, 0.0), p(side, side), p(0.0, side)]]
+    }
+
+    #[test]
+    fn pow2_floor_covers_subnormals_and_the_top() {
+        assert_eq!(pow2_floor(5e-324), 5e-324);
+        assert_eq!(pow2_floor(1.5e-323), 1e-323);
+        assert_eq!(pow2_floor(3.0), 2.0);
+        assert_eq!(pow2_floor(f64::MAX), 2f64.powi(1023));
+    }
+
+    #[test]
+    fn tolerance_too_fine_is_judged_by_the_magnitude() {
+        let fine = Contract::of(&square(1.0), Tolerance::new(1e-310));
+        assert!(fine.too_fine());
+        let e = YinSet2::from_curves_with(square(1.0), Tolerance::new(1e-310)).unwrap_err();
+        assert_eq!(float_refusal_ok(&e, &fine, None), Some(true), "{e:?}");
+        let edge = Contract::of(&square(1.0), Tolerance::new(2f64.powi(-51)));
+        assert!(!edge.too_fine());
+        assert_eq!(float_refusal_ok(&e, &edge, None), Some(false));
+        let y = YinSet2::from_curves_with(square(1.0), Tolerance::new(2f64.powi(-51))).unwrap();
+        float_accepted("square", &y, &edge, &"edge");
+    }
+
+    #[test]
+    fn an_emptied_set_fails_the_area_bound_unless_the_grid_allows_it() {
+        let exact = YinSet2::from_curves(exact_curves(&square(1.0))).unwrap();
+        let length = Rational::from_integer(4.into());
+        let empty = YinSet2::<Float>::empty();
+        let fine = catch_unwind(AssertUnwindSafe(|| {
+            close_in_area("x", &empty, &exact, 2f64.powi(-10), &length, &"fine")
+        }));
+        assert!(
+            fine.is_err(),
+            "a unit square emptied on a 2^-10 grid passed"
+        );
+        close_in_area("x", &empty, &exact, 1.0, &length, &"coarse");
+        let c = Contract::of(&square(1.0), Tolerance::new(1e300));
+        let collapsed = YinError::CollapsedOnGrid {
+            grid: Float::new(pow2_floor(1e300)),
+        };
+        assert_eq!(float_refusal_ok(&collapsed, &c, Some(&exact)), Some(true));
+        let c = Contract::of(&square(1.0), Tolerance::new(0.01));
+        let collapsed = YinError::CollapsedOnGrid {
+            grid: Float::new(pow2_floor(0.01)),
+        };
+        assert_eq!(float_refusal_ok(&collapsed, &c, Some(&exact)), Some(false));
+    }
+}
