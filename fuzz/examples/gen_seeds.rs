@@ -237,8 +237,11 @@ fn to_grid(polys: &[&[Polygon<Float>]]) -> Option<Vec<Vec<Ring>>> {
         .collect()
 }
 
+/// A Martinez case: its name, its file's text, and its subject and clipping polygons.
+type MartinezCase = (String, String, [Vec<Polygon<Float>>; 2]);
+
 /// The subject and clipping polygons of each Martinez case (its first two features).
-fn martinez() -> Vec<(String, String, [Vec<Polygon<Float>>; 2])> {
+fn martinez() -> Vec<MartinezCase> {
     let dir = data_dir().join("martinez");
     let mut names: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))

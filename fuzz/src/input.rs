@@ -168,7 +168,7 @@ pub const SPECIAL_EPS: [f64; 15] = [
     1e-310,
     f64::MIN_POSITIVE,
     // The largest subnormal.
-    2.225_073_858_507_200_9e-308,
+    f64::from_bits(0x000f_ffff_ffff_ffff),
     1e-300,
     1e-200,
     1e-100,
