@@ -30,8 +30,8 @@ use yinset::io::{geojson, obj, wkt, yin2_text, NumberStyle, Polygon};
 use yinset::kernel::{Point, Point3};
 use yinset::num::{Float, Rational};
 use yinset_fuzz::input::{
-    ConstructInput, OpsInput, Probe, Shape, COMPLEMENT, FILL_ONLY, GRID, MAX_CURVES, MAX_POINTS,
-    NONZERO,
+    ConstructInput, OpsInput, Probe, Scale, Shape, COMPLEMENT, FILL_ONLY, GRID, MAX_CURVES,
+    MAX_POINTS, NONZERO,
 };
 use yinset_fuzz::input3::{
     Combine, Construct3Input, LatticePoint, Operand, Ops3Input, Probe3, Solid, LATTICE, MAX_FACES3,
@@ -237,8 +237,11 @@ fn to_grid(polys: &[&[Polygon<Float>]]) -> Option<Vec<Vec<Ring>>> {
         .collect()
 }
 
+/// A Martinez case: its name, its file's text, and its subject and clipping polygons.
+type MartinezCase = (String, String, [Vec<Polygon<Float>>; 2]);
+
 /// The subject and clipping polygons of each Martinez case (its first two features).
-fn martinez() -> Vec<(String, String, [Vec<Polygon<Float>>; 2])> {
+fn martinez() -> Vec<MartinezCase> {
     let dir = data_dir().join("martinez");
     let mut names: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))
@@ -294,6 +297,41 @@ fn exact(rings: &[Ring]) -> Vec<Vec<Point<Rational>>> {
         .collect()
 }
 
+/// Float mode's far placements (input.rs, Scale): the ends of the `f64` range, offsets far
+/// from the origin, and ε from subnormal to huge, each with what the contract expects.
+fn far_scales() -> Vec<(&'static str, Scale)> {
+    let scale = |mode, exp, shift, eps| Scale {
+        mode,
+        exp,
+        shift,
+        eps,
+    };
+    vec![
+        // s = 2⁻⁹⁹⁷ (coordinates from 10⁻³⁰⁰), the tol byte's ε × s: valid results.
+        ("tiny_pow2", scale(1, 0, 0, 0)),
+        // s = 10⁻³⁰⁰, ε = 5·10⁻³²⁴: the least subnormal is still a representable grid there.
+        ("tiny_dec_eps_subnormal", scale(2, 0, 0, 1)),
+        // s = 1, ε = 10⁻³¹⁰: too fine (ToleranceTooFine).
+        ("unit_eps_1e-310", scale(0, 0, 0, 3)),
+        // s = 1, ε = 2⁻¹⁰²²: too fine.
+        ("unit_eps_min_normal", scale(0, 0, 0, 4)),
+        // s = 10²⁹⁹ and 2⁹⁹³ (coordinates up to 10³⁰⁰), ε × s.
+        ("huge_dec", scale(2, 255, 0, 0)),
+        ("huge_pow2", scale(1, 255, 0, 0)),
+        // s = 2⁹⁹³ offset by s·2³ in x: ε × s relative to a shape far from the origin.
+        ("huge_pow2_offset", scale(1 | 4, 255, 63, 0)),
+        // s = 1 offset by 2⁴⁰ in y, ε × s: too fine for ε below 2⁻¹¹.
+        ("unit_offset_2p40", scale(8, 0, 40, 0)),
+        // s = 10⁻¹⁵⁰, ε = 10³⁰⁰: everything collapses onto one grid point (CollapsedOnGrid).
+        ("mid_eps_1e300", scale(2, 64, 0, 14)),
+        // s = 2⁻⁵⁰⁰, ε = s·2⁶⁴ (collapse) and s·2⁻³⁶ (fine, still representable).
+        ("mid_eps_coarse", scale(1, 126, 0, 200)),
+        ("mid_eps_fine", scale(1, 126, 0, 100)),
+        // s = 10⁻²⁰, offset −s·2⁵⁰ in both, ε = f64::MAX.
+        ("offset_eps_max", scale(2 | 12, 119, 50, 15)),
+    ]
+}
+
 /// Seeds by corpus name.
 #[derive(Default)]
 struct Seeds(BTreeMap<&'static str, Vec<(String, Vec<u8>)>>);
@@ -322,6 +360,7 @@ fn generate() -> Seeds {
             a,
             b,
             probes: probes(),
+            ..Default::default()
         };
         seeds.add("ops", format!("fig_{name}"), input.encode());
     }
@@ -332,6 +371,7 @@ fn generate() -> Seeds {
                 a: shape(0, &g[0]),
                 b: shape(0, &g[1]),
                 probes: probes(),
+                ..Default::default()
             };
             seeds.add("ops", format!("martinez_{name}"), input.encode());
         }
@@ -349,6 +389,7 @@ fn generate() -> Seeds {
                 a: shape(FILL_ONLY, &g[0]),
                 b: shape(FILL_ONLY, &g[1]),
                 probes: probes(),
+                ..Default::default()
             };
             seeds.add("ops", format!("jts_{name}"), input.encode());
         }
@@ -359,6 +400,7 @@ fn generate() -> Seeds {
             tol: next_tol(),
             shape: shape(0, &rings),
             probes: probes(),
+            ..Default::default()
         };
         seeds.add("construct", format!("fig_{name}"), input.encode());
     }
@@ -370,8 +412,36 @@ fn generate() -> Seeds {
             tol: next_tol(),
             shape: both,
             probes: probes(),
+            ..Default::default()
         };
         seeds.add("construct", format!("pair_{name}"), input.encode());
+    }
+    // Float mode far from the unit grid: the figure pairs under the far placements in turn.
+    let scales = far_scales();
+    for (k, (name, a, b)) in figure_pairs().into_iter().enumerate() {
+        let (scale_name, scale) = scales[k % scales.len()];
+        let input = OpsInput {
+            tol: next_tol(),
+            a,
+            b,
+            probes: probes(),
+            scale,
+        };
+        seeds.add("ops", format!("far_{scale_name}_{name}"), input.encode());
+    }
+    for (k, (name, rings)) in figures().into_iter().enumerate() {
+        let (scale_name, scale) = scales[k % scales.len()];
+        let input = ConstructInput {
+            tol: next_tol(),
+            shape: shape(0, &rings),
+            probes: probes(),
+            scale,
+        };
+        seeds.add(
+            "construct",
+            format!("far_{scale_name}_{name}"),
+            input.encode(),
+        );
     }
     // Text formats: hand-written samples, the figures as written by the crate, data files.
     seeds.add(

@@ -2,7 +2,8 @@
 //! checks on the constructor and on the binary operations, exact and float.
 
 use crate::input::{
-    ConstructInput, GridPoint, OpsInput, Probe, Shape, COMPLEMENT, EPS, FILL_ONLY, NONZERO,
+    ConstructInput, GridPoint, OpsInput, Probe, Scale, Shape, COMPLEMENT, EPS, FILL_ONLY, NONZERO,
+    SPECIAL_EPS,
 };
 use num_bigint::BigInt;
 use std::fmt::Debug;
@@ -49,28 +50,27 @@ pub enum Path {
 }
 
 /// Build an operand: `from_curves` first (unless [`FILL_ONLY`]), falling back to
-/// `from_rings_filled`; then the complement if [`COMPLEMENT`].
-fn build<N: Num, D: Debug>(
+/// `from_rings_filled`; then the complement if [`COMPLEMENT`]. An error only from the fill.
+fn build<N: Num>(
     curves: Vec<Vec<Point<N>>>,
     shape: &Shape,
     ctx: N::Ctx,
-    input: &D,
-) -> (YinSet2<N>, Path) {
+) -> Result<(YinSet2<N>, Path), YinError> {
     let (set, path) = match (shape.flags & FILL_ONLY == 0)
         .then(|| YinSet2::from_curves_with(curves.clone(), ctx).ok())
         .flatten()
     {
         Some(set) => (set, Path::Curves),
-        None => match YinSet2::from_rings_filled_with(curves, rule(shape), ctx) {
-            Ok(set) => (set, Path::Fill),
-            Err(e) => fail!(input, "from_rings_filled rejected finite rings: {e}"),
-        },
+        None => (
+            YinSet2::from_rings_filled_with(curves, rule(shape), ctx)?,
+            Path::Fill,
+        ),
     };
-    if shape.flags & COMPLEMENT != 0 {
+    Ok(if shape.flags & COMPLEMENT != 0 {
         (set.complement(), path)
     } else {
         (set, path)
-    }
+    })
 }
 
 /// The exact operand of a shape.
@@ -80,50 +80,304 @@ pub fn build_exact<D: Debug>(shape: &Shape, input: &D) -> (YinSet2<Rational>, Pa
         .iter()
         .map(|c| c.iter().map(exact_point).collect())
         .collect();
-    build(curves, shape, (), input)
+    build(curves, shape, ())
+        .unwrap_or_else(|e| fail!(input, "from_rings_filled rejected finite rings: {e}"))
 }
 
-/// Float mode's ε and jitter size δ from the tol byte.
-pub fn float_tolerance(tol: u8) -> (Tolerance, f64) {
-    let eps = EPS[usize::from(tol & 7)];
-    // ε of a default tolerance on this grid is about 1e-10 × 7.
-    let scale = if eps == 0.0 { 1e-9 } else { eps };
-    let delta = match (tol >> 3) & 3 {
-        0 => 0.0,
-        1 => 2f64.powi(-30),
-        2 => scale / 2.0,
-        _ => scale * 2.0,
-    };
-    (Tolerance::new(eps), delta)
-}
-
-/// The float point of a grid point, jittered by δ as it asks.
-fn float_point(p: &GridPoint, delta: f64) -> Point<Float> {
-    let (dx, dy) = match p.jitter {
-        0 => (0.0, 0.0),
-        1 => (delta, 0.0),
-        2 => (0.0, delta),
-        _ => (-delta, -delta),
-    };
-    Point::new(
-        Float::new(f64::from(p.x) + dx),
-        Float::new(f64::from(p.y) + dy),
-    )
-}
-
-/// The float operand of a shape.
-pub fn build_float<D: Debug>(
+/// The exact operand built from a float shape's very coordinates along the path the float
+/// operand took (the float constructor validates exactly, so this path succeeds too).
+fn build_exact_along<D: Debug>(
+    curves: &[Vec<Point<Float>>],
     shape: &Shape,
-    tol: Tolerance,
-    delta: f64,
+    path: Path,
     input: &D,
-) -> (YinSet2<Float>, Path) {
-    let curves = shape
-        .curves
+) -> YinSet2<Rational> {
+    let curves = exact_curves(curves);
+    let set = match path {
+        Path::Curves => YinSet2::from_curves(curves).unwrap_or_else(|e| {
+            fail!(
+                input,
+                "float from_curves accepts what exact mode rejects: {e}"
+            )
+        }),
+        Path::Fill => YinSet2::from_rings_filled(curves, rule(shape))
+            .unwrap_or_else(|e| fail!(input, "exact from_rings_filled rejected finite rings: {e}")),
+    };
+    if shape.flags & COMPLEMENT != 0 {
+        set.complement()
+    } else {
+        set
+    }
+}
+
+/// Where float mode puts an input ([`Scale`]): grid coordinates (x, y) become
+/// (s·x + offset.0, s·y + offset.1) in `f64`, with the tolerance and the jitter size δ (in
+/// grid units) chosen with them.
+#[derive(Clone, Copy, Debug)]
+pub struct Placement {
+    /// The tolerance asked for (ε = 0: the default).
+    pub tol: Tolerance,
+    /// The jitter size in grid units.
+    pub delta: f64,
+    /// The scale factor s.
+    pub s: f64,
+    /// The offset added after scaling.
+    pub offset: (f64, f64),
+}
+
+impl Placement {
+    /// The placement of the tol byte and the Scale bytes.
+    pub fn of(tol: u8, scale: &Scale) -> Placement {
+        let s = scale.factor();
+        let eps = match usize::from(scale.eps) {
+            0 => EPS[usize::from(tol & 7)] * s,
+            e @ 1..=15 => SPECIAL_EPS[e - 1],
+            e => s * 2f64.powi(e as i32 - 136),
+        };
+        // ε of a default tolerance on this grid is about 1e-10 × 7 grid units.
+        let unit = if eps > 0.0 { eps / s } else { 1e-9 };
+        let delta = match (tol >> 3) & 3 {
+            0 => 0.0,
+            1 => 2f64.powi(-30),
+            2 => unit / 2.0,
+            _ => unit * 2.0,
+        };
+        Placement {
+            tol: Tolerance::new(eps),
+            delta: delta.min(4.0),
+            s,
+            offset: scale.offset(),
+        }
+    }
+
+    /// The float point of grid coordinates (x, y).
+    fn at(&self, x: f64, y: f64) -> Point<Float> {
+        Point::new(
+            Float::new(x * self.s + self.offset.0),
+            Float::new(y * self.s + self.offset.1),
+        )
+    }
+
+    /// The float point of a grid point, jittered by δ if `jitter` and the point asks.
+    fn point(&self, p: &GridPoint, jitter: bool) -> Point<Float> {
+        let d = if jitter { self.delta } else { 0.0 };
+        let (dx, dy) = match p.jitter {
+            0 => (0.0, 0.0),
+            1 => (d, 0.0),
+            2 => (0.0, d),
+            _ => (-d, -d),
+        };
+        self.at(f64::from(p.x) + dx, f64::from(p.y) + dy)
+    }
+
+    /// A shape's curves in float mode.
+    fn curves(&self, shape: &Shape, jitter: bool) -> Vec<Vec<Point<Float>>> {
+        shape
+            .curves
+            .iter()
+            .map(|c| c.iter().map(|p| self.point(p, jitter)).collect())
+            .collect()
+    }
+
+    /// A float point back in grid units (for the oracles' distances, which would overflow or
+    /// underflow at the far ends of the range).
+    fn unit(&self, p: [f64; 2]) -> [f64; 2] {
+        [
+            (p[0] - self.offset.0) / self.s,
+            (p[1] - self.offset.1) / self.s,
+        ]
+    }
+
+    /// Whether the grid coordinates are the `f64`s themselves (unit scale, no offset).
+    fn is_identity(&self) -> bool {
+        self.s == 1.0 && self.offset == (0.0, 0.0)
+    }
+}
+
+/// The largest power of two not above `v > 0`, by doubling from the least subnormal (the
+/// contract's grid, computed without the kernel's bit manipulation).
+fn pow2_floor(v: f64) -> f64 {
+    let mut g = f64::from_bits(1);
+    while g * 2.0 <= v {
+        g *= 2.0;
+    }
+    g
+}
+
+/// What the float-mode contract promises about one input, from its coordinates and ε alone.
+struct Contract {
+    /// The ε asked for (0: the default).
+    eps: f64,
+    /// The largest coordinate magnitude.
+    magnitude: f64,
+    /// The larger side of the bounding box.
+    span: f64,
+    /// The rings' total length in the L¹ norm (at least their Euclidean length), exact.
+    length: Rational,
+}
+
+impl Contract {
+    fn of(curves: &[Vec<Point<Float>>], tol: Tolerance) -> Contract {
+        let all = || curves.iter().flatten().map(|p| p.to_f64());
+        let magnitude = all().map(|[x, y]| x.abs().max(y.abs())).fold(0.0, f64::max);
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for q in all() {
+            for k in 0..2 {
+                lo[k] = lo[k].min(q[k]);
+                hi[k] = hi[k].max(q[k]);
+            }
+        }
+        let span = (hi[0] / 2.0 - lo[0] / 2.0).max(hi[1] / 2.0 - lo[1] / 2.0) * 2.0;
+        Contract {
+            eps: tol.eps(),
+            magnitude,
+            span: span.max(0.0),
+            length: l1_length(&exact_curves(curves)),
+        }
+    }
+
+    /// ε is too fine: some coordinate is more than 2⁵¹ steps of ε's grid from 0, so the
+    /// contract asks for `ToleranceTooFine`.
+    fn too_fine(&self) -> bool {
+        self.eps > 0.0 && self.magnitude > pow2_floor(self.eps) * 2f64.powi(51)
+    }
+
+    /// A grid in force may be `g`: ε's own grid, or for the default ε at most 10⁻¹⁰ × the
+    /// span or the finest representable grid (2⁻⁵⁰ × the magnitude, or the least subnormal).
+    fn grid_ok(&self, g: f64) -> bool {
+        if self.eps > 0.0 {
+            g == pow2_floor(self.eps)
+        } else {
+            g > 0.0
+                && g <= (self.span * 1e-10)
+                    .max(self.magnitude * 2f64.powi(-50))
+                    .max(f64::from_bits(1))
+        }
+    }
+}
+
+/// The rings' total L¹ length (closed rings), exact.
+fn l1_length(rings: &[Vec<Point<Rational>>]) -> Rational {
+    let abs = |v: Rational| if v < Rational::default() { -v } else { v };
+    let mut sum = Rational::default();
+    for ring in rings {
+        for (k, a) in ring.iter().enumerate() {
+            let b = &ring[(k + 1) % ring.len()];
+            sum = sum + abs(b.x.clone() - a.x.clone()) + abs(b.y.clone() - a.y.clone());
+        }
+    }
+    sum
+}
+
+/// The exact points of float curves.
+fn exact_curves(curves: &[Vec<Point<Float>>]) -> Vec<Vec<Point<Rational>>> {
+    curves
         .iter()
-        .map(|c| c.iter().map(|p| float_point(p, delta)).collect())
-        .collect();
-    build(curves, shape, tol, input)
+        .map(|c| c.iter().map(to_exact_point).collect())
+        .collect()
+}
+
+/// Whether a set is bounded, and the area of the set or (unbounded) of its complement.
+fn measure(set: &YinSet2<Rational>) -> (bool, Rational) {
+    match set.area() {
+        Some(a) => (true, a),
+        None => (false, set.complement().area().unwrap_or_default()),
+    }
+}
+
+/// The accuracy contract (area(F △ E) ≤ g·L, L the boundary length of the input and of E)
+/// in the form |area F − area E| ≤ g·2·`length`, `length` the input rings' L¹ length (which
+/// bounds both): a float set may lose or gain only what its grid allows, so a shape is never
+/// silently emptied; and F is bounded iff E is.
+fn close_in_area<D: Debug>(
+    what: &str,
+    f: &YinSet2<Float>,
+    e: &YinSet2<Rational>,
+    g: f64,
+    length: &Rational,
+    input: &D,
+) {
+    let (fb, fa) = measure(&exact_of(what, f, input));
+    let (eb, ea) = measure(e);
+    let bound = grid_rational(g) * Rational::from_integer(2.into()) * length.clone();
+    let diff = fa.clone() - ea.clone();
+    if fb != eb || diff > bound || -diff > bound {
+        fail!(
+            input,
+            "{what}: float area {fa} (bounded: {fb}) is not within 2·g·L = {bound} of the exact \
+             area {ea} (bounded: {eb}) on the same coordinates (g = {g:e})\nfloat = {f:?}\nexact = {e:?}"
+        );
+    }
+}
+
+/// A grid spacing as an exact rational.
+fn grid_rational(g: f64) -> Rational {
+    Rational::from_f64(g).expect("a finite grid")
+}
+
+/// Judge float mode's own refusals (`ToleranceTooFine`, `CollapsedOnGrid`) against the
+/// contract; `None` for any other error. `exact` is the exact set of the same coordinates
+/// when there is one (a collapse is justified only if its area is within what the grid may
+/// remove).
+fn float_refusal_ok(e: &YinError, c: &Contract, exact: Option<&YinSet2<Rational>>) -> Option<bool> {
+    Some(match e {
+        YinError::ToleranceTooFine {
+            requested,
+            representable,
+        } => c.too_fine() && requested.get() == c.eps && representable > requested,
+        YinError::CollapsedOnGrid { grid } => {
+            let g = grid.get();
+            c.grid_ok(g)
+                && exact.is_some_and(|x| {
+                    measure(x).1
+                        <= grid_rational(g) * Rational::from_integer(2.into()) * c.length.clone()
+                })
+        }
+        _ => return None,
+    })
+}
+
+/// A float set accepted under the contract: valid, on the grid it may use, and not accepted
+/// where ε is too fine (never coarsened silently).
+fn float_accepted<D: Debug>(what: &str, set: &YinSet2<Float>, c: &Contract, input: &D) {
+    valid(what, set, input);
+    if c.too_fine() {
+        fail!(
+            input,
+            "{what}: ε = {:e} is too fine for coordinates up to {:e}, yet accepted on grid {:?}",
+            c.eps,
+            c.magnitude,
+            set.grid()
+        );
+    }
+    match set.grid() {
+        Some(g) if c.grid_ok(g) => {}
+        g => fail!(input, "{what}: grid {g:?} for ε = {:e}", c.eps),
+    }
+}
+
+/// The float operand of a shape and the exact one of the same coordinates, or `None` when
+/// float mode refuses it as the contract allows (ε too fine).
+fn build_float<D: Debug>(
+    shape: &Shape,
+    place: &Placement,
+    what: &str,
+    input: &D,
+) -> Option<(YinSet2<Float>, YinSet2<Rational>)> {
+    let curves = place.curves(shape, true);
+    let c = Contract::of(&curves, place.tol);
+    match build(curves.clone(), shape, place.tol) {
+        Ok((set, path)) => {
+            let exact = build_exact_along(&curves, shape, path, input);
+            float_accepted(what, &set, &c, input);
+            if let Some(g) = set.grid() {
+                close_in_area(what, &set, &exact, g, &c.length, input);
+            }
+            Some((set, exact))
+        }
+        Err(e) if float_refusal_ok(&e, &c, None) == Some(true) => None,
+        Err(e) => fail!(input, "float from_rings_filled rejected finite rings: {e}"),
+    }
 }
 
 /// Assert that `set` passes the exact validator.
@@ -257,16 +511,17 @@ fn distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
 }
 
-/// Distance from `p` to the boundary of `set` (infinite for 0̂ and 1̂).
-fn distance_to_boundary(p: [f64; 2], set: &YinSet2<Float>) -> f64 {
+/// Distance in grid units from `p` (grid units) to the boundary of `set` (infinite for 0̂
+/// and 1̂).
+fn distance_to_boundary(p: [f64; 2], set: &YinSet2<Float>, place: &Placement) -> f64 {
     set.curves()
         .iter()
         .flat_map(|c| c.edges())
-        .map(|(a, b)| distance(p, a.to_f64(), b.to_f64()))
+        .map(|(a, b)| distance(p, place.unit(a.to_f64()), place.unit(b.to_f64())))
         .fold(f64::INFINITY, f64::min)
 }
 
-/// Largest ε for which the float oracles are applied, and their margin.
+/// Largest ε for which the float oracles are applied, and their margin (grid units).
 const FLOAT_ORACLE_EPS: f64 = 1e-3;
 const FLOAT_ORACLE_MARGIN: f64 = 0.1;
 
@@ -287,11 +542,12 @@ fn float_locate_agrees<D: Debug>(
     set: &YinSet2<Float>,
     exact: &YinSet2<Rational>,
     points: &[Point<Float>],
+    place: &Placement,
     input: &D,
 ) {
     let far: Vec<Point<Float>> = points
         .iter()
-        .filter(|p| distance_to_boundary(p.to_f64(), set) >= FLOAT_ORACLE_MARGIN)
+        .filter(|p| distance_to_boundary(place.unit(p.to_f64()), set, place) >= FLOAT_ORACLE_MARGIN)
         .cloned()
         .collect();
     let got = set.locate(&far);
@@ -315,17 +571,24 @@ fn to_exact_point(p: &Point<Float>) -> Point<Rational> {
     Point::new(q(&p.x), q(&p.y))
 }
 
-/// The binary operations in float mode: no panic, every output valid (read exactly) and
-/// convertible to exact mode; and, for ε ≤ 10⁻³, two oracles at probes at least 0.1 away from
-/// both operands' boundaries, both on the sets read exactly (so that they test the operations,
-/// not the ε-tolerant point location): the membership oracle, and float `locate` agreeing
-/// with exact `locate` on every operand and result.
+/// The binary operations in float mode, on shapes placed anywhere in the `f64` range with ε
+/// from subnormal to huge ([`Placement`]): no panic; each operand valid, on its grid, within
+/// the contract's area bound of the exact operand of the same coordinates, or refused with
+/// `ToleranceTooFine` exactly when ε is too fine; every output valid (read exactly) and
+/// convertible to exact mode; the area identities |A∧B| + |A∨B| = |A| + |B|,
+/// |A∧B| + |A−B| = |A| and |A⊕B| + 2|A∧B| = |A| + |B| within the contract's bound (bounded
+/// operands); and, for ε ≤ 10⁻³ grid units, two oracles at probes at least 0.1 grid units away
+/// from both operands' boundaries, both on the sets read exactly (so that they test the
+/// operations, not the ε-tolerant point location): the membership oracle, and float `locate`
+/// agreeing with exact `locate` on every operand and result.
 pub fn ops_float(input: &OpsInput) {
-    let (tol, delta) = float_tolerance(input.tol);
-    let (a, _) = build_float(&input.a, tol, delta, input);
-    let (b, _) = build_float(&input.b, tol, delta, input);
-    valid("A", &a, input);
-    valid("B", &b, input);
+    let place = Placement::of(input.tol, &input.scale);
+    let Some((a, _)) = build_float(&input.a, &place, "A", input) else {
+        return;
+    };
+    let Some((b, _)) = build_float(&input.b, &place, "B", input) else {
+        return;
+    };
     let out = results(&a, &b);
     for ((name, _), set) in OPS.iter().zip(&out) {
         valid(name, set, input);
@@ -335,8 +598,10 @@ pub fn ops_float(input: &OpsInput) {
         .zip(OPS)
         .map(|(set, (name, _))| exact_of(name, set, input))
         .collect();
+    let (ax, bx) = (exact_of("A", &a, input), exact_of("B", &b, input));
+    area_identities(&ax, &bx, &exact, &out[0], input);
     let eps = a.ctx().eps().max(b.ctx().eps());
-    if eps > FLOAT_ORACLE_EPS {
+    if eps / place.s > FLOAT_ORACLE_EPS {
         return;
     }
     let points: Vec<Point<Float>> = input
@@ -344,17 +609,17 @@ pub fn ops_float(input: &OpsInput) {
         .iter()
         .map(|p| {
             let (x, y) = p.doubled();
-            Point::new(Float::new(x as f64 / 2.0), Float::new(y as f64 / 2.0))
+            place.at(x as f64 / 2.0, y as f64 / 2.0)
         })
         .filter(|p| {
-            let q = p.to_f64();
-            distance_to_boundary(q, &a).min(distance_to_boundary(q, &b)) >= FLOAT_ORACLE_MARGIN
+            let q = place.unit(p.to_f64());
+            distance_to_boundary(q, &a, &place).min(distance_to_boundary(q, &b, &place))
+                >= FLOAT_ORACLE_MARGIN
         })
         .collect();
     if points.is_empty() {
         return;
     }
-    let (ax, bx) = (exact_of("A", &a, input), exact_of("B", &b, input));
     let exact_points: Vec<Point<Rational>> = points.iter().map(to_exact_point).collect();
     let (la, lb) = (ax.locate(&exact_points), bx.locate(&exact_points));
     for (((name, f), set), x) in OPS.iter().zip(&out).zip(&exact) {
@@ -376,11 +641,58 @@ pub fn ops_float(input: &OpsInput) {
             }
         }
     }
-    float_locate_agrees("A", &a, &ax, &points, input);
-    float_locate_agrees("B", &b, &bx, &points, input);
+    float_locate_agrees("A", &a, &ax, &points, &place, input);
+    float_locate_agrees("B", &b, &bx, &points, &place, input);
     for (((name, _), set), x) in OPS.iter().zip(&out).zip(&exact) {
-        float_locate_agrees(name, set, x, &points, input);
+        float_locate_agrees(name, set, x, &points, &place, input);
     }
+}
+
+/// The area identities of bounded operands on the float results read exactly: each result F
+/// is within g·(L_A + L_B + L_E) ≤ 2·g·(L_A + L_B) of the exact result E on the same
+/// operands (the contract, lengths in L¹), so an identity with coefficients summing to k in
+/// absolute value holds within k·2·g·(L_A + L_B).
+fn area_identities<D: Debug>(
+    a: &YinSet2<Rational>,
+    b: &YinSet2<Rational>,
+    out: &[YinSet2<Rational>],
+    meet: &YinSet2<Float>,
+    input: &D,
+) {
+    let (Some(x), Some(y), Some(g)) = (a.area(), b.area(), meet.grid()) else {
+        return;
+    };
+    let area = |k: usize| {
+        out[k]
+            .area()
+            .expect("a result of bounded operands is bounded")
+    };
+    let (m, j, d, s) = (area(0), area(1), area(4), area(5));
+    let int = |v: i64| Rational::from_integer(v.into());
+    let unit = int(2) * grid_rational(g) * (l1_length(&curves_of(a)) + l1_length(&curves_of(b)));
+    let checks = [
+        (
+            "|A∧B| + |A∨B| − |A| − |B|",
+            m.clone() + j - x.clone() - y.clone(),
+            2,
+        ),
+        ("|A∧B| + |A−B| − |A|", m.clone() + d - x.clone(), 2),
+        ("|A⊕B| + 2|A∧B| − |A| − |B|", s + int(2) * m - x - y, 3),
+    ];
+    for (what, v, k) in checks {
+        let bound = int(k) * unit.clone();
+        if v > bound || -v.clone() > bound {
+            fail!(
+                input,
+                "area identity in float mode: {what} = {v}, beyond the contract's {bound} (g = {g:e})"
+            );
+        }
+    }
+}
+
+/// The vertex cycles of an exact set.
+fn curves_of(set: &YinSet2<Rational>) -> Vec<Vec<Point<Rational>>> {
+    set.curves().iter().map(|c| c.vertices().to_vec()).collect()
 }
 
 /// Winding number of the closed rings around the probe (doubled coordinates), or `None` if the
@@ -421,18 +733,14 @@ fn check_error<D: Debug>(e: &YinError, shape: &Shape, input: &D) {
     let vertex_ok = |c: usize, v: usize| c < n && v < shape.curves[c].len();
     let ok = match e {
         YinError::NoCurves => n == 0,
-        // Internal invariants, and float-mode refusals that grid inputs (coordinates 0..7,
-        // ε ≥ 10⁻⁹ or a grid point's own) never justify.
+        // Internal invariants; float mode's own refusals are judged by `float_refusal_ok`.
         YinError::NotFinite { .. }
         | YinError::NotCanonical
         | YinError::Unbalanced { .. }
         | YinError::SnapStalled { .. }
         | YinError::SweepCycle { .. }
-        | YinError::CollapsedOnGrid { .. } => false,
-        YinError::ToleranceTooFine {
-            requested,
-            representable,
-        } => representable > requested,
+        | YinError::CollapsedOnGrid { .. }
+        | YinError::ToleranceTooFine { .. } => false,
         YinError::TooFewVertices { curve, count } => curve_ok(*curve) && *count < 3,
         YinError::RepeatedVertex { curve, vertex, .. }
         | YinError::NotSimple { curve, vertex, .. } => vertex_ok(*curve, *vertex),
@@ -532,33 +840,117 @@ pub fn construct(input: &ConstructInput) {
             let _ = (set.betti(), set.area(), set.atoms(), set.parents());
         }
     }
-    let (tol, delta) = float_tolerance(input.tol);
-    let float_curves: Vec<Vec<Point<Float>>> = shape
-        .curves
-        .iter()
-        .map(|c| c.iter().map(|p| float_point(p, 0.0)).collect())
-        .collect();
-    match (YinSet2::from_curves_with(float_curves, tol), &exact) {
-        (Ok(set), Ok(_)) => valid("float from_curves", &set, input),
-        (Err(e), Err(_)) => check_error(&e, shape, input),
+    let place = Placement::of(input.tol, &input.scale);
+    let float_curves = place.curves(shape, false);
+    let c = Contract::of(&float_curves, place.tol);
+    let exact_here = if place.is_identity() {
+        exact
+    } else {
+        YinSet2::from_curves(exact_curves(&float_curves))
+    };
+    match (
+        YinSet2::from_curves_with(float_curves, place.tol),
+        &exact_here,
+    ) {
+        (Ok(set), Ok(x)) => {
+            float_accepted("float from_curves", &set, &c, input);
+            if let Some(g) = set.grid() {
+                close_in_area("float from_curves", &set, x, g, &c.length, input);
+            }
+        }
+        (Err(e), Err(_)) => {
+            if float_refusal_ok(&e, &c, None) != Some(true) {
+                check_error(&e, shape, input);
+            }
+        }
         (Ok(set), Err(e)) => fail!(
             input,
-            "float mode accepts what exact mode rejects ({e})\nfloat = {set:?}"
+            "float mode accepts what exact mode rejects on the same coordinates ({e})\nfloat = {set:?}"
         ),
-        (Err(e), Ok(_)) => fail!(input, "float mode rejects what exact mode accepts: {e}"),
-    }
-    for rule in [FillRule::EvenOdd, FillRule::NonZero] {
-        let jittered = shape
-            .curves
-            .iter()
-            .map(|c| c.iter().map(|p| float_point(p, delta)).collect())
-            .collect();
-        match YinSet2::from_rings_filled_with(jittered, rule, tol) {
-            Ok(set) => valid(&format!("float fill {rule:?}"), &set, input),
-            Err(e) => fail!(
-                input,
-                "float from_rings_filled({rule:?}) rejected finite rings: {e}"
-            ),
+        (Err(e), Ok(x)) => {
+            if float_refusal_ok(&e, &c, Some(x)) != Some(true) {
+                fail!(
+                    input,
+                    "float mode rejects what exact mode accepts on the same coordinates: {e:?} ({e})"
+                );
+            }
         }
+    }
+    let jittered = place.curves(shape, true);
+    let c = Contract::of(&jittered, place.tol);
+    for rule in [FillRule::EvenOdd, FillRule::NonZero] {
+        let what = format!("float fill {rule:?}");
+        match YinSet2::from_rings_filled_with(jittered.clone(), rule, place.tol) {
+            Ok(set) => {
+                float_accepted(&what, &set, &c, input);
+                let exact = YinSet2::from_rings_filled(exact_curves(&jittered), rule)
+                    .unwrap_or_else(|e| {
+                        fail!(input, "exact from_rings_filled rejected finite rings: {e}")
+                    });
+                if let Some(g) = set.grid() {
+                    close_in_area(&what, &set, &exact, g, &c.length, input);
+                }
+            }
+            Err(e) if float_refusal_ok(&e, &c, None) == Some(true) => {}
+            Err(e) => fail!(input, "{what} rejected finite rings: {e:?} ({e})"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::panic::{catch_unwind, AssertUnwindSafe};
+
+    /// The unit square as float curves.
+    fn square(side: f64) -> Vec<Vec<Point<Float>>> {
+        let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+        vec![vec![p(0.0, 0.0), p(side, 0.0), p(side, side), p(0.0, side)]]
+    }
+
+    #[test]
+    fn pow2_floor_covers_subnormals_and_the_top() {
+        assert_eq!(pow2_floor(5e-324), 5e-324);
+        assert_eq!(pow2_floor(1.5e-323), 1e-323);
+        assert_eq!(pow2_floor(3.0), 2.0);
+        assert_eq!(pow2_floor(f64::MAX), 2f64.powi(1023));
+    }
+
+    #[test]
+    fn tolerance_too_fine_is_judged_by_the_magnitude() {
+        let fine = Contract::of(&square(1.0), Tolerance::new(1e-310));
+        assert!(fine.too_fine());
+        let e = YinSet2::from_curves_with(square(1.0), Tolerance::new(1e-310)).unwrap_err();
+        assert_eq!(float_refusal_ok(&e, &fine, None), Some(true), "{e:?}");
+        let edge = Contract::of(&square(1.0), Tolerance::new(2f64.powi(-51)));
+        assert!(!edge.too_fine());
+        assert_eq!(float_refusal_ok(&e, &edge, None), Some(false));
+        let y = YinSet2::from_curves_with(square(1.0), Tolerance::new(2f64.powi(-51))).unwrap();
+        float_accepted("square", &y, &edge, &"edge");
+    }
+
+    #[test]
+    fn an_emptied_set_fails_the_area_bound_unless_the_grid_allows_it() {
+        let exact = YinSet2::from_curves(exact_curves(&square(1.0))).unwrap();
+        let length = Rational::from_integer(4.into());
+        let empty = YinSet2::<Float>::empty();
+        let fine = catch_unwind(AssertUnwindSafe(|| {
+            close_in_area("x", &empty, &exact, 2f64.powi(-10), &length, &"fine")
+        }));
+        assert!(
+            fine.is_err(),
+            "a unit square emptied on a 2^-10 grid passed"
+        );
+        close_in_area("x", &empty, &exact, 1.0, &length, &"coarse");
+        let c = Contract::of(&square(1.0), Tolerance::new(1e300));
+        let collapsed = YinError::CollapsedOnGrid {
+            grid: Float::new(pow2_floor(1e300)),
+        };
+        assert_eq!(float_refusal_ok(&collapsed, &c, Some(&exact)), Some(true));
+        let c = Contract::of(&square(1.0), Tolerance::new(0.01));
+        let collapsed = YinError::CollapsedOnGrid {
+            grid: Float::new(pow2_floor(0.01)),
+        };
+        assert_eq!(float_refusal_ok(&collapsed, &c, Some(&exact)), Some(false));
     }
 }

@@ -6,14 +6,24 @@
 //! back, so that the seed generator can write the paper's figure configurations as inputs.
 //!
 //! ```text
-//! OpsInput       := tol:u8 Shape Shape Probes
-//! ConstructInput := tol:u8 Shape Probes
+//! OpsInput       := tol:u8 Shape Shape Probes Scale
+//! ConstructInput := tol:u8 Shape Probes Scale
 //! Shape          := flags:u8 ncurves:u8 (len:u8 point:u8{len % (MAX_POINTS+1)}){ncurves % (MAX_CURVES+1)}
 //! point          := bits 0-2 x, bits 3-5 y (grid 0..8), bits 6-7 float-mode jitter
 //! Probes         := n:u8 probe:u8{n % (MAX_PROBES+1)}
 //! probe          := low nibble % 10 = i, high nibble % 10 = j: the point (i - 1/2, j - 1/2)
 //! tol            := bits 0-2 ε (float mode), bits 3-4 jitter size (float mode)
+//! Scale          := mode:u8 exp:u8 shift:u8 eps:u8   (float mode only; absent bytes read 0)
+//! mode           := bits 0-1 scale s (1: 2^k, 2: 10^k, else 1), bits 2-3 offset (0: none,
+//!                   1: +s·2^shift in x, 2: in y, 3: −s·2^shift in both)
+//! exp            := k over the whole range: 2^k for k in −997..=993, 10^k for k in −300..=299
+//! shift          := % 64 (lowered until the offset is at most 10^300)
+//! eps            := 0: tol's ε times s; 1..=15: an absolute ε from SPECIAL_EPS (subnormal
+//!                   to f64::MAX); 16..=255: s·2^(eps − 136)
 //! ```
+//!
+//! The Scale bytes come last so that inputs without them (every seed written before they
+//! existed) decode as before: unit scale, no offset, tol's ε.
 
 use arbitrary::{Arbitrary, Result, Unstructured};
 
@@ -150,6 +160,88 @@ fn encode_probes(probes: &[Probe], out: &mut Vec<u8>) {
 /// Float mode's ε (index: the tol byte's bits 0-2); 0 means "from the input's extent".
 pub const EPS: [f64; 8] = [0.0, 1e-9, 1e-6, 1e-4, 1e-3, 1e-2, 0.1, 0.25];
 
+/// Absolute ε values of the Scale byte `eps` in 1..=15: subnormal, the smallest normal, and
+/// up to the largest finite `f64`.
+pub const SPECIAL_EPS: [f64; 15] = [
+    5e-324,
+    1e-323,
+    1e-310,
+    f64::MIN_POSITIVE,
+    // The largest subnormal.
+    f64::from_bits(0x000f_ffff_ffff_ffff),
+    1e-300,
+    1e-200,
+    1e-100,
+    1e-10,
+    1.0,
+    1e10,
+    1e100,
+    1e200,
+    1e300,
+    f64::MAX,
+];
+
+/// Where float mode puts the grid shapes: coordinates s·(x + jitter) + offset, with s and the
+/// offset over the whole `f64` range (10⁻³⁰⁰ … 10³⁰⁰), and the ε chosen with them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Scale {
+    /// Bits 0-1: the kind of s; bits 2-3: the offset's direction.
+    pub mode: u8,
+    /// The exponent k of s.
+    pub exp: u8,
+    /// The offset is s·2^shift.
+    pub shift: u8,
+    /// The ε selector.
+    pub eps: u8,
+}
+
+impl Scale {
+    fn decode(u: &mut Unstructured<'_>) -> Result<Scale> {
+        Ok(Scale {
+            mode: u8::arbitrary(u)?,
+            exp: u8::arbitrary(u)?,
+            shift: u8::arbitrary(u)?,
+            eps: u8::arbitrary(u)?,
+        })
+    }
+
+    /// The bytes of a placement; none for the default one (missing bytes read as 0), so that
+    /// unscaled inputs keep their earlier encoding.
+    fn encode(&self, out: &mut Vec<u8>) {
+        if *self != Scale::default() {
+            out.extend([self.mode, self.exp, self.shift, self.eps]);
+        }
+    }
+
+    /// The scale factor s (an `f64`: 10^k rounded to nearest).
+    pub fn factor(&self) -> f64 {
+        let e = i32::from(self.exp);
+        match self.mode & 3 {
+            1 => 2f64.powi(-997 + e * 1990 / 255),
+            2 => format!("1e{}", -300 + e * 599 / 255)
+                .parse()
+                .expect("a decimal power of ten"),
+            _ => 1.0,
+        }
+    }
+
+    /// The offset (x, y) added to every scaled coordinate.
+    pub fn offset(&self) -> (f64, f64) {
+        let s = self.factor();
+        let mut shift = i32::from(self.shift % 64);
+        while shift > 0 && s * 2f64.powi(shift) > 1e300 {
+            shift -= 1;
+        }
+        let o = s * 2f64.powi(shift);
+        match (self.mode >> 2) & 3 {
+            1 => (o, 0.0),
+            2 => (0.0, o),
+            3 => (-o, -o),
+            _ => (0.0, 0.0),
+        }
+    }
+}
+
 /// Input of the binary-operation targets.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct OpsInput {
@@ -161,6 +253,8 @@ pub struct OpsInput {
     pub b: Shape,
     /// Membership probes.
     pub probes: Vec<Probe>,
+    /// Float mode: scale, offset and ε.
+    pub scale: Scale,
 }
 
 impl<'a> Arbitrary<'a> for OpsInput {
@@ -170,6 +264,7 @@ impl<'a> Arbitrary<'a> for OpsInput {
             a: Shape::decode(u)?,
             b: Shape::decode(u)?,
             probes: decode_probes(u)?,
+            scale: Scale::decode(u)?,
         })
     }
 }
@@ -181,6 +276,7 @@ impl OpsInput {
         self.a.encode(&mut out);
         self.b.encode(&mut out);
         encode_probes(&self.probes, &mut out);
+        self.scale.encode(&mut out);
         out
     }
 }
@@ -194,6 +290,8 @@ pub struct ConstructInput {
     pub shape: Shape,
     /// Membership probes.
     pub probes: Vec<Probe>,
+    /// Float mode: scale, offset and ε.
+    pub scale: Scale,
 }
 
 impl<'a> Arbitrary<'a> for ConstructInput {
@@ -202,6 +300,7 @@ impl<'a> Arbitrary<'a> for ConstructInput {
             tol: u8::arbitrary(u)?,
             shape: Shape::decode(u)?,
             probes: decode_probes(u)?,
+            scale: Scale::decode(u)?,
         })
     }
 }
@@ -212,6 +311,7 @@ impl ConstructInput {
         let mut out = vec![self.tol];
         self.shape.encode(&mut out);
         encode_probes(&self.probes, &mut out);
+        self.scale.encode(&mut out);
         out
     }
 }
@@ -239,14 +339,43 @@ mod tests {
                 }]],
             },
             probes: vec![Probe { i: 9, j: 0 }, Probe { i: 1, j: 4 }],
+            scale: Scale {
+                mode: 13,
+                exp: 200,
+                shift: 40,
+                eps: 3,
+            },
         };
         assert_eq!(decode::<OpsInput>(&input.encode()).unwrap(), input);
         let c = ConstructInput {
             tol: 7,
             shape: input.a.clone(),
             probes: input.probes.clone(),
+            scale: Scale::default(),
         };
         assert_eq!(decode::<ConstructInput>(&c.encode()).unwrap(), c);
+    }
+
+    #[test]
+    fn scales_span_the_float_range() {
+        let s = |mode, exp| Scale {
+            mode,
+            exp,
+            ..Scale::default()
+        };
+        assert_eq!(s(0, 200).factor(), 1.0);
+        assert_eq!(s(1, 0).factor(), 2f64.powi(-997));
+        assert_eq!(s(1, 255).factor(), 2f64.powi(993));
+        assert_eq!(s(2, 0).factor(), 1e-300);
+        assert_eq!(s(2, 255).factor(), 1e299);
+        let far = Scale {
+            mode: 1 | 4,
+            exp: 255,
+            shift: 63,
+            eps: 0,
+        };
+        let (x, y) = far.offset();
+        assert!(x <= 1e300 && x > 1e299 / 8.0 && y == 0.0, "{x}");
     }
 
     #[test]
