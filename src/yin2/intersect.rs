@@ -47,8 +47,10 @@ pub fn intersections<N: Num>(
         .collect()
 }
 
-/// Float mode's budget of box pairs per edge before it falls back to [`exact_image_pairs`].
-pub const BOX_PAIRS_PER_EDGE: usize = 256;
+/// Float mode's budget of box pairs per edge before it falls back to [`exact_image_pairs`]:
+/// also the bound on the pair list's memory, 16 bytes a pair (at 256 a pair it was 12 GB of the
+/// W1 n = 10⁶ float meet's 15 GB peak).
+pub const BOX_PAIRS_PER_EDGE: usize = 16;
 
 /// The pairs of edges whose bounding boxes meet, from an R*-tree of the boxes (`rstar`):
 /// complete whatever the arithmetic (each box is widened by an ulp around its `f64` image,
