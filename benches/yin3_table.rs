@@ -25,6 +25,8 @@ mod cpu_time;
 mod work;
 
 use cpu_time::thread_cpu;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -193,7 +195,18 @@ fn peer(cmd: &[&str], a: &Path, b: &Path, extra: &[&str], limit_s: u64) -> Cell 
         .find_map(|l| serde_json::from_str(l).ok());
     let err = || {
         let e = String::from_utf8_lossy(&out.stderr);
-        let last = e.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
+        let mut last = e
+            .lines()
+            .rev()
+            .find(|l| !l.trim().is_empty())
+            .unwrap_or("")
+            .to_string();
+        // The files' directory would fill the cell: name them by their file names.
+        for p in [a, b] {
+            if let (Some(full), Some(name)) = (p.to_str(), p.file_name().and_then(|n| n.to_str())) {
+                last = last.replace(full, name);
+            }
+        }
         format!(
             "exit {}: {}",
             out.status.code().unwrap_or(-1),
@@ -213,7 +226,14 @@ fn peer(cmd: &[&str], a: &Path, b: &Path, extra: &[&str], limit_s: u64) -> Cell 
     if !bad.is_empty() {
         return Cell::Status(bad.join(", "));
     }
-    match (j["time_ms"].as_f64(), j["volume"].as_f64()) {
+    // CGAL's harness prints `volume` to six significant digits (a 10⁻⁶ check would flag it)
+    // and `volume_exact` as p/q: the exact one is read where there is one.
+    let volume = j["volume_exact"]
+        .as_str()
+        .and_then(|s| s.parse::<BigRational>().ok())
+        .and_then(|q| q.to_f64())
+        .or(j["volume"].as_f64());
+    match (j["time_ms"].as_f64(), volume) {
         (Some(ms), Some(v)) => Cell::Time(ms, v),
         _ => Cell::Status(err()),
     }
