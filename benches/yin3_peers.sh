@@ -5,8 +5,8 @@
 # target/yin3_workloads), then the peak memory of one V1 meet at the largest size, ours and the
 # peers', under /usr/bin/time -v. The table goes to stdout and target/yin3_table.md.
 #
-#   bash benches/yin3_peers.sh [--max-exact-s S] [--max-m M] [--reps R] [--peak-m M]
-#                              [--peak-exact-m M]
+#   bash benches/yin3_peers.sh [--max-exact-s S] [--max-float-s F] [--max-m M] [--reps R]
+#                              [--peak-m M] [--peak-exact-m M]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 peak_m=128
@@ -33,6 +33,8 @@ if [ ! -x target/cgal3d/cgal3d ]; then
 fi
 CARGO_TARGET_DIR=target/mesh_peers cargo build -q --release --manifest-path benches/mesh_peers/Cargo.toml
 echo "== machine"; uname -srm; grep -m1 'model name' /proc/cpuinfo; nproc; free -g | sed -n 2p
+echo "== code"; git rev-parse --short HEAD; git status --short | head
+echo "== start"; date -u; uptime
 echo "== table"
 cargo bench --bench yin3_table -- "${args[@]}"
 bin=$(cargo bench --bench yin3_table --no-run 2>&1 | grep -o 'target/release/deps/yin3_table-[0-9a-f]*' | head -1)
@@ -49,3 +51,4 @@ a=target/yin3_workloads/v1_a_$peak_m.obj; b=target/yin3_workloads/v1_b_$peak_m.o
 peak Manifold target/m3venv/bin/python "$tools/manifold3d/m3.py" meet "$a" "$b" --reps 1
 peak "CGAL corefine" target/cgal3d/cgal3d meet "$a" "$b" --engine corefine --reps 1
 peak boolmesh target/mesh_peers/release/mesh_peers boolmesh meet "$a" "$b" --reps 1
+echo "== end"; date -u; uptime

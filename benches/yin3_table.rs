@@ -4,15 +4,19 @@
 //! which builds the peers; a peer that is missing shows as "n/a".
 //!
 //! ```sh
-//! cargo bench --bench yin3_table -- [--max-exact-s S] [--max-m M] [--reps R]
+//! cargo bench --bench yin3_table -- [--max-exact-s S] [--max-float-s F] [--max-m M] [--reps R]
 //! cargo bench --bench yin3_table -- --peak exact|float M   # one V1 meet, for /usr/bin/time -v
 //! ```
 //!
 //! Our times are the best CPU time of the meet alone over R runs (operands built beforehand),
 //! as the peers' `time_ms` are. V1 doubles n (m grows by √2 each step) until the exact meet
-//! takes longer than S seconds (float: until m = M). A peer's row shows its exit status or
+//! takes longer than S seconds, our float past F seconds, a peer past its time limit (V1 stops at
+//! m = M or when both of ours have stopped). A peer's row shows its exit status or
 //! error instead of a time when it rejects the input or fails, and "vol≠" when its volume
-//! differs from our exact one by more than 10⁻⁶ relative (a mangled result).
+//! differs from our exact one by more than 10⁻⁶ relative (a mangled result). Our float cell is
+//! flagged "vol≠" when its volume differs from our exact one by more than README's bound for
+//! 3D float mode, ε·A (ε the default tolerance of the pair, A the boundary area of the operands
+//! plus the result's); each row's difference and bound are printed after the table.
 
 #[allow(dead_code)] // only the thread clock is used here
 #[path = "peers/cpu_time.rs"]
@@ -21,10 +25,12 @@ mod cpu_time;
 mod work;
 
 use cpu_time::thread_cpu;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use yinset::num::{Float, Num, Rational};
+use yinset::num::{Float, Num, Rational, Tolerance};
 use yinset::yin3::YinSet3;
 
 /// The outcome of one contender on one pair.
@@ -43,11 +49,11 @@ impl Cell {
         }
     }
 
-    /// The cell's text, flagging a volume off `reference`.
-    fn show(&self, reference: Option<f64>) -> String {
+    /// The cell's text, flagging a volume more than `tol` off `reference`.
+    fn show(&self, reference: Option<f64>, tol: f64) -> String {
         match self {
             Cell::Time(ms, v) => {
-                let off = reference.is_some_and(|r| (v - r).abs() > 1e-6 * r.abs().max(1e-12));
+                let off = reference.is_some_and(|r| (v - r).abs() > tol);
                 format!(
                     "{}{}",
                     fmt_ms(*ms),
@@ -74,10 +80,48 @@ fn fmt_ms(ms: f64) -> String {
     }
 }
 
+/// README's bound on |vol F − vol E| for our float meet F of the files against the exact E:
+/// vol(F △ E) ≤ ε·A, ε the default tolerance of the pair's bounding box, A the boundary area
+/// of both operands plus the result's, at most twice the operands' (the meet's boundary lies
+/// on theirs).
+fn float_bound(a: &Path, b: &Path) -> f64 {
+    let (ma, mb) = (work::read_f64(a), work::read_f64(b));
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    let mut area = 0.0;
+    for m in [&ma, &mb] {
+        for p in &m.points {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        for t in &m.tris {
+            let [p, q, r] = t.map(|i| m.points[i]);
+            let (u, v) = (
+                [0, 1, 2].map(|k| q[k] - p[k]),
+                [0, 1, 2].map(|k| r[k] - p[k]),
+            );
+            let c = [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ];
+            area += (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt() / 2.0;
+        }
+    }
+    let span = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+    let magnitude = lo.iter().chain(&hi).fold(0.0f64, |m, x| m.max(x.abs()));
+    let eps = Tolerance::default()
+        .resolve(span, magnitude)
+        .map_or(f64::NAN, |t| t.eps());
+    eps * 2.0 * area
+}
+
 /// Options of the run.
 struct Opts {
     reps: usize,
     max_exact_s: f64,
+    max_float_s: f64,
     max_m: usize,
 }
 
@@ -151,7 +195,18 @@ fn peer(cmd: &[&str], a: &Path, b: &Path, extra: &[&str], limit_s: u64) -> Cell 
         .find_map(|l| serde_json::from_str(l).ok());
     let err = || {
         let e = String::from_utf8_lossy(&out.stderr);
-        let last = e.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
+        let mut last = e
+            .lines()
+            .rev()
+            .find(|l| !l.trim().is_empty())
+            .unwrap_or("")
+            .to_string();
+        // The files' directory would fill the cell: name them by their file names.
+        for p in [a, b] {
+            if let (Some(full), Some(name)) = (p.to_str(), p.file_name().and_then(|n| n.to_str())) {
+                last = last.replace(full, name);
+            }
+        }
         format!(
             "exit {}: {}",
             out.status.code().unwrap_or(-1),
@@ -171,75 +226,133 @@ fn peer(cmd: &[&str], a: &Path, b: &Path, extra: &[&str], limit_s: u64) -> Cell 
     if !bad.is_empty() {
         return Cell::Status(bad.join(", "));
     }
-    match (j["time_ms"].as_f64(), j["volume"].as_f64()) {
+    // CGAL's harness prints `volume` to six significant digits (a 10⁻⁶ check would flag it)
+    // and `volume_exact` as p/q: the exact one is read where there is one.
+    let volume = j["volume_exact"]
+        .as_str()
+        .and_then(|s| s.parse::<BigRational>().ok())
+        .and_then(|q| q.to_f64())
+        .or(j["volume"].as_f64());
+    match (j["time_ms"].as_f64(), volume) {
         (Some(ms), Some(v)) => Cell::Time(ms, v),
         _ => Cell::Status(err()),
     }
 }
 
-/// Every contender on one pair.
-fn row(label: &str, a: &Path, b: &Path, o: &Opts, exact: bool) -> (Vec<Cell>, Option<f64>) {
+/// A row's results: the contenders' cells, the reference volume (ours exact, else ours
+/// float) and README's bound on our float volume's difference from it.
+struct Row {
+    cells: Vec<Cell>,
+    reference: Option<f64>,
+    float_bound: f64,
+}
+
+/// Every contender on one pair; `run[k]` says whether contender k (the table's order) runs
+/// (V1 drops a contender past its limit at a smaller n).
+fn row(label: &str, a: &Path, b: &Path, o: &Opts, run: [bool; 6]) -> Row {
     let reps = o.reps.to_string();
     let py = target("m3venv/bin/python");
     let m3 = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/tools/manifold3d/m3.py");
     let cgal = target("cgal3d/cgal3d");
     let bm = target("mesh_peers/release/mesh_peers");
-    let e = if exact {
+    let skipped = || Cell::Status("skipped (over its limit at a smaller n)".into());
+    let e = if run[0] {
         ours::<Rational>(a, b, o.reps, true)
     } else {
-        Cell::Status("skipped".into())
+        skipped()
     };
-    let f = ours::<Float>(a, b, o.reps, true);
+    let f = if run[1] {
+        ours::<Float>(a, b, o.reps, true)
+    } else {
+        skipped()
+    };
     let reference = match (&e, &f) {
         (Cell::Time(_, v), _) => Some(*v),
         (_, Cell::Time(_, v)) => Some(*v),
         _ => None,
     };
-    let cells = vec![
-        e,
-        f,
-        peer(
-            &[py.to_str().unwrap(), m3.to_str().unwrap()],
-            a,
-            b,
-            &["--reps", &reps],
-            60,
+    let peers: [(Vec<&str>, Vec<&str>); 4] = [
+        (
+            vec![py.to_str().unwrap(), m3.to_str().unwrap()],
+            vec!["--reps", &reps],
         ),
-        peer(
-            &[cgal.to_str().unwrap()],
-            a,
-            b,
-            &["--engine", "corefine", "--reps", &reps],
-            60,
+        (
+            vec![cgal.to_str().unwrap()],
+            vec!["--engine", "corefine", "--reps", &reps],
         ),
-        peer(
-            &[cgal.to_str().unwrap()],
-            a,
-            b,
-            &["--engine", "nef", "--reps", "1"],
-            60,
+        (
+            vec![cgal.to_str().unwrap()],
+            vec!["--engine", "nef", "--reps", "1"],
         ),
-        peer(
-            &[bm.to_str().unwrap(), "boolmesh"],
-            a,
-            b,
-            &["--reps", &reps],
-            60,
+        (
+            vec![bm.to_str().unwrap(), "boolmesh"],
+            vec!["--reps", &reps],
         ),
     ];
+    let mut cells = vec![e, f];
+    cells.extend(peers.iter().zip(&run[2..]).map(|((cmd, extra), &go)| {
+        if go {
+            peer(cmd, a, b, extra, PEER_LIMIT_S)
+        } else {
+            skipped()
+        }
+    }));
     eprintln!("done: {label}");
-    (cells, reference)
+    Row {
+        cells,
+        reference,
+        float_bound: float_bound(a, b),
+    }
 }
+
+/// A peer's time limit per call, seconds.
+const PEER_LIMIT_S: u64 = 60;
 
 const HEAD: &str = "| workload | ours exact | ours float | Manifold | CGAL corefine | CGAL Nef | boolmesh | exact/float | exact/corefine | exact/Nef | float/Manifold |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
 
+/// Our float volume's difference from our exact one and README's bound on it, when both ran.
+fn float_gap(r: &Row) -> Option<(f64, f64)> {
+    match (&r.cells[0], &r.cells[1]) {
+        (Cell::Time(_, e), Cell::Time(_, f)) => Some(((f - e).abs(), r.float_bound)),
+        _ => None,
+    }
+}
+
+/// A line of the float check: the difference, the bound and whether it holds.
+fn gap_line(label: &str, gap: Option<(f64, f64)>) -> String {
+    match gap {
+        Some((d, b)) => format!(
+            "| {label} | {d:.3e} | {b:.3e} | {} |\n",
+            if d <= b { "yes" } else { "**no**" }
+        ),
+        None => format!("| {label} | – | – | – |\n"),
+    }
+}
+
+/// The float check's line for a row.
+fn check(label: &str, r: &Row) -> String {
+    gap_line(label, float_gap(r))
+}
+
 /// One line of the table.
-fn line(label: &str, cells: &[Cell], reference: Option<f64>) -> String {
+fn line(label: &str, r: &Row) -> String {
+    let cells = &r.cells;
     let ratio = |x: Option<f64>, y: Option<f64>| match (x, y) {
         (Some(x), Some(y)) if y > 0.0 => format!("{:.2}", x / y),
         _ => "–".into(),
     };
-    let shown: Vec<String> = cells.iter().map(|c| c.show(reference)).collect();
+    let shown: Vec<String> = cells
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let tol = match (i, r.reference) {
+                (1, _) => r.float_bound,
+                (_, Some(v)) => 1e-6 * v.abs().max(1e-12),
+                _ => 0.0,
+            };
+            c.show(r.reference, tol)
+        })
+        .collect();
     format!(
         "| {label} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
         shown[0],
@@ -311,11 +424,17 @@ fn main() {
         max_exact_s: get("--max-exact-s")
             .and_then(|s| s.parse().ok())
             .unwrap_or(60.0),
+        max_float_s: get("--max-float-s")
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(f64::INFINITY),
         max_m: get("--max-m").and_then(|s| s.parse().ok()).unwrap_or(128),
     };
     let mut table = say(HEAD.to_string());
     let mut v1_times: Vec<V1Times> = Vec::new();
-    let mut exact = true;
+    let mut checks = String::from(
+        "\n| workload | \\|V float − V exact\\| | bound ε·A | within |\n|---|---|---|---|\n",
+    );
+    let mut run = [true; 6];
     for m in v1_sizes(o.max_m) {
         let n = 8 * m * m;
         let (a, b) = work::v1(n);
@@ -324,11 +443,17 @@ fn main() {
             work::write(&format!("v1_b_{m}"), &b),
         );
         let label = format!("V1 n={n}");
-        let (cells, r) = row(&label, &pa, &pb, &o, exact);
-        table += &say(line(&label, &cells, r));
-        v1_times.push((n, cells[0].ms(), cells[1].ms(), cells[2].ms()));
-        if cells[0].ms().is_some_and(|ms| ms > o.max_exact_s * 1e3) {
-            exact = false;
+        let r = row(&label, &pa, &pb, &o, run);
+        table += &say(line(&label, &r));
+        checks += &check(&label, &r);
+        v1_times.push((n, r.cells[0].ms(), r.cells[1].ms(), r.cells[2].ms()));
+        run[0] &= !r.cells[0].ms().is_some_and(|ms| ms > o.max_exact_s * 1e3);
+        run[1] &= !r.cells[1].ms().is_some_and(|ms| ms > o.max_float_s * 1e3);
+        for (go, c) in run.iter_mut().zip(&r.cells).skip(2) {
+            *go &= !matches!(c, Cell::Status(s) if s.starts_with("> "));
+        }
+        if !run[0] && !run[1] {
+            break;
         }
     }
     for k in [2, 4, 8] {
@@ -337,29 +462,35 @@ fn main() {
         for (name, m) in [("shift", shifted), ("turn", turned)] {
             let label = format!("V2 {name} k={k}");
             let pm = work::write(&format!("v2_{name}_{k}"), &m);
-            let (cells, r) = row(&label, &pg, &pm, &o, true);
-            table += &say(line(&label, &cells, r));
+            let r = row(&label, &pg, &pm, &o, [true; 6]);
+            table += &say(line(&label, &r));
+            checks += &check(&label, &r);
         }
     }
     for (label, a, b) in work::v3_files() {
         let label = format!("V3 {label}");
-        let (cells, r) = row(&label, &a, &b, &o, true);
-        table += &say(line(&label, &cells, r));
+        let r = row(&label, &a, &b, &o, [true; 6]);
+        table += &say(line(&label, &r));
+        checks += &check(&label, &r);
     }
     let n4 = 4;
     let sphere = work::write("v4_sphere_968", &work::v4_sphere(1000));
     let mut sums: Vec<Option<f64>> = vec![Some(0.0); 6];
     let mut statuses: Vec<Option<String>> = vec![None; 6];
+    let mut v4_gap = (0.0, 0.0);
     for (i, cell) in work::v4_cells(n4).iter().enumerate() {
         let pc = work::write(&format!("v4_cell_{n4}_{i}"), cell);
-        let (cells, _) = row(
+        let r = row(
             &format!("V4 cell {i}"),
             &sphere,
             &pc,
             &Opts { reps: 1, ..o },
-            true,
+            [true; 6],
         );
-        for (k, c) in cells.iter().enumerate() {
+        if let Some((d, b)) = float_gap(&r) {
+            v4_gap = (v4_gap.0 + d, v4_gap.1 + b);
+        }
+        for (k, c) in r.cells.iter().enumerate() {
             match c {
                 Cell::Time(ms, _) => sums[k] = sums[k].map(|s| s + ms),
                 Cell::Status(s) => {
@@ -377,11 +508,16 @@ fn main() {
             (None, st) => Cell::Status(st.clone().unwrap_or_default()),
         })
         .collect();
+    let v4_label = format!("V4 sphere n=968, {} cells (sum)", n4 * n4 * n4);
     table += &say(line(
-        &format!("V4 sphere n=968, {} cells (sum)", n4 * n4 * n4),
-        &v4,
-        None,
+        &v4_label,
+        &Row {
+            cells: v4,
+            reference: None,
+            float_bound: f64::NAN,
+        },
     ));
+    checks += &gap_line(&v4_label, Some(v4_gap));
     let mut scaling =
         String::from("\n| V1 n → 2n | ours exact | ours float | Manifold |\n|---|---|---|---|\n");
     for w in v1_times.windows(2) {
@@ -401,6 +537,8 @@ fn main() {
         .expect("writing to a String");
     }
     table += &scaling;
+    table += &checks;
+    println!("{checks}");
     println!("{scaling}");
     let out = target("yin3_table.md");
     std::fs::write(&out, &table).unwrap_or_else(|e| panic!("{}: {e}", out.display()));
