@@ -7,11 +7,47 @@ use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-/// gcd(|a|, |b|) (Lehmer's algorithm, `dashu-int`).
+/// gcd(|a|, |b|): in `u128` when both fit (no allocation), else by Lehmer's algorithm
+/// (`dashu-int`), the operands handed over as machine words.
 fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
-    let to_dashu = |x: &BigInt| dashu_int::UBig::from_le_bytes(&x.magnitude().to_bytes_le());
+    use num_integer::Integer;
+    use num_traits::ToPrimitive;
+    let (a, b) = (a.magnitude(), b.magnitude());
+    if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
+        return BigInt::from(x.gcd(&y));
+    }
     let g = dashu_int::ops::Gcd::gcd(&to_dashu(a), &to_dashu(b));
-    BigInt::from_biguint(Sign::Plus, BigUint::from_bytes_le(&g.to_le_bytes()))
+    BigInt::from_biguint(Sign::Plus, from_dashu(&g))
+}
+
+/// `x` as a `dashu-int` number, word by word (64-bit targets, where dashu's word is `u64`).
+#[cfg(target_pointer_width = "64")]
+fn to_dashu(x: &BigUint) -> dashu_int::UBig {
+    let words: Vec<dashu_int::Word> = x.iter_u64_digits().collect();
+    dashu_int::UBig::from_words(&words)
+}
+
+/// `x` as a `dashu-int` number, through its bytes.
+#[cfg(not(target_pointer_width = "64"))]
+fn to_dashu(x: &BigUint) -> dashu_int::UBig {
+    dashu_int::UBig::from_le_bytes(&x.to_bytes_le())
+}
+
+/// A `dashu-int` number as a `num-bigint` one, word by word (64-bit targets).
+#[cfg(target_pointer_width = "64")]
+fn from_dashu(x: &dashu_int::UBig) -> BigUint {
+    let halves: Vec<u32> = x
+        .as_words()
+        .iter()
+        .flat_map(|&w| [w as u32, (w >> 32) as u32])
+        .collect();
+    BigUint::new(halves)
+}
+
+/// A `dashu-int` number as a `num-bigint` one, through its bytes.
+#[cfg(not(target_pointer_width = "64"))]
+fn from_dashu(x: &dashu_int::UBig) -> BigUint {
+    BigUint::from_bytes_le(&x.to_le_bytes())
 }
 
 /// `x / g` for a divisor `g` of `x`, skipping the division by one.
