@@ -1,8 +1,8 @@
 //! The 3D operations on the workloads of issue 19 (benches/yin3_work): meet, join, complement,
 //! locate (1 000 points) and Betti numbers, exact and float, on V1–V4 at small sizes (V3
-//! without torusbig, which the table covers); V4 also
-//! on rayon's threads beside the single-thread figure. Operands are built (and their files
-//! written to target/yin3_workloads) before timing. Times are the benchmarking thread's CPU
+//! without torusbig, which the table covers); V4 also on rayon's threads (`YinSet3::meet_each`)
+//! beside the single-thread figure. Operands are built (and their files written to
+//! target/yin3_workloads) before timing. Times are the benchmarking thread's CPU
 //! time, except V4's parallel case (wall time, printed). The table against the peers at larger
 //! sizes is benches/yin3_table.rs (run by benches/yin3_peers.sh).
 //!
@@ -18,7 +18,6 @@ mod work;
 
 use cpu_time::CpuTime;
 use criterion::{BatchSize, Criterion};
-use rayon::prelude::*;
 use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -124,7 +123,7 @@ fn v4<N: Num>(c: &mut Criterion<CpuTime>, mode: &str) {
     let best = (0..5)
         .map(|_| {
             let t0 = Instant::now();
-            black_box(cells.par_iter().map(|x| sphere.meet(x)).collect::<Vec<_>>());
+            black_box(sphere.meet_each(&cells).expect("representable"));
             t0.elapsed().as_secs_f64() * 1e3
         })
         .fold(f64::INFINITY, f64::min);
