@@ -731,7 +731,8 @@ fn cells_case<C, O>(
 }
 
 /// W6 (issue 13, item 2): the union of 25 to 300 nearly coincident copies of a small polygon, filled
-/// non-zero: ours from the rings in one fill and as `join_all` of the 300 sets, exact and float;
+/// non-zero: ours from the rings in one fill, as `join_all` of the one-ring sets and as a fold of
+/// binary joins of them, exact and float;
 /// i_overlay's and Clipper2's union of the rings under the non-zero rule, geo's `unary_union`,
 /// CGAL's union of the polygons.
 fn w6(r: &mut Runner) {
@@ -776,6 +777,10 @@ fn w6_union(r: &mut Runner, size: usize) {
         || YinSet2::join_all(&sets),
         |y| checked_by_cgal(y, by_cgal.as_ref()),
     );
+    let fold = || sets.iter().skip(1).fold(sets[0].clone(), |u, s| u.join(s));
+    r.case(group, "exact_fold", size, fold, |y| {
+        checked_by_cgal(y, by_cgal.as_ref())
+    });
     let float_rings: Vec<Vec<Point<Float>>> = rings.iter().map(|c| common::points(c)).collect();
     let fill = || {
         YinSet2::from_rings_filled_with(
@@ -797,6 +802,8 @@ fn w6_union(r: &mut Runner, size: usize) {
         || YinSet2::join_all(&sets),
         show_set,
     );
+    let fold = || sets.iter().skip(1).fold(sets[0].clone(), |u, s| u.join(s));
+    r.case(group, "float_fold", size, fold, show_set);
     let ir = contenders::i_overlay_input(&rings);
     r.case(
         group,
