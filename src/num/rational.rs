@@ -95,7 +95,10 @@ fn lowest(n: i128, d: i128) -> Rational {
     if -LIMIT < n && n < LIMIT && d < LIMIT {
         Rational(Repr::Small(n as i64, d as i64))
     } else {
-        Rational(Repr::Big(Big::boxed(BigRational::new_raw(n.into(), d.into()))))
+        Rational(Repr::Big(Big::boxed(BigRational::new_raw(
+            n.into(),
+            d.into(),
+        ))))
     }
 }
 
