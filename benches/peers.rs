@@ -1,11 +1,14 @@
-//! yinset against its peers (issue 8): meet, join, complement, locate and Betti numbers, exact
-//! and float, on the workloads W1–W5, with i_overlay, geo's BooleanOps and Clipper2 on the same
-//! `f64` coordinates. The report is benches/BENCHMARKS.md.
+//! yinset against its peers (issues 8, 13): meet, join, complement, locate and Betti numbers,
+//! exact and float, on the workloads W1–W6, with i_overlay, geo's BooleanOps and Clipper2 on the
+//! same `f64` coordinates, and CGAL's exact kernel on the same values as exact fractions when
+//! `YINSET_CGAL2D` names the harness of ../shared/tools/cgal2d (peers/cgal.rs). The report is
+//! benches/BENCHMARKS.md.
 //!
 //! ```sh
 //! cargo bench --bench peers               # everything (long: see BENCHMARKS.md)
 //! cargo bench --bench peers -- W1/meet    # ids containing "W1/meet"
 //! cargo test --bench peers                # smoke test: smallest sizes, one call each
+//! bash benches/peers2d_cgal.sh            # the run of BENCHMARKS.md, with CGAL
 //! ```
 //!
 //! Ids are `workload/operation/contender/size`. Before it is measured, every case is called once
@@ -13,10 +16,14 @@
 //! lines) and the time of one iteration, which sets the sampling: cases over 30 s are skipped
 //! (printed as `# skip`), cases over 10 s are timed by that one call only (`# single`), and
 //! cases over 50 ms are measured with 10 flat samples of one iteration. After a skipped or
-//! single case, larger sizes of it (and the join after its meet) are not attempted. Times are
-//! the benchmarking thread's CPU time (see peers/cpu_time.rs).
+//! single case, larger sizes of it (and the join after its meet) are not attempted; nor is a
+//! numeric size whose time, predicted from the last smaller one as growing like size^1.5
+//! (W6: size², the crossings of the copies), is over 30 s. Times are the benchmarking thread's CPU time (see peers/cpu_time.rs); CGAL's
+//! (`# cgal` lines) are the harness's process CPU time of the operation alone, best of 3.
 //! The data files are read from ../shared/data/2d beside the repository.
 
+#[path = "peers/cgal.rs"]
+mod cgal;
 #[path = "common/mod.rs"]
 mod common;
 #[path = "peers/contenders.rs"]
@@ -24,18 +31,19 @@ mod contenders;
 #[path = "peers/cpu_time.rs"]
 mod cpu_time;
 
-use common::Curves;
+use common::{Curves, RationalRings};
 use contenders::Op;
 use cpu_time::{thread_cpu, CpuTime};
 use criterion::{BenchmarkId, Criterion, SamplingMode};
 use std::collections::HashMap;
 use std::fmt::Display;
 use std::hint::black_box;
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 use yinset::kernel::Point;
-use yinset::num::{Float, Num, Rational};
+use yinset::num::{Float, Num, Rational, Tolerance};
 use yinset::yin2::intersect::intersections;
-use yinset::yin2::YinSet2;
+use yinset::yin2::{FillRule, YinSet2};
 
 /// Cases whose single iteration takes longer are not measured.
 const SKIP_OVER: Duration = Duration::from_secs(30);
@@ -51,6 +59,10 @@ struct Runner {
     /// Per `group/contender`: the one-call time of a size that was skipped, so that larger
     /// sizes (and the join, after its meet) are not attempted.
     skipped: HashMap<String, f64>,
+    /// Per `group/contender`: the last numeric size measured and its one-call time in seconds.
+    last: HashMap<String, (f64, f64)>,
+    /// The exponent of the predicted growth of a case's time with its numeric size.
+    growth: f64,
     filter: Option<String>,
     /// `cargo test --bench peers`: smallest sizes only, one call each, nothing measured.
     test_mode: bool,
@@ -94,6 +106,8 @@ impl Runner {
                 .with_measurement(CpuTime)
                 .configure_from_args(),
             skipped: HashMap::new(),
+            last: HashMap::new(),
+            growth: 1.5,
             filter,
             test_mode,
         }
@@ -111,6 +125,11 @@ impl Runner {
             .all(|(a, b)| a.starts_with(b) || b.starts_with(a))
     }
 
+    /// True if the case `id` passes the filter.
+    fn selected(&self, id: &str) -> bool {
+        self.filter.as_ref().is_none_or(|f| id.contains(f.as_str()))
+    }
+
     /// One case: `f` is called once untimed (its output goes to `check`), then measured.
     fn case<O>(
         &mut self,
@@ -121,10 +140,8 @@ impl Runner {
         check: impl FnOnce(&O) -> String,
     ) {
         let id = format!("{group}/{contender}/{size}");
-        if let Some(flt) = &self.filter {
-            if !id.contains(flt.as_str()) {
-                return;
-            }
+        if !self.selected(&id) {
+            return;
         }
         let key = format!("{group}/{contender}");
         let meet_key = key.replace("/join/", "/meet/");
@@ -132,9 +149,23 @@ impl Runner {
             println!("# skip {id}: not attempted (a smaller size or the meet took {t:.1} s)");
             return;
         }
+        let numeric = size.to_string().parse::<f64>().ok();
+        if let (Some(n), Some(&(m, t))) = (numeric, self.last.get(&key)) {
+            let predicted = t * (n / m).powf(self.growth);
+            if !self.test_mode && predicted > SKIP_OVER.as_secs_f64() {
+                println!(
+                    "# skip {id}: not attempted (predicted {predicted:.0} s from {t:.2} s at {m})"
+                );
+                self.skipped.insert(key, predicted);
+                return;
+            }
+        }
         let (wall, cpu) = (Instant::now(), thread_cpu());
         let out = f();
         let once = thread_cpu().saturating_sub(cpu);
+        if let Some(n) = numeric {
+            self.last.insert(key.clone(), (n, once.as_secs_f64()));
+        }
         println!(
             "# check {id}: one call {:.3} s CPU ({:.3} s wall), {}",
             once.as_secs_f64(),
@@ -242,17 +273,29 @@ fn binary(
     eb: Option<&YinSet2<Rational>>,
     fa: &YinSet2<Float>,
     fb: &YinSet2<Float>,
+    cgal_files: Option<&[PathBuf]>,
 ) {
     let ours = |x: &YinSet2<Float>, y: &YinSet2<Float>| match op {
         Op::Meet => x.meet(y),
         Op::Join => x.join(y),
     };
+    let name = match op {
+        Op::Meet => "meet",
+        Op::Join => "join",
+    };
+    let by_cgal = cgal_files.and_then(|files| cgal_case(r, group, size, name, files));
     if let (Some(ea), Some(eb)) = (ea, eb) {
         let exact = |x: &YinSet2<Rational>, y: &YinSet2<Rational>| match op {
             Op::Meet => x.meet(y),
             Op::Join => x.join(y),
         };
-        r.case(group, "exact", size, || exact(ea, eb), show_set);
+        r.case(
+            group,
+            "exact",
+            size,
+            || exact(ea, eb),
+            |y| checked_by_cgal(y, by_cgal.as_ref()),
+        );
     }
     r.case(group, "float", size, || ours(fa, fb), show_set);
     peer(
@@ -319,10 +362,71 @@ fn meet_and_join(
     eb: Option<&YinSet2<Rational>>,
     fa: &YinSet2<Float>,
     fb: &YinSet2<Float>,
+    exact_rings: (&RationalRings, &RationalRings),
 ) {
+    let files = cgal::harness().map(|_| {
+        let file = |tag: &str, rings| {
+            cgal::write(&format!("{workload}_{size}_{tag}.yin2"), &cgal::yin2(rings))
+        };
+        [file("a", exact_rings.0), file("b", exact_rings.1)]
+    });
     for (op, name) in [(Op::Meet, "meet"), (Op::Join, "join")] {
         let group = format!("{workload}/{name}");
-        binary(r, &group, size, op, a, b, ea, eb, fa, fb);
+        binary(
+            r,
+            &group,
+            size,
+            op,
+            a,
+            b,
+            ea,
+            eb,
+            fa,
+            fb,
+            files.as_ref().map(|f| &f[..]),
+        );
+    }
+}
+
+/// CGAL's case `group/cgal/size` (when the harness is named and the filter selects it): `op`
+/// on `files`, best CPU time of 3 (of 1 past 1 s), printed as a `# cgal` line.
+fn cgal_case(
+    r: &Runner,
+    group: &str,
+    size: impl Display,
+    op: &str,
+    files: &[PathBuf],
+) -> Option<cgal::Cgal> {
+    let harness = cgal::harness()?;
+    let id = format!("{group}/cgal/{size}");
+    if !r.selected(&id) {
+        return None;
+    }
+    let mut reps = 1;
+    loop {
+        match cgal::run(&harness, op, files, reps) {
+            Ok(c) if reps > 1 || c.time_ms > 1000.0 || r.test_mode => {
+                println!(
+                    "# cgal {id}: {:.3} ms CPU (best of {reps}), area {:.12e}",
+                    c.time_ms,
+                    c.area.to_f64()
+                );
+                return Some(c);
+            }
+            Ok(_) => reps = 3,
+            Err(e) => {
+                println!("# cgal {id}: failed: {e}");
+                return None;
+            }
+        }
+    }
+}
+
+/// The check line of an exact result, with its exact area against CGAL's when CGAL ran.
+fn checked_by_cgal(y: &YinSet2<Rational>, by_cgal: Option<&cgal::Cgal>) -> String {
+    match by_cgal {
+        Some(c) => format!("{}, {}", show_set(y), cgal::compare(y.area(), c)),
+        None => show_set(y),
     }
 }
 
@@ -331,7 +435,7 @@ fn w1(r: &mut Runner) {
     let sizes: &[usize] = if r.test_mode {
         &[100]
     } else {
-        &[1_000, 2_000, 10_000, 20_000, 100_000, 200_000]
+        &[1_000, 2_000, 10_000, 20_000, 100_000]
     };
     for &n in sizes {
         if !r.wants("W1/") {
@@ -349,7 +453,19 @@ fn w1(r: &mut Runner) {
             tf.as_secs_f64(),
             te.as_secs_f64()
         );
-        meet_and_join(r, "W1", n, &a, &b, Some(&ea), Some(&eb), &fa, &fb);
+        let q = (common::rational_rings(&a), common::rational_rings(&b));
+        meet_and_join(
+            r,
+            "W1",
+            n,
+            &a,
+            &b,
+            Some(&ea),
+            Some(&eb),
+            &fa,
+            &fb,
+            (&q.0, &q.1),
+        );
         r.case("W1/complement", "exact", n, || ea.complement(), show_set);
         r.case("W1/complement", "float", n, || fa.complement(), show_set);
         // Betti numbers of the meet: the exact meet only where it was measured.
@@ -440,6 +556,7 @@ fn w2(r: &mut Runner) {
                 Some(&eb),
                 &fa,
                 &fb,
+                None,
             );
         }
     }
@@ -460,7 +577,18 @@ fn w3(r: &mut Runner) {
             common::vertices(&b),
             contacts(&fa, &fb)
         );
-        meet_and_join(r, "W3", name, &a, &b, Some(&ea), Some(&eb), &fa, &fb);
+        meet_and_join(
+            r,
+            "W3",
+            name,
+            &a,
+            &b,
+            Some(&ea),
+            Some(&eb),
+            &fa,
+            &fb,
+            (&qa, &qb),
+        );
     }
 }
 
@@ -479,7 +607,19 @@ fn w4(r: &mut Runner) {
         contacts(&fa, &fb)
     );
     let s = "panda_mickey";
-    meet_and_join(r, "W4", s, &a, &b, Some(&ea), Some(&eb), &fa, &fb);
+    let q = (common::rational_rings(&a), common::rational_rings(&b));
+    meet_and_join(
+        r,
+        "W4",
+        s,
+        &a,
+        &b,
+        Some(&ea),
+        Some(&eb),
+        &fa,
+        &fb,
+        (&q.0, &q.1),
+    );
     r.case(
         "W4/complement",
         "exact",
@@ -590,11 +730,112 @@ fn cells_case<C, O>(
     );
 }
 
+/// W6 (issue 13, item 2): the union of 25 to 300 nearly coincident copies of a small polygon, filled
+/// non-zero: ours from the rings in one fill, as `join_all` of the one-ring sets and as a fold of
+/// binary joins of them, exact and float;
+/// i_overlay's and Clipper2's union of the rings under the non-zero rule, geo's `unary_union`,
+/// CGAL's union of the polygons.
+fn w6(r: &mut Runner) {
+    let sizes: &[usize] = if r.test_mode {
+        &[10]
+    } else {
+        &[25, 50, 100, common::W6_COPIES]
+    };
+    r.growth = 2.0;
+    for &size in sizes {
+        if r.wants("W6/") {
+            w6_union(r, size);
+        }
+    }
+    r.growth = 1.5;
+}
+
+/// W6 with `size` copies.
+fn w6_union(r: &mut Runner, size: usize) {
+    let rings = common::w6(size);
+    let exact_rings = common::rational_rings(&rings);
+    let group = "W6/union";
+    println!("# W6: {size} copies of {} vertices", rings[0].len());
+    let by_cgal = cgal::harness().and_then(|_| {
+        let file = cgal::write(&format!("W6_{size}.wkt"), &cgal::wkt_union(&exact_rings));
+        cgal_case(r, group, size, "union", &[file])
+    });
+    let check = |y: &Result<YinSet2<Rational>, _>| match y {
+        Ok(y) => checked_by_cgal(y, by_cgal.as_ref()),
+        Err(e) => format!("error: {e}"),
+    };
+    let fill = || YinSet2::from_rings_filled(exact_rings.clone(), FillRule::NonZero);
+    r.case(group, "exact_fill", size, fill, check);
+    let sets: Vec<_> = rings
+        .iter()
+        .map(|c| common::exact(&vec![c.clone()]))
+        .collect();
+    r.case(
+        group,
+        "exact_join_all",
+        size,
+        || YinSet2::join_all(&sets),
+        |y| checked_by_cgal(y, by_cgal.as_ref()),
+    );
+    let fold = || sets.iter().skip(1).fold(sets[0].clone(), |u, s| u.join(s));
+    r.case(group, "exact_fold", size, fold, |y| {
+        checked_by_cgal(y, by_cgal.as_ref())
+    });
+    let float_rings: Vec<Vec<Point<Float>>> = rings.iter().map(|c| common::points(c)).collect();
+    let fill = || {
+        YinSet2::from_rings_filled_with(
+            float_rings.clone(),
+            FillRule::NonZero,
+            Tolerance::default(),
+        )
+        .unwrap_or_else(|e| panic!("W6 float fill: {e}"))
+    };
+    r.case(group, "float_fill", size, fill, show_set);
+    let sets: Vec<_> = rings
+        .iter()
+        .map(|c| common::float(&vec![c.clone()]))
+        .collect();
+    r.case(
+        group,
+        "float_join_all",
+        size,
+        || YinSet2::join_all(&sets),
+        show_set,
+    );
+    let fold = || sets.iter().skip(1).fold(sets[0].clone(), |u, s| u.join(s));
+    r.case(group, "float_fold", size, fold, show_set);
+    let ir = contenders::i_overlay_input(&rings);
+    r.case(
+        group,
+        "i_overlay",
+        size,
+        || contenders::i_overlay_union(&ir),
+        |s| show_area(contenders::i_overlay_area(s)),
+    );
+    let gr = contenders::geo_input(&rings);
+    r.case(
+        group,
+        "geo",
+        size,
+        || contenders::geo_union(&gr),
+        |m| show_area(contenders::geo_area(m)),
+    );
+    let cr = contenders::clipper_input(&rings);
+    r.case(
+        group,
+        "clipper2",
+        size,
+        || contenders::clipper_union(&cr),
+        |p| show_area(contenders::clipper_area(p)),
+    );
+}
+
 fn main() {
     let mut r = Runner::new();
     // Cheapest first.
     w4(&mut r);
     w3(&mut r);
+    w6(&mut r);
     w2(&mut r);
     w5(&mut r);
     w1(&mut r);

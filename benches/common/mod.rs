@@ -251,3 +251,43 @@ pub fn queries(q: usize, bb: [f64; 4], seed: u64) -> Vec<[f64; 2]> {
 pub fn vertices(c: &Curves) -> usize {
     c.iter().map(Vec::len).sum()
 }
+
+/// The number of copies in W6 of issue 13.
+pub const W6_COPIES: usize = 300;
+
+/// W6's polygon: 16 vertices at equal angles about the origin, radii alternating between
+/// 1/2 and 0.3–0.4 (a non-convex star of diameter 1), counterclockwise.
+pub fn w6_polygon() -> Vec<[f64; 2]> {
+    (0..16)
+        .map(|j| {
+            let r = if j % 2 == 0 {
+                0.5
+            } else {
+                0.3 + 0.05 * (j % 3) as f64
+            };
+            let a = TAU * j as f64 / 16.0;
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect()
+}
+
+/// W6 (issue 13, item 2; [`W6_COPIES`] copies there): `copies` copies of [`w6_polygon`], copy k
+/// turned by k·10⁻⁶ rad about its centre and shifted by k·10⁻⁶ (of its size, 1) along (1, 1/2):
+/// rings to be filled under the non-zero rule, their union.
+pub fn w6(copies: usize) -> Curves {
+    let base = w6_polygon();
+    (0..copies)
+        .map(|k| {
+            let t = k as f64 * 1e-6;
+            let (s, c) = t.sin_cos();
+            base.iter()
+                .map(|p| [c * p[0] - s * p[1] + t, s * p[0] + c * p[1] + t / 2.0])
+                .collect()
+        })
+        .collect()
+}
+
+/// Rings in exact mode, each `f64` taken as the rational it is.
+pub fn rational_rings(c: &Curves) -> RationalRings {
+    c.iter().map(|v| points(v)).collect()
+}

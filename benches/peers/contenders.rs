@@ -1,11 +1,13 @@
 //! The peers' side: the same `f64` curves in each peer's own types, and their Boolean
 //! operations. Every peer reads the curves under the even-odd rule (all workloads are bounded
-//! sets whose curves are pairwise almost disjoint, so even-odd is exactly the Yin set).
+//! sets whose curves are pairwise almost disjoint, so even-odd is exactly the Yin set), except
+//! W6's union of overlapping rings, read under the non-zero rule.
 
 use super::common::Curves;
-use geo::{Area, BooleanOps, LineString, MultiPolygon, Polygon};
+use geo::{unary_union, Area, BooleanOps, LineString, MultiPolygon, Polygon};
 use i_overlay::core::fill_rule::FillRule as IFill;
 use i_overlay::core::overlay_rule::OverlayRule;
+use i_overlay::float::simplify::SimplifyShape;
 use i_overlay::float::single::SingleFloatOverlay;
 
 /// Intersection or union.
@@ -27,6 +29,11 @@ pub fn i_overlay_op(a: &Curves, b: &Curves, op: Op) -> Vec<Vec<Vec<[f64; 2]>>> {
         Op::Join => OverlayRule::Union,
     };
     a.overlay(b, rule, IFill::EvenOdd)
+}
+
+/// i_overlay's union of all contours under the non-zero rule (its `simplify_shape`).
+pub fn i_overlay_union(a: &Curves) -> Vec<Vec<Vec<[f64; 2]>>> {
+    a.simplify_shape(IFill::NonZero)
 }
 
 /// The area of i_overlay's result (outer contours counterclockwise, holes clockwise).
@@ -53,6 +60,12 @@ pub fn geo_op(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>, op: Op) -> MultiPoly
         Op::Meet => a.intersection(b),
         Op::Join => a.union(b),
     }
+}
+
+/// geo's `unary_union` of the polygons (i_overlay underneath, with the fill rule of the
+/// first ring's orientation: positive for counterclockwise rings).
+pub fn geo_union(m: &MultiPolygon<f64>) -> MultiPolygon<f64> {
+    unary_union(&m.0)
 }
 
 /// The area of geo's result.
@@ -86,6 +99,16 @@ pub fn clipper_op(
         Op::Join => clipper2::union(a.clone(), b.clone(), fill),
     };
     r.expect("clipper2 failed")
+}
+
+/// Clipper2's union of all paths as one subject, with no clip, under the non-zero rule.
+pub fn clipper_union(a: &clipper2::Paths<Nano>) -> clipper2::Paths<Nano> {
+    clipper2::union(
+        a.clone(),
+        clipper2::Paths::new(vec![]),
+        clipper2::FillRule::NonZero,
+    )
+    .expect("clipper2 failed")
 }
 
 /// The area of Clipper2's result.
