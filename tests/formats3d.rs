@@ -86,6 +86,9 @@ fn codecs() -> [Codec; 4] {
 
 #[test]
 fn shared_meshes_convert_between_formats_exactly() {
+    if !common::data_available() {
+        return;
+    }
     for name in SHARED {
         let mesh = shared_mesh(name);
         let triangles: Vec<[usize; 3]> = mesh
@@ -121,6 +124,9 @@ fn cube(lo: i64, hi: i64) -> Y {
 
 #[test]
 fn sets_round_trip_through_every_format() {
+    if !common::data_available() {
+        return;
+    }
     let hollow = &cube(0, 3) - &cube(1, 2);
     let torus = set(shared_mesh("torus.obj"));
     let cavity = &torus - &set(shared_mesh("innerball.obj"));
