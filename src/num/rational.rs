@@ -61,12 +61,15 @@ impl Big {
     }
 }
 
-/// Equality of values: both representations are canonical.
+/// Equality of values: both representations are canonical, so equal values have equal terms
+/// (`num-rational`'s `==` would order unequal values by a continued fraction first).
 impl PartialEq for Repr {
     fn eq(&self, o: &Repr) -> bool {
         match (self, o) {
             (Repr::Small(a, b), Repr::Small(c, d)) => a == c && b == d,
-            (Repr::Big(x), Repr::Big(y)) => x.value == y.value,
+            (Repr::Big(x), Repr::Big(y)) => {
+                x.value.numer() == y.value.numer() && x.value.denom() == y.value.denom()
+            }
             _ => false,
         }
     }
