@@ -77,10 +77,10 @@ fn grid_cell_oracle() {
     }
 }
 
-/// The n-ary join and meet ([`YinSet2::join_all`], [`YinSet2::meet_all`]: one fill of all
-/// boundaries by the count of containing operands) on 0 to 5 operands against the cell oracle
-/// (the set traced from the OR / AND of the masks) and against the fold of the binary
-/// operations (a different algorithm: the meet's location and pasting).
+/// The n-ary join and meet ([`YinSet2::join_all`], [`YinSet2::meet_all`]: divide and conquer
+/// on rayon's threads) on 0 to 5 operands against the cell oracle (the set traced from the OR /
+/// AND of the masks) and against the left fold of the binary operations (another association:
+/// the laws' associativity on the kernel's own results).
 #[test]
 fn nary_cell_oracle() {
     for cx in [Complex::mixed(), Complex::grid(4, 4)] {

@@ -15,8 +15,7 @@
 //! [`FillRule::NonZero`].
 //!
 //! Float mode (a context with an ε-grid) hands the ring edges to the snap rounding of the
-//! `snap` module, which applies the same rule to the snapped arrangement. [`fill_edges`] is
-//! the fill by any predicate on winding numbers, also behind the n-ary join and meet.
+//! `snap` module, which applies the same rule to the snapped arrangement.
 //!
 //! Cost: O((n + I) log n) for n ring edges with I contacts (two sweeps: contacts, then the
 //! winding numbers of the P ≤ n + 2I pieces' sides).
@@ -110,7 +109,7 @@ impl<N: Num> YinSet2<N> {
 /// context with an ε-grid) hands the edges to the snap rounding of the `snap` module, which
 /// applies `inside` to the snapped arrangement. With no piece between an inside and an outside
 /// face, the far face (w = 0) decides between 0̂ and 1̂.
-pub(crate) fn fill_edges<N: Num>(
+fn fill_edges<N: Num>(
     edges: Vec<Edge<N>>,
     ctx: N::Ctx,
     inside: impl Fn(i64) -> bool,

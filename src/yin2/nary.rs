@@ -1,33 +1,23 @@
-//! The join and meet of many Yin sets in one fill of all their boundaries (issue 13), instead
-//! of a fold of binary operations.
+//! The join and meet of many Yin sets (issue 13) by divide and conquer: the operands are split
+//! in halves, each half is reduced (on rayon's threads), and the two partial results are met or
+//! joined once more — ⌈log₂ k⌉ levels of binary operations for k operands.
 //!
-//! Every Yin set's boundary is oriented with the set on its left (seed 000 Def. 3.10), so off
-//! the boundaries the winding number of 𝒥's curves is 1 inside 𝒥 and 0 outside when 𝒥 is
-//! bounded, and 0 inside, −1 outside when it is not. The number of operands containing a point
-//! is therefore w + u, for w the winding number of all operands' curves together and u the
-//! number of unbounded operands: the join is where w + u ≥ 1, the meet where w + u = k for k
-//! operands — one fill ([`fill_edges`]: a sweep for the contacts of all edges, one for the
-//! winding numbers of the pieces, then the pasting map), O((n + I) log n) for n edges with I
-//! contacts.
+//! A single fill of all boundaries at once (by the count of containing operands) was tried
+//! first and measured slower on the workload it was meant for: on k nearly coincident copies of
+//! a polygon it meets every edge with every other (Θ(k²) crossings, W6 at 300 copies over
+//! 5 minutes exact), while the partial unions of divide and conquer stay as small as the
+//! result, so their binary operations never see the edges interior to a half (W6: 300 copies in
+//! under a second exact, benches/BENCHMARKS.md). In float mode every level snap-rounds once
+//! ([`crate::num::Tolerance`]), so a vertex of the result moves by at most ⌈log₂ k⌉ grid steps'
+//! rounding, against one for a binary operation.
 
-use super::fill::fill_edges;
-use super::paste::or_kernel_bug;
-use super::set::{Repr, YinSet2};
+use super::set::YinSet2;
 use crate::num::Num;
 
-/// Which count of containing operands is inside the result.
-#[derive(Clone, Copy)]
-enum Count {
-    /// At least one operand (join).
-    Any,
-    /// Every operand (meet).
-    All,
-}
-
 impl<N: Num> YinSet2<N> {
-    /// The join ⋁ of all `sets`, the regularized union (0̂ for none), in one sweep over all
-    /// boundary edges instead of `sets.len() − 1` binary joins; equal to the fold of
-    /// [`YinSet2::join`].
+    /// The join ⋁ of all `sets`, the regularized union (0̂ for none), by divide and conquer over
+    /// binary joins (module documentation); equal to the fold of [`YinSet2::join`] in exact
+    /// mode.
     ///
     /// ```
     /// use yinset::{kernel::Point, num::Rational, yin2::YinSet2};
@@ -40,51 +30,32 @@ impl<N: Num> YinSet2<N> {
     /// ```
     #[doc(alias = "union_all")]
     pub fn join_all(sets: &[YinSet2<N>]) -> YinSet2<N> {
-        nary(sets, Count::Any)
+        reduce(sets, &YinSet2::empty, &YinSet2::join)
     }
 
-    /// The meet ⋀ of all `sets`, the regularized intersection (1̂ for none), in one sweep over
-    /// all boundary edges; equal to the fold of [`YinSet2::meet`].
+    /// The meet ⋀ of all `sets`, the regularized intersection (1̂ for none), by divide and
+    /// conquer over binary meets; equal to the fold of [`YinSet2::meet`] in exact mode.
     #[doc(alias = "intersection_all")]
     pub fn meet_all(sets: &[YinSet2<N>]) -> YinSet2<N> {
-        nary(sets, Count::All)
+        reduce(sets, &YinSet2::full, &YinSet2::meet)
     }
 }
 
-/// The set of points contained in `count` of the operands, by winding numbers (module
-/// documentation). 0̂ and 1̂ operands have no curves and decide or drop out first.
-fn nary<N: Num>(sets: &[YinSet2<N>], count: Count) -> YinSet2<N> {
-    let ctx = sets
-        .iter()
-        .map(|s| s.ctx())
-        .reduce(N::combine_ctx)
-        .unwrap_or_default();
-    let (absorbing, neutral) = match count {
-        Count::Any => (YinSet2::full(), YinSet2::empty()),
-        Count::All => (YinSet2::empty(), YinSet2::full()),
-    };
-    let mut spadjors = Vec::new();
-    for s in sets {
-        match (&s.repr, count) {
-            (Repr::Spadjor(a), _) => spadjors.push(a),
-            (Repr::Full, Count::Any) | (Repr::Empty, Count::All) => return absorbing.with_ctx(ctx),
-            _ => {}
+/// `op` over all `sets` as a balanced tree, the halves on rayon's threads; `neutral()` for none.
+fn reduce<N: Num>(
+    sets: &[YinSet2<N>],
+    neutral: &(impl Fn() -> YinSet2<N> + Sync),
+    op: &(impl Fn(&YinSet2<N>, &YinSet2<N>) -> YinSet2<N> + Sync),
+) -> YinSet2<N> {
+    match sets {
+        [] => neutral(),
+        [one] => one.clone(),
+        _ => {
+            let (lo, hi) = sets.split_at(sets.len() / 2);
+            let (a, b) = rayon::join(|| reduce(lo, neutral, op), || reduce(hi, neutral, op));
+            op(&a, &b)
         }
     }
-    if spadjors.is_empty() {
-        return neutral.with_ctx(ctx);
-    }
-    let k = spadjors.len() as i64;
-    let unbounded = spadjors.iter().filter(|a| !a.bounded).count() as i64;
-    let edges = spadjors
-        .iter()
-        .flat_map(|a| a.edges())
-        .map(|(p, q)| (p.clone(), q.clone()))
-        .collect();
-    or_kernel_bug(fill_edges(edges, ctx, |w| match count {
-        Count::Any => w + unbounded >= 1,
-        Count::All => w + unbounded == k,
-    }))
 }
 
 #[cfg(test)]
