@@ -1,5 +1,6 @@
 //! Fill rules: the Yin set covered by arbitrary rings (polygon soup) under a winding-number rule,
-//! regularized, built by S_V, winding numbers of the pieces' sides, and the pasting map.
+//! regularized, built from the arrangement of the rings, the winding numbers of its faces, and the
+//! pasting map.
 //!
 //! Rings are closed polylines of any orientation that may cross, touch, overlap themselves and
 //! each other, repeat vertices or have no area at all. The point set they fill is
@@ -17,20 +18,18 @@
 //! Float mode (a context with an ε-grid) hands the ring edges to the snap rounding of the
 //! `snap` module, which applies the same rule to the snapped arrangement.
 //!
-//! Cost: O((n + I) log n) for n ring edges with I contacts (two sweeps: contacts, then the
-//! winding numbers of the P ≤ n + 2I pieces' sides).
+//! Cost: O((n + I) log n) for n ring edges with I contacts (one sweep: the arrangement with the
+//! winding numbers of its faces).
 
-use super::cut::cut_at_contacts;
 use super::error::YinError;
-use super::intersect::Edge;
+use super::intersect::{arrange, Edge};
 use super::paste::Segmented;
 use super::set::YinSet2;
 use super::snap::regularize;
 use super::validate::resolve_for;
-use super::winding::left_windings;
 use crate::kernel::Point;
 use crate::num::Num;
-use std::collections::BTreeMap;
+use std::ops::{Add, Sub};
 
 /// Which winding numbers are inside.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -49,15 +48,6 @@ impl FillRule {
             FillRule::EvenOdd => w % 2 != 0,
         }
     }
-}
-
-/// A piece of S_V, `from < to`, with its net multiplicity: how many ring edges run
-/// `from → to` minus how many run back.
-struct Piece<N> {
-    from: Point<N>,
-    to: Point<N>,
-    ids: (usize, usize),
-    mult: i64,
 }
 
 impl<N: Num> YinSet2<N> {
@@ -104,11 +94,9 @@ impl<N: Num> YinSet2<N> {
 }
 
 /// The regularized set {p off the edges : inside(w(p))} for w the winding number of the
-/// directed `edges` (seed 000 Def. 3.1, regularization): S_V of all edges in one sweep, the
-/// winding numbers of the pieces' sides in a second, then the pasting map; float mode (a
-/// context with an ε-grid) hands the edges to the snap rounding of the `snap` module, which
-/// applies `inside` to the snapped arrangement. With no piece between an inside and an outside
-/// face, the far face (w = 0) decides between 0̂ and 1̂.
+/// directed `edges` (seed 000 Def. 3.1, regularization): [`fill_exact`] with multiplicity 1
+/// per edge; float mode (a context with an ε-grid) hands the edges to the snap rounding of the
+/// `snap` module, which applies `inside` to the snapped arrangement.
 fn fill_edges<N: Num>(
     edges: Vec<Edge<N>>,
     ctx: N::Ctx,
@@ -118,24 +106,48 @@ fn fill_edges<N: Num>(
         let labelled: Vec<(Edge<N>, usize)> = edges.into_iter().map(|e| (e, 0)).collect();
         return regularize(&labelled, ctx, |w| inside(w[0]));
     }
-    let mut g = Segmented::new();
-    let pieces = merged_pieces(&edges, &mut g, &ctx);
-    let ends: Vec<(&Point<N>, &Point<N>)> = pieces.iter().map(|p| (&p.from, &p.to)).collect();
-    let mult: Vec<i64> = pieces.iter().map(|p| p.mult).collect();
-    let mut boundary = false;
-    for (piece, left) in pieces.iter().zip(left_windings(&ends, &mult, &ctx)?) {
-        let right = left - piece.mult;
-        match (inside(left), inside(right)) {
-            (true, false) => g.push(piece.ids.0, piece.ids.1),
-            (false, true) => g.push(piece.ids.1, piece.ids.0),
-            _ => continue,
+    fill_exact(&edges, |_| 1, ctx, inside)
+}
+
+/// Exact mode: the regularized set {p off the edges : inside(w(p))} for w the winding number
+/// of the directed `edges`, edge `e` counted `mult(e)` times (a vector of counts for several
+/// operands): the arrangement of all edges in one sweep ([`arrange`]), the winding numbers of
+/// the faces beside each of its pieces, and the pasting map (seed 000 Lemma 4.2) of the pieces
+/// between an inside face (on their left) and an outside one. With no such piece, the far face
+/// (w = 0) decides between 0̂ and 1̂. O((n + I) log n) for n edges with I contacts.
+pub(crate) fn fill_exact<N, W>(
+    edges: &[Edge<N>],
+    mult: impl Fn(usize) -> W,
+    ctx: N::Ctx,
+    inside: impl Fn(W) -> bool,
+) -> Result<YinSet2<N>, YinError>
+where
+    N: Num,
+    W: Copy + Default + Add<Output = W> + Sub<Output = W>,
+{
+    let arr = arrange(edges, &ctx);
+    // The sweep orders each edge lo → hi; an edge given hi → lo counts negatively upwards.
+    let upward = |e: usize| {
+        let (a, b) = &edges[e];
+        if a < b {
+            mult(e)
+        } else {
+            W::default() - mult(e)
         }
-        boundary = true;
+    };
+    let windings = arr.windings(upward);
+    let mut pieces = Vec::new();
+    for (g, (below, above)) in arr.groups.iter().zip(windings) {
+        match (inside(below), inside(above)) {
+            (false, true) => pieces.push((g.from, g.to)),
+            (true, false) => pieces.push((g.to, g.from)),
+            _ => {}
+        }
     }
-    if !boundary && inside(0) {
+    if pieces.is_empty() && inside(W::default()) {
         return Ok(YinSet2::full().with_ctx(ctx));
     }
-    g.paste_exact(ctx)
+    Segmented::numbered(arr.points, pieces).paste_exact(ctx)
 }
 
 /// The directed edges of all rings, each ring closed, zero-length edges dropped.
@@ -148,30 +160,6 @@ fn ring_edges<N: Num>(rings: &[Vec<Point<N>>]) -> Vec<Edge<N>> {
         })
         .filter(|(a, b)| a != b)
         .collect()
-}
-
-/// S_V of all edges against each other, coincident pieces merged into one with their net
-/// multiplicity, endpoints interned in `g`; pieces of net multiplicity 0 bound nothing and are
-/// dropped.
-fn merged_pieces<N: Num>(edges: &[Edge<N>], g: &mut Segmented<N>, ctx: &N::Ctx) -> Vec<Piece<N>> {
-    let mut merged: BTreeMap<(usize, usize), Piece<N>> = BTreeMap::new();
-    for (p, q) in cut_at_contacts(edges, ctx, |_, _| true)
-        .into_iter()
-        .flatten()
-    {
-        let (sign, from, to) = if p < q { (1, p, q) } else { (-1, q, p) };
-        let ids = (g.id(&from), g.id(&to));
-        merged
-            .entry(ids)
-            .or_insert(Piece {
-                from,
-                to,
-                ids,
-                mult: 0,
-            })
-            .mult += sign;
-    }
-    merged.into_values().filter(|p| p.mult != 0).collect()
 }
 
 #[cfg(test)]

@@ -101,6 +101,131 @@ fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
     Sweep::new(&image, &()).run()
 }
 
+/// The arrangement of `edges` (exact mode): one Bentley–Ottmann sweep (seed 002 §1.3) that
+/// cuts every edge at every point where it meets another and records, for each piece, the
+/// piece directly below it, so that the winding numbers of all faces follow in one pass
+/// ([`Arrangement::windings`]) — no crossing pair is classified twice, no piece needs a
+/// midpoint to be located, and points are numbered by their event instead of hashed.
+pub(crate) fn arrange<N: Num>(edges: &[Edge<N>], ctx: &N::Ctx) -> Arrangement<N> {
+    debug_assert!(
+        N::EXACT,
+        "the arrangement's sweep order needs exact crossing points"
+    );
+    let mut sweep = Sweep::new(edges, ctx);
+    sweep.record = Some(Recorder::new(edges.len()));
+    sweep.drive();
+    let r = sweep.record.expect("set above");
+    Arrangement {
+        points: r.points,
+        groups: r.groups,
+        members: r.members,
+    }
+}
+
+/// The pieces of an arrangement of closed edges: each group is one piece of the plane's
+/// subdivision, carried by one or more collinear edges (a shared stretch), from event `from`
+/// to event `to` (`from < to` in sweep order), with the group directly below it in the sweep.
+pub(crate) struct Arrangement<N: Num> {
+    /// The events in sweep order: every vertex of the subdivision, once.
+    pub points: Vec<Point<N>>,
+    /// The pieces, in the order the sweep opened them.
+    pub groups: Vec<Group>,
+    /// The edges of every group, `Group::members` indexes into it.
+    pub members: Vec<usize>,
+}
+
+/// One piece of an [`Arrangement`].
+pub(crate) struct Group {
+    /// Its lower end (an index of [`Arrangement::points`]).
+    pub from: usize,
+    /// Its upper end.
+    pub to: usize,
+    /// The group directly below it in the sweep (opened earlier), `None` for the far face.
+    pub below: Option<usize>,
+    /// The range of [`Arrangement::members`] holding its edges.
+    pub members: std::ops::Range<usize>,
+}
+
+impl<N: Num> Arrangement<N> {
+    /// The winding numbers `(below, above)` of the faces beside each group, for edge `e`
+    /// adding `mult[e]` from below to above (a directed edge adds its multiplicity from its
+    /// right to its left, and `lo → hi` has its left above): the far face has `W::default()`.
+    pub fn windings<W>(&self, mult: impl Fn(usize) -> W) -> Vec<(W, W)>
+    where
+        W: Copy + Default + std::ops::Add<Output = W>,
+    {
+        let mut out: Vec<(W, W)> = Vec::with_capacity(self.groups.len());
+        for g in &self.groups {
+            let below = g.below.map_or_else(W::default, |b| out[b].1);
+            let above = self.members[g.members.clone()]
+                .iter()
+                .fold(below, |w, &e| w + mult(e));
+            out.push((below, above));
+        }
+        out
+    }
+}
+
+/// What [`arrange`]'s sweep records at each event.
+struct Recorder<N: Num> {
+    points: Vec<Point<N>>,
+    groups: Vec<Group>,
+    members: Vec<usize>,
+    /// The open group of each edge in the status.
+    open: Vec<usize>,
+}
+
+impl<N: Num> Recorder<N> {
+    fn new(n: usize) -> Self {
+        Recorder {
+            points: Vec::new(),
+            groups: Vec::new(),
+            members: Vec::new(),
+            open: vec![NIL; n],
+        }
+    }
+
+    /// The edges `old` leave the status at the event numbered `stamp`: their pieces end there.
+    fn close(&mut self, old: &[usize], stamp: usize) {
+        for &e in old {
+            let g = std::mem::replace(&mut self.open[e], NIL);
+            if g != NIL {
+                self.groups[g].to = stamp;
+            }
+        }
+    }
+
+    /// Event `p`: the edges `next` (bottom to top) enter the status above `lower`; runs of
+    /// edges leaving `p` in the same direction (`same`) form one group.
+    fn open(
+        &mut self,
+        p: &Point<N>,
+        next: &[usize],
+        lower: usize,
+        same: impl Fn(usize, usize) -> bool,
+    ) {
+        let stamp = self.points.len();
+        self.points.push(p.clone());
+        let mut below = (lower != NIL).then(|| self.open[lower]);
+        for (k, &e) in next.iter().enumerate() {
+            if k == 0 || !same(next[k - 1], e) {
+                let start = self.members.len();
+                self.groups.push(Group {
+                    from: stamp,
+                    to: NIL,
+                    below,
+                    members: start..start,
+                });
+                below = Some(self.groups.len() - 1);
+            }
+            let g = self.groups.len() - 1;
+            self.members.push(e);
+            self.groups[g].members.end = self.members.len();
+            self.open[e] = g;
+        }
+    }
+}
+
 /// No node (the empty treap).
 const NIL: usize = usize::MAX;
 
@@ -312,6 +437,8 @@ struct Sweep<'a, N: Num> {
     mark: Vec<usize>,
     /// Candidate pairs `(i, j)`, `i < j`.
     pairs: Vec<(usize, usize)>,
+    /// The arrangement's faces and pieces, when the sweep records them ([`arrange`]).
+    record: Option<Recorder<N>>,
 }
 
 impl<'a, N: Num> Sweep<'a, N> {
@@ -329,11 +456,18 @@ impl<'a, N: Num> Sweep<'a, N> {
             crossings: BTreeMap::new(),
             mark: vec![usize::MAX; edges.len()],
             pairs: Vec::new(),
+            record: None,
         }
     }
 
     /// Run the sweep of seed 002 §1.3: every pair of edges that meet, once, in exact mode.
     fn run(mut self) -> Vec<(usize, usize)> {
+        self.drive();
+        self.pairs
+    }
+
+    /// Process every event in sweep order.
+    fn drive(&mut self) {
         let mut ends: Vec<(&Point<N>, usize, bool)> = Vec::with_capacity(2 * self.seg.len());
         for (i, &(lo, hi)) in self.seg.iter().enumerate() {
             ends.push((lo, i, false));
@@ -373,7 +507,6 @@ impl<'a, N: Num> Sweep<'a, N> {
             self.event(&p, &starting, &ending, &through, stamp);
             stamp += 1;
         }
-        self.pairs
     }
 
     /// Event `p` (seed 002 §1.3): report pairs first meeting at `p`, reorder the edges through it.
@@ -404,6 +537,9 @@ impl<'a, N: Num> Sweep<'a, N> {
         for &s in &old {
             status.reset(s);
             status.live[s] = false;
+        }
+        if let Some(r) = &mut self.record {
+            r.close(&old, stamp);
         }
         // Pairs meeting first at p: all pairs with an edge starting here, and the pairs of
         // edges arriving from different directions (collinear ones met before p).
@@ -440,6 +576,11 @@ impl<'a, N: Num> Sweep<'a, N> {
             orient(p, seg[a].1, seg[b].1, ctx).reverse().then(a.cmp(&b))
         });
         let (lower, upper) = (status.last(below), status.first(above));
+        if let Some(r) = &mut self.record {
+            r.open(p, &next, lower, |a, b| {
+                orient(p, seg[a].1, seg[b].1, ctx) == Ordering::Equal
+            });
+        }
         let mut middle = NIL;
         for &s in &next {
             status.live[s] = true;

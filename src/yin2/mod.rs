@@ -3,7 +3,6 @@
 mod complement;
 mod convert;
 mod curve;
-mod cut;
 mod error;
 mod fill;
 mod hasse;

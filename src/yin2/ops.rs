@@ -10,31 +10,30 @@ use std::ops::{BitAnd, BitOr, BitXor, Not, Sub};
 impl<N: Num> YinSet2<N> {
     /// The join 𝒥 ∨ 𝒦 := (𝒥' ∧ 𝒦')' (seed 000 Def. 4.10), the regularized union.
     pub fn join(&self, other: &YinSet2<N>) -> YinSet2<N> {
-        self.float_overlay(other, |x, y| x || y)
+        self.overlay_with(other, |x, y| x || y)
             .unwrap_or_else(|| self.complement().meet(&other.complement()).complement())
     }
 
     /// The difference 𝒥 ∧ 𝒦'.
     pub fn difference(&self, other: &YinSet2<N>) -> YinSet2<N> {
-        self.float_overlay(other, |x, y| x && !y)
+        self.overlay_with(other, |x, y| x && !y)
             .unwrap_or_else(|| self.meet(&other.complement()))
     }
 
     /// The symmetric difference (𝒥 ∧ 𝒦') ∨ (𝒥' ∧ 𝒦).
     pub fn symmetric_difference(&self, other: &YinSet2<N>) -> YinSet2<N> {
-        self.float_overlay(other, |x, y| x != y)
+        self.overlay_with(other, |x, y| x != y)
             .unwrap_or_else(|| self.difference(other).join(&other.difference(self)))
     }
 
-    /// Float mode on two spadjors: the operation `keep` in one snap rounding of both
-    /// boundaries ([`overlay`]), the same pipeline as the meet; `None` otherwise.
-    fn float_overlay(
+    /// The operation `keep` on two spadjors in one overlay of both boundaries ([`overlay`],
+    /// exact or float); `None` if either operand is 0̂ or 1̂.
+    fn overlay_with(
         &self,
         other: &YinSet2<N>,
         keep: impl Fn(bool, bool) -> bool,
     ) -> Option<YinSet2<N>> {
         let ctx = N::combine_ctx(self.ctx, other.ctx);
-        N::grid(&ctx)?;
         match (&self.repr, &other.repr) {
             (Repr::Spadjor(a), Repr::Spadjor(b)) => Some(or_kernel_bug(overlay(a, b, ctx, keep))),
             _ => None,

@@ -31,6 +31,16 @@ impl<N: Num> Segmented<N> {
         }
     }
 
+    /// The pieces `edges` between `points` numbered already (no interning: [`Segmented::id`]
+    /// must not be used on it).
+    pub(crate) fn numbered(points: Vec<Point<N>>, edges: Vec<(usize, usize)>) -> Segmented<N> {
+        Segmented {
+            points,
+            index: HashMap::new(),
+            edges,
+        }
+    }
+
     /// The id of a point (interned).
     pub(crate) fn id(&mut self, p: &Point<N>) -> usize {
         if let Some(&i) = self.index.get(p) {

@@ -6,7 +6,7 @@ use super::error::YinError;
 use super::intersect::{intersections, Edge};
 use super::paste::Segmented;
 use super::set::YinSet2;
-use super::winding::left_windings;
+use super::winding::{left_windings, Pair, Winding};
 use crate::kernel::{Contact, Point};
 use crate::num::{Float, Num, Tolerance};
 use num_bigint::BigInt;
@@ -14,34 +14,12 @@ use num_integer::Integer;
 use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
 use rstar::{RTree, SelectionFunction, AABB};
 use std::collections::{BTreeSet, HashMap};
-use std::ops::{Add, Sub};
 
 /// A grid point: integer multiples of the grid spacing, relative to the local origin.
 type G = (i64, i64);
 
 /// A grid segment with the operand (`0` or `1`) its piece came from.
 type Labelled = ((G, G), usize);
-
-/// Winding numbers of a point with respect to the boundaries of the operands (two at most).
-pub(crate) type Winding = [i64; 2];
-
-/// A [`Winding`] with the arithmetic that [`left_windings`] needs.
-#[derive(Clone, Copy, Default)]
-struct Pair(Winding);
-
-impl Add for Pair {
-    type Output = Pair;
-    fn add(self, o: Pair) -> Pair {
-        Pair([self.0[0] + o.0[0], self.0[1] + o.0[1]])
-    }
-}
-
-impl Sub for Pair {
-    type Output = Pair;
-    fn sub(self, o: Pair) -> Pair {
-        Pair([self.0[0] - o.0[0], self.0[1] - o.0[1]])
-    }
-}
 
 /// The Yin set of the faces where `inside` holds, given the directed pieces of the operands'
 /// boundaries labelled by operand (`0` or `1`), after snapping them to the grid of `ctx`

@@ -7,6 +7,27 @@ use crate::kernel::Point;
 use crate::num::Num;
 use std::ops::{Add, Sub};
 
+/// Winding numbers of a point with respect to the boundaries of the operands (two at most).
+pub(crate) type Winding = [i64; 2];
+
+/// A [`Winding`] with the arithmetic that [`left_windings`] and the exact arrangement need.
+#[derive(Clone, Copy, Default)]
+pub(crate) struct Pair(pub(crate) Winding);
+
+impl Add for Pair {
+    type Output = Pair;
+    fn add(self, o: Pair) -> Pair {
+        Pair([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    }
+}
+
+impl Sub for Pair {
+    type Output = Pair;
+    fn sub(self, o: Pair) -> Pair {
+        Pair([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+    }
+}
+
 /// The winding number on the left of each piece `lo → hi` (`lo < hi`, pieces pairwise
 /// non-crossing and non-overlapping, `mult[k]` the net multiplicity of piece k): the face above a
 /// non-vertical piece, or east of a vertical one, is the face below the first non-vertical piece
