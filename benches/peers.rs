@@ -18,7 +18,7 @@
 //! cases over 50 ms are measured with 10 flat samples of one iteration. After a skipped or
 //! single case, larger sizes of it (and the join after its meet) are not attempted; nor is a
 //! numeric size whose time, predicted from the last smaller one as growing like size^1.5
-//! (W6: size², the crossings of the copies), is over 30 s. Times are the benchmarking thread's CPU time (see peers/cpu_time.rs); CGAL's
+//! (W6: size², the crossings of the copies), is over 30 s. Times are the process's CPU time, all threads (see peers/cpu_time.rs); CGAL's
 //! (`# cgal` lines) are the harness's process CPU time of the operation alone, best of 3.
 //! The data files are read from ../shared/data/2d beside the repository.
 
@@ -33,7 +33,7 @@ mod cpu_time;
 
 use common::{Curves, RationalRings};
 use contenders::Op;
-use cpu_time::{thread_cpu, CpuTime};
+use cpu_time::{process_cpu, CpuTime};
 use criterion::{BenchmarkId, Criterion, SamplingMode};
 use std::collections::HashMap;
 use std::fmt::Display;
@@ -160,9 +160,9 @@ impl Runner {
                 return;
             }
         }
-        let (wall, cpu) = (Instant::now(), thread_cpu());
+        let (wall, cpu) = (Instant::now(), process_cpu());
         let out = f();
-        let once = thread_cpu().saturating_sub(cpu);
+        let once = process_cpu().saturating_sub(cpu);
         if let Some(n) = numeric {
             self.last.insert(key.clone(), (n, once.as_secs_f64()));
         }
@@ -442,11 +442,11 @@ fn w1(r: &mut Runner) {
             return;
         }
         let (a, b) = common::w1(n);
-        let t = thread_cpu();
+        let t = process_cpu();
         let (fa, fb) = (common::float(&a), common::float(&b));
-        let tf = thread_cpu() - t;
+        let tf = process_cpu() - t;
         let (ea, eb) = (common::exact(&a), common::exact(&b));
-        let te = thread_cpu() - t - tf;
+        let te = process_cpu() - t - tf;
         println!(
             "# W1 n = {n}: I = {} contacts; both operands built in {:.3} s CPU (float), {:.3} s (exact)",
             contacts(&fa, &fb),
@@ -708,12 +708,12 @@ fn cells_case<C, O>(
         return;
     }
     let sample: Vec<&C> = cells.iter().step_by(64).collect();
-    let cpu = thread_cpu();
+    let cpu = process_cpu();
     for c in &sample {
         black_box(meet(c));
     }
     let estimate =
-        thread_cpu().saturating_sub(cpu).as_secs_f64() * cells.len() as f64 / sample.len() as f64;
+        process_cpu().saturating_sub(cpu).as_secs_f64() * cells.len() as f64 / sample.len() as f64;
     if !r.test_mode && estimate > SKIP_OVER.as_secs_f64() {
         println!(
             "# skip {id}: estimated {estimate:.0} s CPU for one iteration from {} cells",

@@ -2,8 +2,8 @@
 //! locate (1 000 points) and Betti numbers, exact and float, on V1–V4 at small sizes (V3
 //! without torusbig, which the table covers); V4 also on rayon's threads (`YinSet3::meet_each`)
 //! beside the single-thread figure. Operands are built (and their files written to
-//! target/yin3_workloads) before timing. Times are the benchmarking thread's CPU
-//! time, except V4's parallel case (wall time, printed). The table against the peers at larger
+//! target/yin3_workloads) before timing. Times are the process's CPU time
+//! (all threads), except V4's parallel case (wall time, printed). The table against the peers at larger
 //! sizes is benches/yin3_table.rs (run by benches/yin3_peers.sh).
 //!
 //! ```sh
@@ -119,7 +119,7 @@ fn v4<N: Num>(c: &mut Criterion<CpuTime>, mode: &str) {
         t.iter(|| cells.iter().map(|x| sphere.meet(x)).collect::<Vec<_>>())
     });
     g.finish();
-    // rayon: wall time, as the thread's CPU time does not see the pool's threads.
+    // rayon: wall time, as the process's CPU time adds up the pool's threads.
     let best = (0..5)
         .map(|_| {
             let t0 = Instant::now();

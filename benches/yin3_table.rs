@@ -24,7 +24,7 @@ mod cpu_time;
 #[path = "yin3_work/mod.rs"]
 mod work;
 
-use cpu_time::thread_cpu;
+use cpu_time::process_cpu;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 use std::fmt::Write as _;
@@ -148,9 +148,9 @@ fn ours_unguarded<N: Num>(a: &Path, b: &Path, reps: usize, volume: bool) -> Cell
     let mut best = f64::INFINITY;
     let mut vol = f64::NAN;
     for _ in 0..reps {
-        let t0 = thread_cpu();
+        let t0 = process_cpu();
         let m: YinSet3<N> = x.meet(&y);
-        best = best.min((thread_cpu() - t0).as_secs_f64() * 1e3);
+        best = best.min((process_cpu() - t0).as_secs_f64() * 1e3);
         if volume {
             vol = m.volume().map_or(f64::NAN, |v| v.to_f64());
         }
