@@ -1,4 +1,5 @@
-//! MRS-a of seed 000 Def. 4.8 by a Bentley–Ottmann sweep in O((n + I) log n) (seed 002 §1.3).
+//! MRS-a of seed 000 Def. 4.8 by a Bentley–Ottmann sweep in O((n + I) log n) (seed 002 §1.3),
+//! and the arrangement of the edges with its faces' winding numbers from the same sweep.
 
 // The sweep line is tilted infinitesimally, so events come in the lexicographic order of points
 // and a vertical edge runs from its lower to its upper end. At each event `p` the edges through
@@ -101,16 +102,15 @@ fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
     Sweep::new(&image, &()).run()
 }
 
-/// The arrangement of `edges` (exact mode): one Bentley–Ottmann sweep (seed 002 §1.3) that
-/// cuts every edge at every point where it meets another and records, for each piece, the
-/// piece directly below it, so that the winding numbers of all faces follow in one pass
+/// The arrangement of `edges`: one Bentley–Ottmann sweep (seed 002 §1.3) that cuts every
+/// edge at every point where it meets another and records, for each piece, the piece directly
+/// below it, so that the winding numbers of all faces follow in one pass
 /// ([`Arrangement::windings`]) — no crossing pair is classified twice, no piece needs a
 /// midpoint to be located, and points are numbered by their event instead of hashed.
+///
+/// The sweep order needs exact crossing points: exact mode, or in float mode edges that do not
+/// cross (snapped fragments on grid integers, where no point is constructed).
 pub(crate) fn arrange<N: Num>(edges: &[Edge<N>], ctx: &N::Ctx) -> Arrangement<N> {
-    debug_assert!(
-        N::EXACT,
-        "the arrangement's sweep order needs exact crossing points"
-    );
     let mut sweep = Sweep::new(edges, ctx);
     sweep.record = Some(Recorder::new(edges.len()));
     sweep.drive();

@@ -173,23 +173,6 @@ pub(crate) fn locate_within<N: Num>(
     out
 }
 
-/// For each query point, the index of the first non-vertical edge strictly above it on the
-/// vertical line just right of the point (`None` if there is none). Edges must not cross.
-pub(crate) fn first_above<N: Num>(
-    edges: &[(&Point<N>, &Point<N>)],
-    queries: &[Point<N>],
-    ctx: &N::Ctx,
-) -> Vec<Option<usize>> {
-    let mut out = vec![None; queries.len()];
-    sweep(edges, queries, ctx, |i, status, probe| {
-        out[i] = status
-            .range::<Key<'_, N>, _>(probe..)
-            .find(|s| probe.cmp(s) == Ordering::Less)
-            .map(|s| s.id);
-    });
-    out
-}
-
 /// The plane sweep of seed 002 Alg. 1: the status holds the non-vertical edges cut by the
 /// vertical line just right of the sweep position, bottom to top; `query(i, status, probe)` is
 /// called for each query point `i` when the sweep reaches it.
@@ -362,29 +345,5 @@ mod tests {
             &(),
         );
         assert_eq!(got, vec![Outside, Outside, Inside, Inside, OnBoundary]);
-    }
-
-    #[test]
-    fn first_edge_above_a_point() {
-        // Three stacked horizontal-ish edges and a vertical one.
-        let v = [
-            p(0, 0),
-            p(4, 0),
-            p(0, 2),
-            p(4, 3),
-            p(1, 5),
-            p(3, 5),
-            p(2, -9),
-            p(2, 9),
-        ];
-        let edges = vec![
-            (&v[0], &v[1]),
-            (&v[2], &v[3]),
-            (&v[4], &v[5]),
-            (&v[6], &v[7]),
-        ];
-        let q = [p(2, -1), p(1, 1), p(2, 4), p(3, 6), p(0, 1), p(4, 1)];
-        let got = first_above(&edges, &q, &());
-        assert_eq!(got, vec![Some(0), Some(1), Some(2), None, Some(1), None]);
     }
 }

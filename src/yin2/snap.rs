@@ -3,17 +3,17 @@
 //! thereby exactly a valid Yin set whose vertices are grid points, decided with exact predicates.
 
 use super::error::YinError;
+use super::fill::fill_exact;
 use super::intersect::{intersections, Edge};
-use super::paste::Segmented;
 use super::set::YinSet2;
-use super::winding::{left_windings, Pair, Winding};
+use super::winding::{Pair, Winding};
 use crate::kernel::{Contact, Point};
 use crate::num::{Float, Num, Tolerance};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
 use rstar::{RTree, SelectionFunction, AABB};
-use std::collections::{BTreeSet, HashMap};
+use std::collections::BTreeSet;
 
 /// A grid point: integer multiples of the grid spacing, relative to the local origin.
 type G = (i64, i64);
@@ -40,34 +40,19 @@ pub(crate) fn regularize<N: Num>(
         .filter(|((a, b), _)| a != b)
         .collect();
     let fragments = snap_round(segments)?;
-    let windings = Windings::of(&fragments)?;
-    let boundary = |k: usize| {
-        let (left, right) = windings.sides(k);
-        inside(left) != inside(right)
+    // Snapped fragments do not cross: their arrangement constructs no point, and the `f64`
+    // predicates on grid integers below 2⁵² (ε = 0) are exact.
+    let edges: Vec<Edge<Float>> = fragments
+        .iter()
+        .map(|&((a, b), _)| (unit(a), unit(b)))
+        .collect();
+    let label = |e: usize| {
+        let mut w = [0; 2];
+        w[fragments[e].1] = 1;
+        Pair(w)
     };
-    if !(0..windings.pieces.len()).any(boundary) {
-        // No boundary left: the far face (winding 0) decides between 0̂ and 1̂.
-        let all = if inside([0, 0]) {
-            YinSet2::full()
-        } else {
-            YinSet2::empty()
-        };
-        return Ok(all.with_ctx(ctx));
-    }
-    let mut out = Segmented::new();
-    for (k, &(lo, hi)) in windings.pieces.iter().enumerate() {
-        if boundary(k) {
-            let (a, b) = (out.id(&unit(lo)), out.id(&unit(hi)));
-            if inside(windings.sides(k).0) {
-                out.push(a, b);
-            } else {
-                out.push(b, a);
-            }
-        }
-    }
-    Ok(out
-        .paste_exact(Tolerance::default())?
-        .map_points(|p| frame.to_point(p), ctx))
+    let unit_set = fill_exact(&edges, label, Tolerance::default(), |w: Pair| inside(w.0))?;
+    Ok(unit_set.map_points(|p| frame.to_point(p), ctx))
 }
 
 /// The grid of one snap rounding: spacing `g` (a power of two) and a local origin on the grid
@@ -330,79 +315,6 @@ where
         top.div_floor(&den.checked_mul(&two)?).to_i64()
     };
     Some((round(&a.0, &ab.0)?, round(&a.1, &ab.1)?))
-}
-
-/// The distinct pieces of the snapped arrangement with their net multiplicity per operand and
-/// the winding numbers on their left.
-struct Windings {
-    /// Pieces `lo → hi` with `lo < hi`, pairwise non-overlapping and non-crossing.
-    pieces: Vec<(G, G)>,
-    /// Per operand, fragments running `lo → hi` minus those running `hi → lo`.
-    mult: Vec<Winding>,
-    /// Winding numbers on the left of `lo → hi`.
-    left: Vec<Winding>,
-}
-
-impl Windings {
-    /// Cut the fragments at every contact, merge coincident pieces, and compute windings from
-    /// the first piece above each piece (a vertical sweep, seed 002 Alg. 1).
-    fn of(fragments: &[Labelled]) -> Result<Windings, YinError> {
-        let edges: Vec<Edge<Float>> = fragments
-            .iter()
-            .map(|&((a, b), _)| (unit(a), unit(b)))
-            .collect();
-        let on = |p: &Point<Float>| (p.x.get() as i64, p.y.get() as i64);
-        let mut cuts: Vec<Vec<G>> = vec![Vec::new(); fragments.len()];
-        for (i, j, contact) in intersections(&edges, &Default::default(), |_, _| true) {
-            let pts: Vec<G> = match &contact {
-                Contact::Touching(p) => vec![on(p)],
-                Contact::Overlap(p, q) => vec![on(p), on(q)],
-                _ => vec![],
-            };
-            cuts[i].extend(&pts);
-            cuts[j].extend(pts);
-        }
-        let mut net: HashMap<(G, G), Winding> = HashMap::new();
-        for (&((a, b), label), mut cut) in fragments.iter().zip(cuts) {
-            cut.retain(|&p| p != a && p != b);
-            cut.sort();
-            cut.dedup();
-            let mut stops = vec![a.min(b)];
-            stops.extend(cut);
-            stops.push(a.max(b));
-            for w in stops.windows(2) {
-                net.entry((w[0], w[1])).or_default()[label] += if a < b { 1 } else { -1 };
-            }
-        }
-        let mut pieces: Vec<((G, G), Winding)> =
-            net.into_iter().filter(|&(_, m)| m != [0, 0]).collect();
-        pieces.sort();
-        let (pieces, mult): (Vec<(G, G)>, Vec<Winding>) = pieces.into_iter().unzip();
-        let left = Windings::left_windings(&pieces, &mult)?;
-        Ok(Windings { pieces, mult, left })
-    }
-
-    /// Winding numbers on the left of each piece.
-    fn left_windings(pieces: &[(G, G)], mult: &[Winding]) -> Result<Vec<Winding>, YinError> {
-        let pts: Vec<Edge<Float>> = pieces.iter().map(|&(a, b)| (unit(a), unit(b))).collect();
-        let refs: Vec<(&Point<Float>, &Point<Float>)> = pts.iter().map(|(a, b)| (a, b)).collect();
-        let mult: Vec<Pair> = mult.iter().map(|&m| Pair(m)).collect();
-        Ok(left_windings(&refs, &mult, &Default::default())?
-            .into_iter()
-            .map(|p| p.0)
-            .collect())
-    }
-
-    /// Winding numbers on the left and on the right of piece `k`.
-    fn sides(&self, k: usize) -> (Winding, Winding) {
-        (
-            self.left[k],
-            [
-                self.left[k][0] - self.mult[k][0],
-                self.left[k][1] - self.mult[k][1],
-            ],
-        )
-    }
 }
 
 #[cfg(test)]
