@@ -389,6 +389,11 @@ impl Num for Rational {
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
         let f = |p: [&Self; 2]| [approx(p[0]), approx(p[1])];
         filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| {
+            // Two equal points (edges meeting at a vertex, an arrangement's common ends) give 0,
+            // which no filter can certify: settled by comparing terms, not by big products.
+            if a == b || b == c || c == a {
+                return Ordering::Equal;
+            }
             let i = |p: [&Self; 2]| integers(p, 1 << 61);
             match (i(a), i(b), i(c)) {
                 (Some(a), Some(b), Some(c)) => {
