@@ -321,6 +321,20 @@ fn approx(v: &Rational) -> f64 {
     }
 }
 
+/// Sign of the determinant `(b − a) × (c − a)` in integers, without reducing any intermediate
+/// (a rational sum would take a gcd at every step): with every coordinate `n / d`, `d > 0`,
+/// each difference is an integer over a positive product of denominators, and the two products
+/// compare as `n₁n₂·d_by·d_cx` against `n₃n₄·d_bx·d_cy` (the factors `d_ax·d_ay` cancel).
+fn fraction_free_orient(a: [&Rational; 2], b: [&Rational; 2], c: [&Rational; 2]) -> Ordering {
+    let [ax, ay, bx, by, cx, cy] = [a[0], a[1], b[0], b[1], c[0], c[1]].map(|v| v.big());
+    let diff = |p: &BigRational, q: &BigRational| p.numer() * q.denom() - q.numer() * p.denom();
+    let (bax, cay) = (diff(&bx, &ax), diff(&cy, &ay));
+    let (bay, cax) = (diff(&by, &ay), diff(&cx, &ax));
+    let left = bax * cay * by.denom() * cx.denom();
+    let right = bay * cax * bx.denom() * cy.denom();
+    left.cmp(&right)
+}
+
 /// The coordinates of a point as `i128` if they are integers of magnitude below `bound`: the
 /// orientation determinants of such points are computed exactly in `i128` (below 2⁶¹ in 2D,
 /// 2⁴⁰ in 3D, their determinants stay below 2¹²⁷).
@@ -399,7 +413,7 @@ impl Num for Rational {
                 (Some(a), Some(b), Some(c)) => {
                     exact_orient(a.each_ref(), b.each_ref(), c.each_ref())
                 }
-                _ => exact_orient(a, b, c),
+                _ => fraction_free_orient(a, b, c),
             }
         })
     }
