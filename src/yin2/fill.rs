@@ -109,12 +109,14 @@ fn fill_edges<N: Num>(
     fill_exact(&edges, |_| 1, ctx, inside)
 }
 
-/// Exact mode: the regularized set {p off the edges : inside(w(p))} for w the winding number
-/// of the directed `edges`, edge `e` counted `mult(e)` times (a vector of counts for several
+/// The regularized set {p off the edges : inside(w(p))} for w the winding number of the
+/// directed `edges`, edge `e` counted `mult(e)` times (a vector of counts for several
 /// operands): the arrangement of all edges in one sweep ([`arrange`]), the winding numbers of
 /// the faces beside each of its pieces, and the pasting map (seed 000 Lemma 4.2) of the pieces
 /// between an inside face (on their left) and an outside one. With no such piece, the far face
-/// (w = 0) decides between 0̂ and 1̂. O((n + I) log n) for n edges with I contacts.
+/// (w = 0) decides between 0̂ and 1̂. O((n + I) log n) for n edges with I contacts. Its
+/// predicates must be exact: exact mode, or float mode's snapped fragments in grid units
+/// (which do not cross, with ε = 0).
 pub(crate) fn fill_exact<N, W>(
     edges: &[Edge<N>],
     mult: impl Fn(usize) -> W,

@@ -147,9 +147,11 @@ pub(crate) struct Group {
 }
 
 impl<N: Num> Arrangement<N> {
-    /// The winding numbers `(below, above)` of the faces beside each group, for edge `e`
-    /// adding `mult[e]` from below to above (a directed edge adds its multiplicity from its
-    /// right to its left, and `lo → hi` has its left above): the far face has `W::default()`.
+    /// The winding numbers `(below, above)` of the faces beside each group, edge `e` adding
+    /// `mult(e)` from below to above (a directed edge adds its multiplicity from its right to
+    /// its left, and `lo → hi` has its left above); the far face below all has `W::default()`.
+    /// Along a piece they are constant when the edges are closed (as many enter as leave every
+    /// vertex), as in every fill and Boolean operation.
     pub fn windings<W>(&self, mult: impl Fn(usize) -> W) -> Vec<(W, W)>
     where
         W: Copy + Default + std::ops::Add<Output = W>,
