@@ -426,6 +426,44 @@ fn sort_robust(v: &mut [usize], cmp: &mut impl FnMut(usize, usize) -> Ordering) 
     v.copy_from_slice(&merged);
 }
 
+/// The pairs of edges through event `p` that first meet there (seed 002 §1.3): all pairs with an
+/// edge starting here (`starting`), and the pairs of edges of `old` (arriving at `p`) that come
+/// from different directions (collinear ones met before `p`).
+fn report_pairs<N: Num>(
+    seg: &[(&Point<N>, &Point<N>)],
+    ctx: &N::Ctx,
+    p: &Point<N>,
+    old: &mut [usize],
+    starting: &[usize],
+    pairs: &mut Vec<(usize, usize)>,
+) {
+    sort_robust(old, &mut |a, b| {
+        orient(p, seg[a].0, seg[b].0, ctx).reverse().then(a.cmp(&b))
+    });
+    let pair = |a: usize, b: usize| (a.min(b), a.max(b));
+    let mut group_end = 0;
+    for k in 0..old.len() {
+        if k == group_end {
+            group_end = k + 1;
+            while group_end < old.len()
+                && orient(p, seg[old[group_end - 1]].0, seg[old[group_end]].0, ctx)
+                    == Ordering::Equal
+            {
+                group_end += 1;
+            }
+        }
+        pairs.extend(old[group_end..].iter().map(|&b| pair(old[k], b)));
+    }
+    for (k, &s) in starting.iter().enumerate() {
+        pairs.extend(
+            starting[k + 1..]
+                .iter()
+                .chain(old.iter())
+                .map(|&b| pair(s, b)),
+        );
+    }
+}
+
 /// The state of the Bentley–Ottmann sweep of seed 002 §1.3 over one edge set.
 struct Sweep<'a, N: Num> {
     edges: &'a [Edge<N>],
@@ -543,29 +581,9 @@ impl<'a, N: Num> Sweep<'a, N> {
         if let Some(r) = &mut self.record {
             r.close(&old, stamp);
         }
-        // Pairs meeting first at p: all pairs with an edge starting here, and the pairs of
-        // edges arriving from different directions (collinear ones met before p).
-        sort_robust(&mut old, &mut |a, b| {
-            orient(p, seg[a].0, seg[b].0, ctx).reverse().then(a.cmp(&b))
-        });
-        let pair = |a: usize, b: usize| (a.min(b), a.max(b));
-        let mut group_end = 0;
-        for k in 0..old.len() {
-            if k == group_end {
-                group_end = k + 1;
-                while group_end < old.len()
-                    && orient(p, seg[old[group_end - 1]].0, seg[old[group_end]].0, ctx)
-                        == Ordering::Equal
-                {
-                    group_end += 1;
-                }
-            }
-            self.pairs
-                .extend(old[group_end..].iter().map(|&b| pair(old[k], b)));
-        }
-        for (k, &s) in starting.iter().enumerate() {
-            self.pairs
-                .extend(starting[k + 1..].iter().chain(&old).map(|&b| pair(s, b)));
+        // The arrangement needs no pairs: its pieces come from the status itself.
+        if self.record.is_none() {
+            report_pairs(seg, ctx, p, &mut old, starting, &mut self.pairs);
         }
         // Back into the status: the edges going on past p, by their direction after p.
         let mut next: Vec<usize> = old
