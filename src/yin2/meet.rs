@@ -59,6 +59,6 @@ pub(crate) fn overlay<N: Num>(
         .chain(b.edges())
         .map(|(p, q)| (p.clone(), q.clone()))
         .collect();
-    let label = |e: usize| Pair(if e < na { [1, 0] } else { [0, 1] });
+    let label = |e: usize| Pair::unit(usize::from(e >= na));
     fill_exact(&edges, label, ctx, |w: Pair| inside(w.0))
 }

@@ -46,11 +46,7 @@ pub(crate) fn regularize<N: Num>(
         .iter()
         .map(|&((a, b), _)| (unit(a), unit(b)))
         .collect();
-    let label = |e: usize| {
-        let mut w = [0; 2];
-        w[fragments[e].1] = 1;
-        Pair(w)
-    };
+    let label = |e: usize| Pair::unit(fragments[e].1);
     let unit_set = fill_exact(&edges, label, Tolerance::default(), |w: Pair| inside(w.0))?;
     Ok(unit_set.map_points(|p| frame.to_point(p), ctx))
 }

@@ -10,6 +10,15 @@ pub(crate) type Winding = [i64; 2];
 #[derive(Clone, Copy, Default)]
 pub(crate) struct Pair(pub(crate) Winding);
 
+impl Pair {
+    /// One edge of operand `label` (`0` or `1`): multiplicity 1 there, 0 for the other.
+    pub(crate) fn unit(label: usize) -> Pair {
+        let mut w = [0; 2];
+        w[label] = 1;
+        Pair(w)
+    }
+}
+
 impl Add for Pair {
     type Output = Pair;
     fn add(self, o: Pair) -> Pair {
