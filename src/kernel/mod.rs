@@ -10,4 +10,5 @@ mod segment;
 pub use angle::cmp_clockwise_from;
 pub use point::{orient, BBox, Point};
 pub use point3::{orient3d, BBox3, Point3};
-pub use segment::{classify, on_closed_segment, Contact};
+pub(crate) use segment::crossing_point;
+pub use segment::{classify, crosses, on_closed_segment, Contact};

@@ -44,16 +44,28 @@ pub fn classify<N: Num>(
             return Contact::Touching(p.clone());
         }
     }
-    if o1 != o2
-        && o1 != Ordering::Equal
-        && o2 != Ordering::Equal
-        && o3 != o4
-        && o3 != Ordering::Equal
-        && o4 != Ordering::Equal
-    {
+    if apart(o1, o2) && apart(o3, o4) {
         return Contact::Crossing(crossing_point(a, b, c, d));
     }
     Contact::Disjoint
+}
+
+/// True if the interiors of the segments `ab` and `cd` cross at one point: the `Crossing` case
+/// of [`classify`], decided without constructing the point.
+pub fn crosses<N: Num>(
+    a: &Point<N>,
+    b: &Point<N>,
+    c: &Point<N>,
+    d: &Point<N>,
+    ctx: &N::Ctx,
+) -> bool {
+    apart(orient(a, b, c, ctx), orient(a, b, d, ctx))
+        && apart(orient(c, d, a, ctx), orient(c, d, b, ctx))
+}
+
+/// True if two orientations put two points strictly on opposite sides of a line.
+fn apart(o: Ordering, p: Ordering) -> bool {
+    o != Ordering::Equal && p == o.reverse()
 }
 
 /// Collinear segments: disjoint, touching at one point, or overlapping.
@@ -72,7 +84,12 @@ fn collinear<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, d: &Point<N>) -> 
 
 /// The intersection of the lines `ab` and `cd` (not parallel): `a + t (b − a)` with
 /// `t = ((c − a) × (d − c)) / ((b − a) × (d − c))`.
-fn crossing_point<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, d: &Point<N>) -> Point<N> {
+pub(crate) fn crossing_point<N: Num>(
+    a: &Point<N>,
+    b: &Point<N>,
+    c: &Point<N>,
+    d: &Point<N>,
+) -> Point<N> {
     let cross = |ux: N, uy: N, vx: N, vy: N| ux * vy - uy * vx;
     let (dcx, dcy) = (d.x.clone() - c.x.clone(), d.y.clone() - c.y.clone());
     let num = cross(

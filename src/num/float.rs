@@ -180,7 +180,7 @@ fn exact_sign_f64<const K: usize>(
 }
 
 /// The sign of (b − a) × (c − a) for `f64` points, exactly ([`exact_sign_f64`]).
-fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
+pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
     // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
     // product of two stays representable, and none overflows.
     let robust_sign = |p: [f64; 6]| {
@@ -198,7 +198,7 @@ fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
 
 /// The sign of det[b − a, c − a, d − a] for `f64` points, exactly ([`exact_sign_f64`]), in
 /// the convention of [`Num::orient3d`].
-fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
+pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
     // Coordinates of magnitude in [2^-300, 2^300] (or 0) are multiples of 2^-352: every
     // product of three stays representable, and none overflows.
     let robust_sign = |p: [f64; 12]| {

@@ -11,13 +11,15 @@ mod big;
 mod float;
 #[cfg(feature = "gmp")]
 mod gmp;
+mod interval;
 mod literal;
 mod rational;
 
-pub(crate) use float::segment_distance;
+pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance};
 pub use float::{Float, Tolerance, TooFine};
 #[cfg(feature = "gmp")]
 pub use gmp::GmpRational;
+pub(crate) use interval::Interval;
 pub use literal::Literal;
 pub use rational::Rational;
 
@@ -87,6 +89,13 @@ pub trait Num:
 
     /// The nearest `f64` (for output and rendering, never for exact decisions).
     fn to_f64(&self) -> f64;
+
+    /// An `f64` within 4 ulps of the value (relative; within 2⁻¹⁰⁶² absolute below the normal
+    /// range), or NaN or an infinity when out of range: the input of floating-point filters,
+    /// never of a decision by itself. Default: [`Num::to_f64`].
+    fn approx(&self) -> f64 {
+        self.to_f64()
+    }
 
     /// The sign of `self` compared with zero.
     fn sign(&self) -> Ordering;

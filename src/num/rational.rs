@@ -2,7 +2,8 @@
 //! as `num-rational`'s big rationals otherwise, compared through a floating-point filter.
 
 use super::{
-    big, exact_orient, exact_orient3d, filtered_orient, filtered_orient3d, Literal, Num, NumError,
+    big, exact_orient, exact_orient3d, exact_orient3d_f64, exact_orient_f64, filtered_orient,
+    filtered_orient3d, Literal, Num, NumError,
 };
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -349,6 +350,23 @@ fn integers<const K: usize>(p: [&Rational; K], bound: i64) -> Option<[i128; K]> 
     Some(out)
 }
 
+/// The coordinates of a point as `f64`s if each is one exactly (a small value with at most 53
+/// significant bits over a power of two: what `f64` input reads as), for the dyadic fast path of
+/// the orientation predicates: Shewchuk's adaptive arithmetic on the `f64`s (`robust`), exact
+/// for them, instead of big rationals.
+fn dyadic<const K: usize>(p: [&Rational; K]) -> Option<[f64; K]> {
+    let mut out = [0.0; K];
+    for (o, v) in out.iter_mut().zip(p) {
+        match v.0 {
+            Repr::Small(n, d) if d & (d - 1) == 0 && n.unsigned_abs() <= 1 << 53 => {
+                *o = n as f64 / d as f64;
+            }
+            _ => return None,
+        }
+    }
+    Some(out)
+}
+
 impl Num for Rational {
     type Ctx = ();
     const EXACT: bool = true;
@@ -382,6 +400,10 @@ impl Num for Rational {
         Rational::new(digits(&num), digits(&den))
     }
 
+    fn approx(&self) -> f64 {
+        approx(self)
+    }
+
     fn to_f64(&self) -> f64 {
         const EXACT: i64 = 1 << 53;
         match &self.0 {
@@ -409,11 +431,15 @@ impl Num for Rational {
                 return Ordering::Equal;
             }
             let i = |p: [&Self; 2]| integers(p, 1 << 61);
+            let f = |p: [&Self; 2]| dyadic(p);
             match (i(a), i(b), i(c)) {
                 (Some(a), Some(b), Some(c)) => {
                     exact_orient(a.each_ref(), b.each_ref(), c.each_ref())
                 }
-                _ => fraction_free_orient(a, b, c),
+                _ => match (f(a), f(b), f(c)) {
+                    (Some(a), Some(b), Some(c)) => exact_orient_f64(a, b, c),
+                    _ => fraction_free_orient(a, b, c),
+                },
             }
         })
     }
@@ -422,11 +448,15 @@ impl Num for Rational {
         let f = |p: [&Self; 3]| p.map(approx);
         filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| {
             let i = |p: [&Self; 3]| integers(p, 1 << 40);
+            let f = |p: [&Self; 3]| dyadic(p);
             match (i(a), i(b), i(c), i(d)) {
                 (Some(a), Some(b), Some(c), Some(d)) => {
                     exact_orient3d(a.each_ref(), b.each_ref(), c.each_ref(), d.each_ref())
                 }
-                _ => exact_orient3d(a, b, c, d),
+                _ => match (f(a), f(b), f(c), f(d)) {
+                    (Some(a), Some(b), Some(c), Some(d)) => exact_orient3d_f64(a, b, c, d),
+                    _ => exact_orient3d(a, b, c, d),
+                },
             }
         })
     }

@@ -149,7 +149,8 @@ where
     if pieces.is_empty() && inside(W::default()) {
         return Ok(YinSet2::full().with_ctx(ctx));
     }
-    Segmented::numbered(arr.points, pieces).paste_exact(ctx)
+    let points = arr.into_points(&mut pieces);
+    Segmented::numbered(points, pieces).paste_exact(ctx)
 }
 
 /// The directed edges of all rings, each ring closed, zero-length edges dropped.

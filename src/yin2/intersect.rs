@@ -8,7 +8,8 @@
 // of their directions after `p`; only the two new neighbour pairs are tested for a crossing
 // ahead. Every decision is `orient`, `classify` or the order of points.
 
-use crate::kernel::{classify, orient, Contact, Point};
+use super::vertex::{Crossing, Vertex};
+use crate::kernel::{classify, crosses, Contact, Point};
 use crate::num::{Num, Rational};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
@@ -110,7 +111,7 @@ fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
 ///
 /// The sweep order needs exact crossing points: exact mode, or in float mode edges that do not
 /// cross (snapped fragments on grid integers, where no point is constructed).
-pub(crate) fn arrange<N: Num>(edges: &[Edge<N>], ctx: &N::Ctx) -> Arrangement<N> {
+pub(crate) fn arrange<'a, N: Num>(edges: &'a [Edge<N>], ctx: &'a N::Ctx) -> Arrangement<'a, N> {
     let mut sweep = Sweep::new(edges, ctx);
     sweep.record = Some(Recorder::new(edges.len()));
     sweep.drive();
@@ -125,9 +126,9 @@ pub(crate) fn arrange<N: Num>(edges: &[Edge<N>], ctx: &N::Ctx) -> Arrangement<N>
 /// The pieces of an arrangement of closed edges: each group is one piece of the plane's
 /// subdivision, carried by one or more collinear edges (a shared stretch), from event `from`
 /// to event `to` (`from < to` in sweep order), with the group directly below it in the sweep.
-pub(crate) struct Arrangement<N: Num> {
-    /// The events in sweep order: every vertex of the subdivision, once.
-    pub points: Vec<Point<N>>,
+pub(crate) struct Arrangement<'a, N: Num> {
+    /// The events in sweep order: every vertex of the subdivision, once (crossings implicit).
+    pub points: Vec<Vertex<'a, N>>,
     /// The pieces, in the order the sweep opened them.
     pub groups: Vec<Group>,
     /// The edges of every group, `Group::members` indexes into it.
@@ -146,7 +147,29 @@ pub(crate) struct Group {
     pub members: std::ops::Range<usize>,
 }
 
-impl<N: Num> Arrangement<N> {
+impl<'a, N: Num> Arrangement<'a, N> {
+    /// The exact points that the `pieces` (pairs of indices of [`Arrangement::points`]) end at,
+    /// in sweep order, with the pieces renumbered into them: the crossings among them are made
+    /// exact here, the others never.
+    pub fn into_points(self, pieces: &mut [(usize, usize)]) -> Vec<Point<N>> {
+        let mut index = vec![NIL; self.points.len()];
+        for &(a, b) in pieces.iter() {
+            index[a] = 0;
+            index[b] = 0;
+        }
+        let mut out = Vec::new();
+        for (k, v) in self.points.into_iter().enumerate() {
+            if index[k] != NIL {
+                index[k] = out.len();
+                out.push(v.into_point());
+            }
+        }
+        for p in pieces.iter_mut() {
+            *p = (index[p.0], index[p.1]);
+        }
+        out
+    }
+
     /// The winding numbers `(below, above)` of the faces beside each group, edge `e` adding
     /// `mult(e)` from below to above (a directed edge adds its multiplicity from its right to
     /// its left, and `lo → hi` has its left above); the far face below all has `W::default()`.
@@ -169,15 +192,15 @@ impl<N: Num> Arrangement<N> {
 }
 
 /// What [`arrange`]'s sweep records at each event.
-struct Recorder<N: Num> {
-    points: Vec<Point<N>>,
+struct Recorder<'a, N: Num> {
+    points: Vec<Vertex<'a, N>>,
     groups: Vec<Group>,
     members: Vec<usize>,
     /// The open group of each edge in the status.
     open: Vec<usize>,
 }
 
-impl<N: Num> Recorder<N> {
+impl<'a, N: Num> Recorder<'a, N> {
     fn new(n: usize) -> Self {
         Recorder {
             points: Vec::new(),
@@ -198,19 +221,14 @@ impl<N: Num> Recorder<N> {
     }
 
     /// Event `p`: the edges `next` (bottom to top) enter the status above `lower`; runs of
-    /// edges leaving `p` in the same direction (`same`) form one group.
-    fn open(
-        &mut self,
-        p: &Point<N>,
-        next: &[usize],
-        lower: usize,
-        same: impl Fn(usize, usize) -> bool,
-    ) {
+    /// edges leaving `p` in the same direction (`same[k − 1]` for `next[k]` after `next[k − 1]`)
+    /// form one group.
+    fn open(&mut self, p: Vertex<'a, N>, next: &[usize], lower: usize, same: &[bool]) {
         let stamp = self.points.len();
-        self.points.push(p.clone());
+        self.points.push(p);
         let mut below = (lower != NIL).then(|| self.open[lower]);
         for (k, &e) in next.iter().enumerate() {
-            if k == 0 || !same(next[k - 1], e) {
+            if k == 0 || !same[k - 1] {
                 let start = self.members.len();
                 self.groups.push(Group {
                     from: stamp,
@@ -432,22 +450,20 @@ fn sort_robust(v: &mut [usize], cmp: &mut impl FnMut(usize, usize) -> Ordering) 
 fn report_pairs<N: Num>(
     seg: &[(&Point<N>, &Point<N>)],
     ctx: &N::Ctx,
-    p: &Point<N>,
+    p: &Vertex<'_, N>,
     old: &mut [usize],
     starting: &[usize],
     pairs: &mut Vec<(usize, usize)>,
 ) {
-    sort_robust(old, &mut |a, b| {
-        orient(p, seg[a].0, seg[b].0, ctx).reverse().then(a.cmp(&b))
-    });
+    let back = |a: usize, b: usize| p.orient_along(seg[a].1, seg[a].0, seg[b].0, ctx);
+    sort_robust(old, &mut |a, b| back(a, b).reverse().then(a.cmp(&b)));
     let pair = |a: usize, b: usize| (a.min(b), a.max(b));
     let mut group_end = 0;
     for k in 0..old.len() {
         if k == group_end {
             group_end = k + 1;
             while group_end < old.len()
-                && orient(p, seg[old[group_end - 1]].0, seg[old[group_end]].0, ctx)
-                    == Ordering::Equal
+                && back(old[group_end - 1], old[group_end]) == Ordering::Equal
             {
                 group_end += 1;
             }
@@ -466,19 +482,18 @@ fn report_pairs<N: Num>(
 
 /// The state of the Bentley–Ottmann sweep of seed 002 §1.3 over one edge set.
 struct Sweep<'a, N: Num> {
-    edges: &'a [Edge<N>],
     /// Each edge as `(lo, hi)`, its ends in sweep order.
     seg: Vec<(&'a Point<N>, &'a Point<N>)>,
     ctx: &'a N::Ctx,
     status: Status,
     /// Crossings ahead of the sweep, with the edges found crossing there.
-    crossings: BTreeMap<Point<N>, Vec<usize>>,
+    crossings: BTreeMap<Crossing<'a, N>, Vec<usize>>,
     /// Event stamp of the last time each edge was taken out of the status.
     mark: Vec<usize>,
     /// Candidate pairs `(i, j)`, `i < j`.
     pairs: Vec<(usize, usize)>,
     /// The arrangement's faces and pieces, when the sweep records them ([`arrange`]).
-    record: Option<Recorder<N>>,
+    record: Option<Recorder<'a, N>>,
 }
 
 impl<'a, N: Num> Sweep<'a, N> {
@@ -489,7 +504,6 @@ impl<'a, N: Num> Sweep<'a, N> {
             .map(|(a, b)| if a <= b { (a, b) } else { (b, a) })
             .collect();
         Sweep {
-            edges,
             seg,
             ctx,
             status: Status::new(edges.len()),
@@ -508,7 +522,7 @@ impl<'a, N: Num> Sweep<'a, N> {
 
     /// Process every event in sweep order.
     fn drive(&mut self) {
-        let mut ends: Vec<(&Point<N>, usize, bool)> = Vec::with_capacity(2 * self.seg.len());
+        let mut ends: Vec<(&'a Point<N>, usize, bool)> = Vec::with_capacity(2 * self.seg.len());
         for (i, &(lo, hi)) in self.seg.iter().enumerate() {
             ends.push((lo, i, false));
             ends.push((hi, i, true));
@@ -520,21 +534,21 @@ impl<'a, N: Num> Sweep<'a, N> {
             let next_end = ends.get(k).map(|e| e.0);
             let take_crossing = match (self.crossings.first_key_value(), next_end) {
                 (None, None) => break,
-                (Some((q, _)), Some(e)) => q <= e,
+                (Some((q, _)), Some(e)) => q.cmp_point(e) != Ordering::Greater,
                 (Some(_), None) => true,
                 (None, Some(_)) => false,
             };
             let (p, through) = match (take_crossing, next_end) {
-                (false, Some(e)) => (e.clone(), Vec::new()),
+                (false, Some(e)) => (Vertex::Given(e), Vec::new()),
                 _ => match self.crossings.pop_first() {
-                    Some(x) => x,
+                    Some((q, through)) => (Vertex::Crossing(q), through),
                     None => break,
                 },
             };
             starting.clear();
             ending.clear();
             while let Some(&(q, i, is_end)) = ends.get(k) {
-                if *q != p {
+                if p.cmp_point(q) != Ordering::Equal {
                     break;
                 }
                 if is_end {
@@ -544,7 +558,7 @@ impl<'a, N: Num> Sweep<'a, N> {
                 }
                 k += 1;
             }
-            self.event(&p, &starting, &ending, &through, stamp);
+            self.event(p, &starting, &ending, &through, stamp);
             stamp += 1;
         }
     }
@@ -552,7 +566,7 @@ impl<'a, N: Num> Sweep<'a, N> {
     /// Event `p` (seed 002 §1.3): report pairs first meeting at `p`, reorder the edges through it.
     fn event(
         &mut self,
-        p: &Point<N>,
+        p: Vertex<'a, N>,
         starting: &[usize],
         ending: &[usize],
         through: &[usize],
@@ -570,7 +584,7 @@ impl<'a, N: Num> Sweep<'a, N> {
             }
         }
         // The rest of the edges through p form the middle of the status.
-        let side = |t: usize| orient(seg[t].0, seg[t].1, p, ctx);
+        let side = |t: usize| p.side(t, seg[t].0, seg[t].1, ctx);
         let (below, rest) = status.split(status.root, |t| side(t) != Ordering::Greater);
         let (on, above) = status.split(rest, |t| side(t) == Ordering::Less);
         status.collect(on, &mut old);
@@ -583,24 +597,18 @@ impl<'a, N: Num> Sweep<'a, N> {
         }
         // The arrangement needs no pairs: its pieces come from the status itself.
         if self.record.is_none() {
-            report_pairs(seg, ctx, p, &mut old, starting, &mut self.pairs);
+            report_pairs(seg, ctx, &p, &mut old, starting, &mut self.pairs);
         }
         // Back into the status: the edges going on past p, by their direction after p.
         let mut next: Vec<usize> = old
             .iter()
             .chain(starting)
             .copied()
-            .filter(|&s| seg[s].1 > p)
+            .filter(|&s| p.cmp_point(seg[s].1) == Ordering::Less)
             .collect();
-        sort_robust(&mut next, &mut |a, b| {
-            orient(p, seg[a].1, seg[b].1, ctx).reverse().then(a.cmp(&b))
-        });
+        let ahead = |a: usize, b: usize| p.orient_along(seg[a].0, seg[a].1, seg[b].1, ctx);
+        sort_robust(&mut next, &mut |a, b| ahead(a, b).reverse().then(a.cmp(&b)));
         let (lower, upper) = (status.last(below), status.first(above));
-        if let Some(r) = &mut self.record {
-            r.open(p, &next, lower, |a, b| {
-                orient(p, seg[a].1, seg[b].1, ctx) == Ordering::Equal
-            });
-        }
         let mut middle = NIL;
         for &s in &next {
             status.live[s] = true;
@@ -610,27 +618,37 @@ impl<'a, N: Num> Sweep<'a, N> {
         status.root = status.merge(joined, above);
         match (next.first(), next.last()) {
             (Some(&f), Some(&l)) => {
-                self.check(lower, f, p);
-                self.check(l, upper, p);
+                self.check(lower, f, &p);
+                self.check(l, upper, &p);
             }
-            _ => self.check(lower, upper, p),
+            _ => self.check(lower, upper, &p),
+        }
+        if let Some(r) = &mut self.record {
+            let (seg, ctx) = (&self.seg, self.ctx);
+            let ahead = |a: usize, b: usize| p.orient_along(seg[a].0, seg[a].1, seg[b].1, ctx);
+            let same: Vec<bool> = next
+                .windows(2)
+                .map(|w| ahead(w[0], w[1]) == Ordering::Equal)
+                .collect();
+            r.open(p, &next, lower, &same);
         }
     }
 
     /// Schedule the crossing of neighbours `s` and `t` if it lies ahead of `p` (seed 002 §1.3).
-    fn check(&mut self, s: usize, t: usize, p: &Point<N>) {
+    fn check(&mut self, s: usize, t: usize, p: &Vertex<'a, N>) {
         if s == NIL || t == NIL {
             return;
         }
         let (i, j) = (s.min(t), s.max(t));
-        let (a, b) = (&self.edges[i], &self.edges[j]);
+        let (a, b) = (self.seg[i], self.seg[j]);
         // A crossing needs overlapping y-extents (the x-extents overlap at the sweep line).
         let (ya, yb) = ((&a.0.y).min(&a.1.y), (&b.0.y).min(&b.1.y));
         if (&a.0.y).max(&a.1.y) < yb || (&b.0.y).max(&b.1.y) < ya {
             return;
         }
-        if let Contact::Crossing(q) = classify(&a.0, &a.1, &b.0, &b.1, self.ctx) {
-            if q > *p {
+        if crosses(a.0, a.1, b.0, b.1, self.ctx) {
+            let q = Crossing::new((i, j), a, b);
+            if p.cmp_crossing(&q) == Ordering::Less {
                 self.crossings.entry(q).or_default().extend([i, j]);
             } else {
                 // Only with rounded crossing points (float mode): keep the pair anyway.
@@ -643,6 +661,7 @@ impl<'a, N: Num> Sweep<'a, N> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::orient;
     use crate::num::{Float, Rational, Tolerance};
     use proptest::prelude::*;
 
@@ -717,7 +736,7 @@ mod tests {
         let arr = arrange(&edges, &());
         let up = |e: usize| if edges[e].0 < edges[e].1 { 1i64 } else { -1 };
         let windings = arr.windings(up);
-        let end = |g: &Group| (&arr.points[g.from], &arr.points[g.to]);
+        let end = |g: &Group| (arr.points[g.from].point(), arr.points[g.to].point());
         for (e, (a, b)) in edges.iter().enumerate() {
             let mut chain: Vec<_> = arr
                 .groups

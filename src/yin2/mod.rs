@@ -16,6 +16,7 @@ mod paste;
 mod set;
 mod snap;
 mod validate;
+mod vertex;
 mod winding;
 
 pub use curve::Curve;
