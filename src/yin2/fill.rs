@@ -22,7 +22,7 @@
 //! winding numbers of its faces).
 
 use super::error::YinError;
-use super::intersect::{arrange, Edge};
+use super::intersect::{arrange, Arrangement, Edge};
 use super::paste::Segmented;
 use super::set::YinSet2;
 use super::snap::regularize;
@@ -115,8 +115,8 @@ fn fill_edges<N: Num>(
 /// the faces beside each of its pieces, and the pasting map (seed 000 Lemma 4.2) of the pieces
 /// between an inside face (on their left) and an outside one. With no such piece, the far face
 /// (w = 0) decides between 0̂ and 1̂. O((n + I) log n) for n edges with I contacts. Its
-/// predicates must be exact: exact mode, or float mode's snapped fragments in grid units
-/// (which do not cross, with ε = 0).
+/// predicates must be exact: exact mode (float mode's snapped fragments go through
+/// [`fill_arranged`]).
 pub(crate) fn fill_exact<N, W>(
     edges: &[Edge<N>],
     mult: impl Fn(usize) -> W,
@@ -127,7 +127,22 @@ where
     N: Num,
     W: Copy + Default + Add<Output = W> + Sub<Output = W>,
 {
-    let arr = arrange(edges, &ctx);
+    fill_arranged(arrange(edges, &ctx), edges, mult, ctx, inside)
+}
+
+/// [`fill_exact`] on the arrangement `arr` of `edges`, made already (float mode's snap rounding
+/// makes it on grid fragments, with ε = 0, and checks that no two of them cross).
+pub(crate) fn fill_arranged<N, W>(
+    arr: Arrangement<'_, N>,
+    edges: &[Edge<N>],
+    mult: impl Fn(usize) -> W,
+    ctx: N::Ctx,
+    inside: impl Fn(W) -> bool,
+) -> Result<YinSet2<N>, YinError>
+where
+    N: Num,
+    W: Copy + Default + Add<Output = W> + Sub<Output = W>,
+{
     // The sweep orders each edge lo → hi; an edge given hi → lo counts negatively upwards.
     let upward = |e: usize| {
         let (a, b) = &edges[e];

@@ -49,6 +49,17 @@ pub fn intersections<N: Num>(
         .collect()
 }
 
+/// The pairs `i < j` of `edges` whose interiors cross (the `Crossing` contacts of
+/// [`intersections`]), by Bentley–Ottmann in O((n + I) log n), without constructing the
+/// crossing points. Exact backends only.
+pub(crate) fn crossing_pairs(edges: &[Edge<Rational>]) -> Vec<(usize, usize)> {
+    let mut pairs = Sweep::new(edges, &()).run();
+    pairs.sort_unstable();
+    pairs.dedup();
+    pairs.retain(|&(i, j)| crosses(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, &()));
+    pairs
+}
+
 /// Float mode's budget of box pairs per edge before it falls back to [`exact_image_pairs`]:
 /// also the bound on the pair list's memory, 16 bytes a pair (at 256 a pair it was 12 GB of the
 /// W1 n = 10⁶ float meet's 15 GB peak).
@@ -110,7 +121,9 @@ fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
 /// midpoint to be located, and points are numbered by their event instead of hashed.
 ///
 /// The sweep order needs exact crossing points: exact mode, or in float mode edges that do not
-/// cross (snapped fragments on grid integers, where no point is constructed).
+/// cross (snapped fragments on grid integers, where no point is constructed); float mode's
+/// crossings are reported instead ([`Arrangement::crossed`]). The sweep finds a crossing if
+/// there is one: up to the first, its status is exact.
 pub(crate) fn arrange<'a, N: Num>(edges: &'a [Edge<N>], ctx: &'a N::Ctx) -> Arrangement<'a, N> {
     let mut sweep = Sweep::new(edges, ctx);
     sweep.record = Some(Recorder::new(edges.len()));
@@ -120,6 +133,7 @@ pub(crate) fn arrange<'a, N: Num>(edges: &'a [Edge<N>], ctx: &'a N::Ctx) -> Arra
         points: r.points,
         groups: r.groups,
         members: r.members,
+        crossed: r.crossed,
     }
 }
 
@@ -133,6 +147,9 @@ pub(crate) struct Arrangement<'a, N: Num> {
     pub groups: Vec<Group>,
     /// The edges of every group, `Group::members` indexes into it.
     pub members: Vec<usize>,
+    /// Float mode: pairs of edges found crossing (no crossing point is constructed from rounded
+    /// coordinates); if there is any, the rest of the arrangement is not valid.
+    pub crossed: Vec<(usize, usize)>,
 }
 
 /// One piece of an [`Arrangement`].
@@ -198,6 +215,8 @@ struct Recorder<'a, N: Num> {
     members: Vec<usize>,
     /// The open group of each edge in the status.
     open: Vec<usize>,
+    /// See [`Arrangement::crossed`].
+    crossed: Vec<(usize, usize)>,
 }
 
 impl<'a, N: Num> Recorder<'a, N> {
@@ -207,6 +226,7 @@ impl<'a, N: Num> Recorder<'a, N> {
             groups: Vec::new(),
             members: Vec::new(),
             open: vec![NIL; n],
+            crossed: Vec::new(),
         }
     }
 
@@ -647,6 +667,10 @@ impl<'a, N: Num> Sweep<'a, N> {
             return;
         }
         if crosses(a.0, a.1, b.0, b.1, self.ctx) {
+            if let (false, Some(r)) = (N::EXACT, &mut self.record) {
+                r.crossed.push((i, j));
+                return;
+            }
             let q = Crossing::new((i, j), a, b);
             if p.cmp_crossing(&q) == Ordering::Less {
                 self.crossings.entry(q).or_default().extend([i, j]);

@@ -3,12 +3,12 @@
 //! thereby exactly a valid Yin set whose vertices are grid points, decided with exact predicates.
 
 use super::error::YinError;
-use super::fill::fill_exact;
-use super::intersect::{intersections, Edge};
+use super::fill::fill_arranged;
+use super::intersect::{arrange, crossing_pairs, Edge};
 use super::set::YinSet2;
 use super::winding::{Pair, Winding};
-use crate::kernel::{Contact, Point};
-use crate::num::{Float, Num, Tolerance};
+use crate::kernel::Point;
+use crate::num::{Float, Num, Rational, Tolerance};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
@@ -39,16 +39,23 @@ pub(crate) fn regularize<N: Num>(
         .map(|((a, b), l)| ((frame.to_grid(a), frame.to_grid(b)), *l))
         .filter(|((a, b), _)| a != b)
         .collect();
-    let fragments = snap_round(segments)?;
     // Snapped fragments do not cross: their arrangement constructs no point, and the `f64`
-    // predicates on grid integers below 2⁵² (ε = 0) are exact.
-    let edges: Vec<Edge<Float>> = fragments
-        .iter()
-        .map(|&((a, b), _)| (unit(a), unit(b)))
-        .collect();
-    let label = |e: usize| Pair::unit(fragments[e].1);
-    let unit_set = fill_exact(&edges, label, Tolerance::default(), |w: Pair| inside(w.0))?;
-    Ok(unit_set.map_points(|p| frame.to_point(p), ctx))
+    // predicates on grid integers below 2⁵² (ε = 0) are exact. Where two still cross (the
+    // arrangement reports them), their crossing pixel is added and the segments rerouted.
+    let (mut snap, exact) = (Snap::new(segments), Tolerance::default());
+    loop {
+        let (fragments, owner) = snap.fragments();
+        let edges = unit_edges(&fragments);
+        let arr = arrange(&edges, &exact);
+        if !arr.crossed.is_empty() {
+            snap.force(&fragments, &owner, &arr.crossed)?;
+            continue;
+        }
+        let label = |e: usize| Pair::unit(fragments[e].1);
+        let inside = |w: Pair| inside(w.0);
+        let unit_set = fill_arranged(arr, &edges, label, exact, inside)?;
+        return Ok(unit_set.map_points(|p| frame.to_point(p), ctx));
+    }
 }
 
 /// The grid of one snap rounding: spacing `g` (a power of two) and a local origin on the grid
@@ -123,44 +130,86 @@ fn unit(k: G) -> Point<Float> {
     Point::new(Float::new(k.0 as f64), Float::new(k.1 as f64))
 }
 
-/// Snap rounding, iterated until no two fragments cross: each original segment is rerouted,
-/// in order along it, through the centres of the hot pixels it meets (pixels of endpoints and
-/// of crossings); where two fragments still cross at a pixel their segments do not meet, that
-/// centre is forced into both paths. Paths stay monotone along their segments and every round
-/// adds a new (segment, centre) stop, so the iteration ends.
-fn snap_round(segments: Vec<Labelled>) -> Result<Vec<Labelled>, YinError> {
-    let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
-    let mut forced: Vec<BTreeSet<G>> = vec![BTreeSet::new(); segments.len()];
-    loop {
-        let pixels = RTree::bulk_load(hot.iter().map(|&(x, y)| [x, y]).collect());
-        let mut owner = Vec::new();
-        let mut fragments = Vec::new();
-        for (k, &(s, label)) in segments.iter().enumerate() {
-            for f in reroute(s, &pixels, &forced[k]) {
+/// The fragments as edges in grid units.
+fn unit_edges(fragments: &[Labelled]) -> Vec<Edge<Float>> {
+    fragments
+        .iter()
+        .map(|&((a, b), _)| (unit(a), unit(b)))
+        .collect()
+}
+
+/// Snap rounding (Hobby 1999; Guibas and Marimont 1998) of grid segments: each segment is
+/// rerouted, in order along it, through the centres of the hot pixels it meets — the pixels of
+/// the segments' endpoints and of their crossings, found by one exact sweep — which leaves no
+/// two fragments crossing. Where two fragments still cross (half-open pixels, see
+/// [`meets_pixel`]), [`Snap::force`] adds the pixel of their crossing and forces it into both
+/// paths where their segments do not meet it; paths stay monotone along their segments and
+/// every such round adds a new (segment, centre) stop, so the iteration ends.
+struct Snap {
+    segments: Vec<Labelled>,
+    hot: BTreeSet<G>,
+    forced: Vec<BTreeSet<G>>,
+}
+
+impl Snap {
+    /// The hot pixels of `segments`: endpoints and the pixels of crossings.
+    fn new(segments: Vec<Labelled>) -> Snap {
+        let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
+        let exact: Vec<Edge<Rational>> = segments
+            .iter()
+            .map(|&((a, b), _)| (Point::int(a.0, a.1), Point::int(b.0, b.1)))
+            .collect();
+        hot.extend(
+            crossing_pairs(&exact)
+                .into_iter()
+                .map(|(i, j)| crossing_pixel(segments[i].0, segments[j].0)),
+        );
+        let forced = vec![BTreeSet::new(); segments.len()];
+        Snap {
+            segments,
+            hot,
+            forced,
+        }
+    }
+
+    /// The fragments of all segments (with their labels) and the segment each comes from.
+    fn fragments(&self) -> (Vec<Labelled>, Vec<usize>) {
+        let pixels = RTree::bulk_load(self.hot.iter().map(|&(x, y)| [x, y]).collect());
+        let (mut fragments, mut owner) = (Vec::new(), Vec::new());
+        for (k, &(s, label)) in self.segments.iter().enumerate() {
+            for f in reroute(s, &pixels, &self.forced[k]) {
                 owner.push(k);
                 fragments.push((f, label));
             }
         }
-        let crossings = crossing_pairs(&fragments);
-        if crossings.is_empty() {
-            return Ok(fragments);
-        }
+        (fragments, owner)
+    }
+
+    /// The pairs `crossed` of `fragments` (from segments `owner`) cross: their pixels become
+    /// hot and are forced into both segments' paths.
+    fn force(
+        &mut self,
+        fragments: &[Labelled],
+        owner: &[usize],
+        crossed: &[(usize, usize)],
+    ) -> Result<(), YinError> {
         let mut progress = false;
-        for &(i, j) in &crossings {
+        for &(i, j) in crossed {
             let c = crossing_pixel(fragments[i].0, fragments[j].0);
-            progress |= hot.insert(c);
+            progress |= self.hot.insert(c);
             for k in [owner[i], owner[j]] {
-                progress |= inside_projection(segments[k].0, c) && forced[k].insert(c);
+                progress |= inside_projection(self.segments[k].0, c) && self.forced[k].insert(c);
             }
         }
-        if !progress {
-            // Cannot happen for a crossing strictly inside two fragments; never loop forever.
-            let (i, j) = crossings[0];
-            let c = crossing_pixel(fragments[i].0, fragments[j].0);
-            return Err(YinError::SnapStalled {
-                point: format!("{c:?}"),
-            });
+        if progress {
+            return Ok(());
         }
+        // Cannot happen for a crossing strictly inside two fragments; never loop forever.
+        let (i, j) = crossed[0];
+        let c = crossing_pixel(fragments[i].0, fragments[j].0);
+        Err(YinError::SnapStalled {
+            point: format!("{c:?}"),
+        })
     }
 }
 
@@ -262,19 +311,6 @@ fn meets_pixel(a: G, b: G, c: G) -> bool {
     !(s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0))
 }
 
-/// Pairs of fragments whose interiors cross properly.
-fn crossing_pairs(segments: &[Labelled]) -> Vec<(usize, usize)> {
-    let edges: Vec<Edge<Float>> = segments
-        .iter()
-        .map(|&((a, b), _)| (unit(a), unit(b)))
-        .collect();
-    intersections(&edges, &Default::default(), |_, _| true)
-        .into_iter()
-        .filter(|(_, _, c)| matches!(c, Contact::Crossing(_)))
-        .map(|(i, j, _)| (i, j))
-        .collect()
-}
-
 /// The pixel (nearest grid point, ties up) of the crossing of the lines `ab` and `cd`, exactly:
 /// in `i128` when it cannot overflow, else in big integers (coordinates below 2⁵² need up to
 /// 160 bits).
@@ -317,6 +353,51 @@ where
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    /// The fragments of `snap` and the pairs of them that its arrangement reports crossing.
+    fn crossed(snap: &Snap) -> (Vec<Labelled>, Vec<usize>, Vec<(usize, usize)>) {
+        let (fragments, owner) = snap.fragments();
+        let crossed = arrange(&unit_edges(&fragments), &Tolerance::default()).crossed;
+        (fragments, owner, crossed)
+    }
+
+    #[test]
+    fn hot_pixels_of_crossings_leave_no_crossing_and_a_missing_one_is_forced() {
+        // Two crossing segments and a third one crossing both.
+        let segments = vec![
+            (((0, 0), (10, 3)), 0),
+            (((0, 4), (9, 0)), 1),
+            (((5, -2), (4, 7)), 0),
+        ];
+        let mut snap = Snap::new(segments);
+        let pixels = [(5, 2), (5, 1)];
+        assert!(
+            pixels.iter().all(|c| snap.hot.contains(c)),
+            "{:?}",
+            snap.hot
+        );
+        assert!(crossed(&snap).2.is_empty());
+        // Without the crossing pixels the fragments cross: the arrangement reports them and
+        // `force` adds their pixels until none is left (one may do: the third segment passes
+        // through the first crossing's pixel).
+        snap.hot.retain(|c| !pixels.contains(c));
+        let mut rounds = 0;
+        loop {
+            let (fragments, owner, crossed) = crossed(&snap);
+            if crossed.is_empty() {
+                break;
+            }
+            snap.force(&fragments, &owner, &crossed).unwrap();
+            rounds += 1;
+            assert!(rounds <= 3, "no progress");
+        }
+        assert!(rounds >= 1);
+        assert!(
+            pixels.iter().any(|c| snap.hot.contains(c)),
+            "{:?}",
+            snap.hot
+        );
+    }
 
     #[test]
     fn a_segment_meets_the_pixels_it_passes_through() {
