@@ -82,29 +82,15 @@ fn collinear<N: Num>(a: &Point<N>, b: &Point<N>, c: &Point<N>, d: &Point<N>) -> 
     }
 }
 
-/// The intersection of the lines `ab` and `cd` (not parallel): `a + t (b − a)` with
-/// `t = ((c − a) × (d − c)) / ((b − a) × (d − c))`.
+/// The intersection of the lines `ab` and `cd` (not parallel), by [`Num::crossing`].
 pub(crate) fn crossing_point<N: Num>(
     a: &Point<N>,
     b: &Point<N>,
     c: &Point<N>,
     d: &Point<N>,
 ) -> Point<N> {
-    let cross = |ux: N, uy: N, vx: N, vy: N| ux * vy - uy * vx;
-    let (dcx, dcy) = (d.x.clone() - c.x.clone(), d.y.clone() - c.y.clone());
-    let num = cross(
-        c.x.clone() - a.x.clone(),
-        c.y.clone() - a.y.clone(),
-        dcx.clone(),
-        dcy.clone(),
-    );
-    let den = cross(
-        b.x.clone() - a.x.clone(),
-        b.y.clone() - a.y.clone(),
-        dcx,
-        dcy,
-    );
-    a.lerp(b, &(num / den))
+    let [x, y] = N::crossing([&a.x, &a.y], [&b.x, &b.y], [&c.x, &c.y], [&d.x, &d.y]);
+    Point::new(x, y)
 }
 
 #[cfg(test)]

@@ -9,7 +9,7 @@ use num_traits::{One, Signed, Zero};
 
 /// gcd(|a|, |b|): in `u128` when both fit (no allocation), else by Lehmer's algorithm
 /// (`dashu-int`), the operands handed over as machine words.
-fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
+pub(super) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
     use num_integer::Integer;
     use num_traits::ToPrimitive;
     let (a, b) = (a.magnitude(), b.magnitude());
@@ -51,7 +51,7 @@ fn from_dashu(x: &dashu_int::UBig) -> BigUint {
 }
 
 /// `x / g` for a divisor `g` of `x`, skipping the division by one.
-fn exact_div(x: &BigInt, g: &BigInt) -> BigInt {
+pub(super) fn exact_div(x: &BigInt, g: &BigInt) -> BigInt {
     if g.is_one() {
         x.clone()
     } else {

@@ -350,6 +350,41 @@ fn integers<const K: usize>(p: [&Rational; K], bound: i64) -> Option<[i128; K]> 
     Some(out)
 }
 
+/// The crossing of the lines `ab` and `cd` (not parallel) without a gcd per operation: each point in homogeneous integers (x·d_x·d_y, y·d_x·d_y, d_x·d_y), each line
+/// the cross product of its two points divided by the gcd of its three coefficients (a line
+/// through cut points of an input edge comes back to that edge's own coefficients, however big
+/// the cut points' numbers), the crossing the cross product of the two lines, and one reduction
+/// per coordinate.
+fn homogeneous_crossing(
+    a: [&Rational; 2],
+    b: [&Rational; 2],
+    c: [&Rational; 2],
+    d: [&Rational; 2],
+) -> [Rational; 2] {
+    let point = |p: [&Rational; 2]| {
+        let (x, y) = (p[0].big(), p[1].big());
+        [
+            x.numer() * y.denom(),
+            y.numer() * x.denom(),
+            x.denom() * y.denom(),
+        ]
+    };
+    let cross = |u: &[BigInt; 3], v: &[BigInt; 3]| {
+        [
+            &u[1] * &v[2] - &u[2] * &v[1],
+            &u[2] * &v[0] - &u[0] * &v[2],
+            &u[0] * &v[1] - &u[1] * &v[0],
+        ]
+    };
+    let line = |p: [&Rational; 2], q: [&Rational; 2]| {
+        let l = cross(&point(p), &point(q));
+        let g = big::gcd(&big::gcd(&l[0], &l[1]), &l[2]);
+        l.map(|v| big::exact_div(&v, &g))
+    };
+    let [x, y, w] = cross(&line(a, b), &line(c, d));
+    [Rational::new(x, w.clone()), Rational::new(y, w)]
+}
+
 /// The coordinates of a point as `f64`s if each is one exactly (a small value with at most 53
 /// significant bits over a power of two: what `f64` input reads as), for the dyadic fast path of
 /// the orientation predicates: Shewchuk's adaptive arithmetic on the `f64`s (`robust`), exact
@@ -420,6 +455,10 @@ impl Num for Rational {
             Repr::Big(b) if b.value.is_positive() => Ordering::Greater,
             Repr::Big(_) => Ordering::Less,
         }
+    }
+
+    fn crossing(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], d: [&Self; 2]) -> [Self; 2] {
+        homogeneous_crossing(a, b, c, d)
     }
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
@@ -604,6 +643,43 @@ mod tests {
     fn plain_orient(a: [&BigRational; 2], b: [&BigRational; 2], c: [&BigRational; 2]) -> Ordering {
         let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
         det.cmp(&BigRational::zero())
+    }
+
+    /// A value of any size: `n / d` raised to the power `k` (up to ~400 bits in numerator and
+    /// denominator), so that crossings of crossings occur.
+    fn sized(n: i64, d: i64, k: u32) -> BigRational {
+        BigRational::new(n.into(), d.into()).pow(k as i32)
+    }
+
+    proptest::proptest! {
+        /// The homogeneous crossing construction equals the plain rational formula
+        /// a + t (b − a), t = ((c − a) × (d − c)) / ((b − a) × (d − c)), on coordinates from
+        /// small integers to ~400-bit fractions, including lines through a common point (whose
+        /// line coefficients share big factors) and points on one line scaled apart.
+        #[test]
+        fn homogeneous_crossing_is_the_plain_rational_crossing(
+            v in proptest::collection::vec((-1000i64..1000, 1i64..1000, 1u32..8), 8),
+            shared in proptest::bool::ANY,
+        ) {
+            let mut e: Vec<BigRational> = v.iter().map(|&(n, d, k)| sized(n, d, k)).collect();
+            if shared {
+                // c = a: both lines through one point, so their coefficients share its size.
+                e[4] = e[0].clone();
+                e[5] = e[1].clone();
+            }
+            let p = |i: usize| [&e[i], &e[i + 1]];
+            let (a, b, c, d) = (p(0), p(2), p(4), p(6));
+            let cross = |u: [BigRational; 2], w: [BigRational; 2]| &u[0] * &w[1] - &u[1] * &w[0];
+            let diff = |p: [&BigRational; 2], q: [&BigRational; 2]| [p[0] - q[0], p[1] - q[1]];
+            let den = cross(diff(b, a), diff(d, c));
+            proptest::prop_assume!(!den.is_zero());
+            let t = cross(diff(c, a), diff(d, c)) / den;
+            let want = [a[0] + &t * (b[0] - a[0]), a[1] + &t * (b[1] - a[1])];
+            let r: Vec<Rational> = e.iter().cloned().map(Rational::from).collect();
+            let q = |i: usize| [&r[i], &r[i + 1]];
+            let got = Rational::crossing(q(0), q(2), q(4), q(6));
+            proptest::prop_assert_eq!(got, want.map(Rational::from));
+        }
     }
 
     /// `v` moved by `k` units in the last place.
