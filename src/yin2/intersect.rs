@@ -20,7 +20,8 @@ pub type Edge<N> = (Point<N>, Point<N>);
 /// MRS-a (seed 002 §1.3): meeting pairs `i < j` with `wanted`, by `(i, j)`, with their contact.
 ///
 /// Exact mode: Bentley–Ottmann, O((n + I) log n). It keeps its status ordered through the
-/// crossing points it constructs, so it needs them exact; with rounded ones (float mode) it can
+/// crossing points (held implicitly, decided by filtered predicates, exact where the filter
+/// cannot decide: [`super::vertex`]), so it needs them exact; with rounded ones (float mode) it can
 /// miss a pair, so float mode takes the pairs of edges whose boxes meet ([`by_extents`]), and,
 /// when those exceed [`BOX_PAIRS_PER_EDGE`] per edge (long slanted edges side by side: their
 /// number grows like n²), the meeting pairs of the edges' exact images by Bentley–Ottmann
