@@ -157,7 +157,9 @@ pub trait Num:
         0.0
     }
 
-    /// The crossing point of the lines `ab` and `cd` (not parallel): [`lerp_crossing`].
+    /// The crossing point of the lines `ab` and `cd` (not parallel). Default: `a + t (b − a)`
+    /// with `t = ((c − a) × (d − c)) / ((b − a) × (d − c))`; [`Rational`] computes it in
+    /// homogeneous integers with one reduction per coordinate.
     fn crossing(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], d: [&Self; 2]) -> [Self; 2] {
         lerp_crossing(a, b, c, d)
     }
