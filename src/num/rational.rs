@@ -645,6 +645,30 @@ mod tests {
         det.cmp(&BigRational::zero())
     }
 
+    proptest::proptest! {
+        /// `orient3d` (f64 filter, i128, dyadic and rational fallbacks) agrees with plain
+        /// rational arithmetic when d is on the plane through a, b, c as rounded to f64 and
+        /// then moved a few ulps (the filter defers; the dyadic path decides).
+        #[test]
+        fn filtered_orient3d_is_plain_rational_near_a_plane(
+            a in proptest::array::uniform3(-1e3f64..1e3),
+            u in proptest::array::uniform3(-1e3f64..1e3),
+            v in proptest::array::uniform3(-1e3f64..1e3),
+            st in (0.0f64..1.0, 0.0f64..1.0),
+            k in proptest::array::uniform3(-3i64..=3),
+        ) {
+            let b = [0, 1, 2].map(|i| a[i] + u[i]);
+            let c = [0, 1, 2].map(|i| a[i] + v[i]);
+            let d = [0, 1, 2].map(|i| ulps(a[i] + st.0 * u[i] + st.1 * v[i], k[i]));
+            let [ea, eb, ec, ed] = [a, b, c, d].map(|p| p.map(exact));
+            let [ra, rb, rc, rd] = [&ea, &eb, &ec, &ed].map(|p| p.clone().map(Rational::from));
+            proptest::prop_assert_eq!(
+                Rational::orient3d(ra.each_ref(), rb.each_ref(), rc.each_ref(), rd.each_ref(), &()),
+                exact_orient3d(ea.each_ref(), eb.each_ref(), ec.each_ref(), ed.each_ref())
+            );
+        }
+    }
+
     /// A value of any size: `n / d` raised to the power `k` (up to ~400 bits in numerator and
     /// denominator), so that crossings of crossings occur.
     fn sized(n: i64, d: i64, k: u32) -> BigRational {
