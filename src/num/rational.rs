@@ -470,12 +470,12 @@ impl Num for Rational {
                 return Ordering::Equal;
             }
             let i = |p: [&Self; 2]| integers(p, 1 << 61);
-            let f = |p: [&Self; 2]| dyadic(p);
+            let dy = |p: [&Self; 2]| dyadic(p);
             match (i(a), i(b), i(c)) {
                 (Some(a), Some(b), Some(c)) => {
                     exact_orient(a.each_ref(), b.each_ref(), c.each_ref())
                 }
-                _ => match (f(a), f(b), f(c)) {
+                _ => match (dy(a), dy(b), dy(c)) {
                     (Some(a), Some(b), Some(c)) => exact_orient_f64(a, b, c),
                     _ => fraction_free_orient(a, b, c),
                 },
@@ -487,12 +487,12 @@ impl Num for Rational {
         let f = |p: [&Self; 3]| p.map(approx);
         filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| {
             let i = |p: [&Self; 3]| integers(p, 1 << 40);
-            let f = |p: [&Self; 3]| dyadic(p);
+            let dy = |p: [&Self; 3]| dyadic(p);
             match (i(a), i(b), i(c), i(d)) {
                 (Some(a), Some(b), Some(c), Some(d)) => {
                     exact_orient3d(a.each_ref(), b.each_ref(), c.each_ref(), d.each_ref())
                 }
-                _ => match (f(a), f(b), f(c), f(d)) {
+                _ => match (dy(a), dy(b), dy(c), dy(d)) {
                     (Some(a), Some(b), Some(c), Some(d)) => exact_orient3d_f64(a, b, c, d),
                     _ => exact_orient3d(a, b, c, d),
                 },

@@ -629,6 +629,14 @@ impl<'a, N: Num> Sweep<'a, N> {
             .collect();
         let ahead = |a: usize, b: usize| p.orient_along(seg[a].0, seg[a].1, seg[b].1, ctx);
         sort_robust(&mut next, &mut |a, b| ahead(a, b).reverse().then(a.cmp(&b)));
+        // For the arrangement: which neighbours leave p in the same direction (one group).
+        let same: Vec<bool> = match self.record {
+            Some(_) => next
+                .windows(2)
+                .map(|w| ahead(w[0], w[1]) == Ordering::Equal)
+                .collect(),
+            None => Vec::new(),
+        };
         let (lower, upper) = (status.last(below), status.first(above));
         let mut middle = NIL;
         for &s in &next {
@@ -645,12 +653,6 @@ impl<'a, N: Num> Sweep<'a, N> {
             _ => self.check(lower, upper, &p),
         }
         if let Some(r) = &mut self.record {
-            let (seg, ctx) = (&self.seg, self.ctx);
-            let ahead = |a: usize, b: usize| p.orient_along(seg[a].0, seg[a].1, seg[b].1, ctx);
-            let same: Vec<bool> = next
-                .windows(2)
-                .map(|w| ahead(w[0], w[1]) == Ordering::Equal)
-                .collect();
             r.open(p, &next, lower, &same);
         }
     }
