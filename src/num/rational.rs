@@ -14,6 +14,7 @@ use std::cmp::Ordering;
 use std::fmt;
 use std::hash::{Hash, Hasher};
 use std::ops::{Add, Div, Mul, Neg, Sub};
+use std::sync::Arc;
 
 /// Exact rational coordinates (the default backend), always in lowest terms with a positive
 /// denominator. A value whose numerator and denominator are below 2⁶² in magnitude is stored
@@ -32,8 +33,10 @@ pub struct Rational(Repr);
 enum Repr {
     /// `n / d` with |n| < 2⁶² and 0 < d < 2⁶², in lowest terms.
     Small(i64, i64),
-    /// Any other value, in lowest terms (boxed: small values stay three words).
-    Big(Box<Big>),
+    /// Any other value, in lowest terms, shared (small values stay three words, and a clone
+    /// of a big one, as every vertex handed from one operation to the next is, allocates
+    /// nothing).
+    Big(Arc<Big>),
 }
 
 /// A big value with its `f64` approximation, computed once: the filters of `cmp` and the
@@ -50,7 +53,7 @@ impl Big {
     /// divided, so within 3 ulps; NaN when either is out of `f64`'s range, which the filters
     /// reject. (A finite numerator over an overflowing denominator would read as 0 and decide
     /// orders wrongly: found by fuzzing, pinned in tests/fuzz_regressions.rs.)
-    fn boxed(value: BigRational) -> Box<Big> {
+    fn boxed(value: BigRational) -> Arc<Big> {
         let n = ToPrimitive::to_f64(value.numer()).unwrap_or(f64::NAN);
         let d = ToPrimitive::to_f64(value.denom()).unwrap_or(f64::NAN);
         let approx = if n.is_finite() && d.is_finite() {
@@ -58,7 +61,7 @@ impl Big {
         } else {
             f64::NAN
         };
-        Box::new(Big { value, approx })
+        Arc::new(Big { value, approx })
     }
 }
 
@@ -296,13 +299,10 @@ impl Neg for Rational {
     fn neg(self) -> Rational {
         match self.0 {
             Repr::Small(n, d) => Rational(Repr::Small(-n, d)),
-            Repr::Big(b) => {
-                let Big { value, approx } = *b;
-                Rational(Repr::Big(Box::new(Big {
-                    value: -value,
-                    approx: -approx,
-                })))
-            }
+            Repr::Big(b) => Rational(Repr::Big(Arc::new(Big {
+                value: -&b.value,
+                approx: -b.approx,
+            }))),
         }
     }
 }
