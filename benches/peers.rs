@@ -18,7 +18,9 @@
 //! cases over 50 ms are measured with 10 flat samples of one iteration. After a skipped or
 //! single case, larger sizes of it (and the join after its meet) are not attempted; nor is a
 //! numeric size whose time, predicted from the last smaller one as growing like size^1.5
-//! (W6: size², the crossings of the copies), is over 30 s. Times are the process's CPU time, all threads (see peers/cpu_time.rs); CGAL's
+//! (W6: size², the crossings of the copies), is over 30 s. Times are the process's CPU time, all
+//! threads (see peers/cpu_time.rs), with W6's `join_all` on a pool of one thread (the issue's
+//! single-thread comparison; rayon's idle thread would add its waiting); CGAL's
 //! (`# cgal` lines) are the harness's process CPU time of the operation alone, best of 3.
 //! The data files are read from ../shared/data/2d beside the repository.
 
@@ -770,11 +772,17 @@ fn w6_union(r: &mut Runner, size: usize) {
         .iter()
         .map(|c| common::exact(&vec![c.clone()]))
         .collect();
+    // One thread, as the table measures: the CPU time of rayon's second thread
+    // waiting for work is not the operation's.
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a one-thread pool");
     r.case(
         group,
         "exact_join_all",
         size,
-        || YinSet2::join_all(&sets),
+        || one.install(|| YinSet2::join_all(&sets)),
         |y| checked_by_cgal(y, by_cgal.as_ref()),
     );
     let fold = || sets.iter().skip(1).fold(sets[0].clone(), |u, s| u.join(s));
@@ -799,7 +807,7 @@ fn w6_union(r: &mut Runner, size: usize) {
         group,
         "float_join_all",
         size,
-        || YinSet2::join_all(&sets),
+        || one.install(|| YinSet2::join_all(&sets)),
         show_set,
     );
     let fold = || sets.iter().skip(1).fold(sets[0].clone(), |u, s| u.join(s));

@@ -16,6 +16,13 @@ pub(super) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
     if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
         return BigInt::from(x.gcd(&y));
     }
+    // gcd(2^k, m) = 2^min(k, tz(m)): the denominators of dyadic values (what f64 input reads
+    // as) are powers of two, and their sums and products stay dyadic.
+    if let (Some(s), Some(t)) = (a.trailing_zeros(), b.trailing_zeros()) {
+        if a.bits() == s + 1 || b.bits() == t + 1 {
+            return BigInt::one() << s.min(t);
+        }
+    }
     let g = dashu_int::ops::Gcd::gcd(&to_dashu(a), &to_dashu(b));
     BigInt::from_biguint(Sign::Plus, from_dashu(&g))
 }
@@ -116,4 +123,33 @@ pub(super) fn div(x: &BigRational, y: &BigRational) -> BigRational {
         BigRational::new_raw(d.clone(), c.clone())
     };
     mul(x, &reciprocal)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_integer::Integer;
+
+    proptest::proptest! {
+        /// `gcd` equals num-integer's gcd on big operands of every shape its paths take: a power
+        /// of two against anything (the dyadic path), two values with common factors of two and
+        /// odd parts (Lehmer's), and zeros.
+        #[test]
+        fn gcd_is_the_gcd(
+            odd in proptest::collection::vec(proptest::num::u64::ANY, 1..5),
+            other in proptest::collection::vec(proptest::num::u64::ANY, 0..5),
+            shifts in (0u32..300, 0u32..300),
+            power in proptest::bool::ANY,
+            negative in proptest::bool::ANY,
+        ) {
+            let number = |words: &[u64]| {
+                BigInt::from_biguint(Sign::Plus, BigUint::new(words.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]).collect()))
+            };
+            let a = if power { BigInt::one() } else { number(&odd) } << shifts.0;
+            let b = number(&other) << shifts.1;
+            let b = if negative { -b } else { b };
+            proptest::prop_assert_eq!(gcd(&a, &b), a.gcd(&b));
+            proptest::prop_assert_eq!(gcd(&b, &a), a.gcd(&b));
+        }
+    }
 }
