@@ -41,10 +41,11 @@ pub(crate) fn intersect<N: Num>(
         return None;
     }
     // Both meet the line L where the planes meet; order points along L's dominant axis.
-    let axis = dominant_axis(&normal(t[0], t[1], t[2]).cross(&normal(s[0], s[1], s[2])));
+    let (nt, ns) = (normal(t[0], t[1], t[2]), normal(s[0], s[1], s[2]));
+    let axis = dominant_axis(&nt.cross(&ns));
     let key = |p: &Point3<N>| p.coord(axis).clone();
-    let it = section(t, s, &t_sides, axis);
-    let is = section(s, t, &s_side, axis);
+    let it = section(t, (&ns, s[0]), &t_sides, axis);
+    let is = section(s, (&nt, t[0]), &s_side, axis);
     let lo = if key(&it.0) >= key(&is.0) {
         &it.0
     } else {
@@ -94,16 +95,16 @@ fn proper(o: &[Ordering; 3]) -> bool {
     o.contains(&Ordering::Greater) && o.contains(&Ordering::Less)
 }
 
-/// The segment in which the plane of `other` meets `t` (whose vertices have sides `sides`), as
-/// its two ends ordered along coordinate `axis` (equal for a single point).
+/// The segment in which the plane through `origin` with normal `n` meets `t` (whose vertices
+/// have sides `sides`), as its two ends ordered along coordinate `axis` (equal for a single
+/// point).
 fn section<N: Num>(
     t: [&Point3<N>; 3],
-    other: [&Point3<N>; 3],
+    (n, origin): (&Point3<N>, &Point3<N>),
     sides: &[Ordering; 3],
     axis: usize,
 ) -> (Point3<N>, Point3<N>) {
-    let n = normal(other[0], other[1], other[2]);
-    let value = |p: &Point3<N>| n.dot(&p.sub(other[0]));
+    let value = |p: &Point3<N>| n.dot(&p.sub(origin));
     let mut pts: Vec<Point3<N>> = Vec::with_capacity(2);
     for i in 0..3 {
         let j = (i + 1) % 3;
