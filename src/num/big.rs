@@ -143,7 +143,8 @@ mod tests {
             negative in proptest::bool::ANY,
         ) {
             let number = |words: &[u64]| {
-                BigInt::from_biguint(Sign::Plus, BigUint::new(words.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]).collect()))
+                let halves = words.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]);
+                BigInt::from_biguint(Sign::Plus, BigUint::new(halves.collect()))
             };
             let a = if power { BigInt::one() } else { number(&odd) } << shifts.0;
             let b = number(&other) << shifts.1;
