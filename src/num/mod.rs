@@ -161,7 +161,15 @@ pub trait Num:
     /// with `t = ((c − a) × (d − c)) / ((b − a) × (d − c))`; [`Rational`] computes it in
     /// homogeneous integers with one reduction per coordinate.
     fn crossing(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], d: [&Self; 2]) -> [Self; 2] {
-        lerp_crossing(a, b, c, d)
+        let cross =
+            |u: [Self; 2], v: [Self; 2]| u[0].clone() * v[1].clone() - u[1].clone() * v[0].clone();
+        let diff = |p: [&Self; 2], q: [&Self; 2]| {
+            [p[0].clone() - q[0].clone(), p[1].clone() - q[1].clone()]
+        };
+        let (ab, dc) = (diff(b, a), diff(d, c));
+        let t = cross(diff(c, a), dc.clone()) / cross(ab.clone(), dc);
+        let [x, y] = ab;
+        [a[0].clone() + t.clone() * x, a[1].clone() + t * y]
     }
 
     /// The integer 0.
@@ -173,17 +181,6 @@ pub trait Num:
     fn half(&self) -> Self {
         self.clone() / Self::from_i64(2)
     }
-}
-
-/// The crossing point of the lines `ab` and `cd` (not parallel): `a + t (b − a)` with
-/// `t = ((c − a) × (d − c)) / ((b − a) × (d − c))`.
-pub(crate) fn lerp_crossing<N: Num>(a: [&N; 2], b: [&N; 2], c: [&N; 2], d: [&N; 2]) -> [N; 2] {
-    let cross = |u: [N; 2], v: [N; 2]| u[0].clone() * v[1].clone() - u[1].clone() * v[0].clone();
-    let diff = |p: [&N; 2], q: [&N; 2]| [p[0].clone() - q[0].clone(), p[1].clone() - q[1].clone()];
-    let (ab, dc) = (diff(b, a), diff(d, c));
-    let t = cross(diff(c, a), dc.clone()) / cross(ab.clone(), dc);
-    let [x, y] = ab;
-    [a[0].clone() + t.clone() * x, a[1].clone() + t * y]
 }
 
 /// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within 3 ulps of

@@ -299,10 +299,14 @@ impl Neg for Rational {
     fn neg(self) -> Rational {
         match self.0 {
             Repr::Small(n, d) => Rational(Repr::Small(-n, d)),
-            Repr::Big(b) => Rational(Repr::Big(Arc::new(Big {
-                value: -&b.value,
-                approx: -b.approx,
-            }))),
+            Repr::Big(b) => {
+                // The value itself when no other clone holds it.
+                let Big { value, approx } = Arc::unwrap_or_clone(b);
+                Rational(Repr::Big(Arc::new(Big {
+                    value: -value,
+                    approx: -approx,
+                })))
+            }
         }
     }
 }
@@ -350,11 +354,11 @@ fn integers<const K: usize>(p: [&Rational; K], bound: i64) -> Option<[i128; K]> 
     Some(out)
 }
 
-/// The crossing of the lines `ab` and `cd` (not parallel) without a gcd per operation: each point in homogeneous integers (x·d_x·d_y, y·d_x·d_y, d_x·d_y), each line
-/// the cross product of its two points divided by the gcd of its three coefficients (a line
-/// through cut points of an input edge comes back to that edge's own coefficients, however big
-/// the cut points' numbers), the crossing the cross product of the two lines, and one reduction
-/// per coordinate.
+/// The crossing of the lines `ab` and `cd` (not parallel) without a gcd per operation: each
+/// point in homogeneous integers (x·d_x·d_y, y·d_x·d_y, d_x·d_y), each line the cross product
+/// of its two points divided by the gcd of its three coefficients (a line through cut points of
+/// an input edge comes back to that edge's own coefficients, however big the cut points'
+/// numbers), the crossing the cross product of the two lines, and one reduction per coordinate.
 fn homogeneous_crossing(
     a: [&Rational; 2],
     b: [&Rational; 2],
@@ -470,12 +474,11 @@ impl Num for Rational {
                 return Ordering::Equal;
             }
             let i = |p: [&Self; 2]| integers(p, 1 << 61);
-            let dy = |p: [&Self; 2]| dyadic(p);
             match (i(a), i(b), i(c)) {
                 (Some(a), Some(b), Some(c)) => {
                     exact_orient(a.each_ref(), b.each_ref(), c.each_ref())
                 }
-                _ => match (dy(a), dy(b), dy(c)) {
+                _ => match (dyadic(a), dyadic(b), dyadic(c)) {
                     (Some(a), Some(b), Some(c)) => exact_orient_f64(a, b, c),
                     _ => fraction_free_orient(a, b, c),
                 },
@@ -487,12 +490,11 @@ impl Num for Rational {
         let f = |p: [&Self; 3]| p.map(approx);
         filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| {
             let i = |p: [&Self; 3]| integers(p, 1 << 40);
-            let dy = |p: [&Self; 3]| dyadic(p);
             match (i(a), i(b), i(c), i(d)) {
                 (Some(a), Some(b), Some(c), Some(d)) => {
                     exact_orient3d(a.each_ref(), b.each_ref(), c.each_ref(), d.each_ref())
                 }
-                _ => match (dy(a), dy(b), dy(c), dy(d)) {
+                _ => match (dyadic(a), dyadic(b), dyadic(c), dyadic(d)) {
                     (Some(a), Some(b), Some(c), Some(d)) => exact_orient3d_f64(a, b, c, d),
                     _ => exact_orient3d(a, b, c, d),
                 },
