@@ -6,7 +6,7 @@
 //! conforming complex.
 
 use super::geom::{f64_box, in_triangle3, Chart};
-use super::tri::intersect;
+use super::tri::{intersect, meet_only_at};
 use super::triangulate::triangulate;
 use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
@@ -173,25 +173,26 @@ pub(crate) fn arrange<N: Num>(
 
 /// The shared vertices of triangles `i` and `j` if they are the whole intersection, decided
 /// without constructing anything: two triangles sharing an edge and not coplanar meet in that
-/// edge; two sharing one vertex meet only there if either one's other corners lie strictly on
-/// one side of the other's plane.
+/// edge; two sharing one vertex, as [`meet_only_at`] tells.
 fn shared_only<N: Num>(soup: &Soup<N>, i: usize, j: usize, ctx: &N::Ctx) -> Option<Vec<usize>> {
     let (t, s) = (soup.tris[i], soup.tris[j]);
     let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
-    let side = |tri: [usize; 3], other: [usize; 3]| -> Vec<Ordering> {
-        let [a, b, c] = tri.map(|v| &soup.points[v]);
-        other
+    // The two corners that follow the shared vertex `v` around a triangle.
+    let from = |tri: [usize; 3], v: usize| {
+        let k = tri
             .iter()
-            .filter(|v| !shared.contains(v))
-            .map(|&v| orient3d(a, b, c, &soup.points[v], ctx))
-            .collect()
+            .position(|&u| u == v)
+            .expect("v is a shared corner");
+        [1, 2].map(|d| &soup.points[tri[(k + d) % 3]])
     };
-    let one_side = |o: Vec<Ordering>| {
-        o.iter().all(|x| *x == Ordering::Greater) || o.iter().all(|x| *x == Ordering::Less)
-    };
-    let alone = match shared.len() {
-        2 => side(t, s)[0] != Ordering::Equal,
-        1 => one_side(side(t, s)) || one_side(side(s, t)),
+    let alone = match shared[..] {
+        [_, _] => {
+            let [a, b, c] = soup.corners(i);
+            s.iter()
+                .filter(|w| !shared.contains(w))
+                .all(|&w| orient3d(a, b, c, &soup.points[w], ctx) != Ordering::Equal)
+        }
+        [v] => meet_only_at(&soup.points[v], from(t, v), from(s, v), ctx),
         _ => false,
     };
     alone.then_some(shared)

@@ -34,8 +34,7 @@ pub(crate) fn exact_points<N: Num>(points: &[Point3<N>]) -> Vec<Point3<Rational>
 /// The boundary of a float set over its exact values: the same triangles, which form a valid
 /// boundary because float sets are valid exactly.
 pub(crate) fn exact_brep<N: Num>(b: &Brep<N>) -> Brep<Rational> {
-    Brep::assemble(exact_points(&b.points), b.tris.clone())
-        .unwrap_or_else(|e| panic!("a float set is valid exactly, yet: {e}"))
+    b.clone().map_points(exact_point)
 }
 
 /// The exact set of a float set's values ([`exact_brep`]).

@@ -37,7 +37,7 @@ pub(crate) fn intersect<N: Num>(
         return coplanar(t, s, ctx);
     }
     let t_sides = t_side(s, t, ctx);
-    if strictly_one_side(&t_sides) {
+    if strictly_one_side(&t_sides) || separated(t, s, &t_sides, &s_side, ctx) {
         return None;
     }
     // Both meet the line L where the planes meet; order points along L's dominant axis.
@@ -78,6 +78,62 @@ pub(crate) fn intersect<N: Num>(
             })
         }
     }
+}
+
+/// True if `t` and `s` are disjoint though each plane passes strictly between the other's
+/// vertices (`t_sides`: t's vertices against s's plane; `s_sides`: s's against t's; none on a
+/// plane): Devillers and Guigue's test (2002) from two orientations of input vertices, nothing
+/// constructed. Rotate each triangle to start at its vertex alone on its side, swap the other
+/// two of one so that each lone vertex lies above the other's plane; the sections of the two
+/// triangles on the planes' common line then overlap iff neither orientation is positive.
+fn separated<N: Num>(
+    t: [&Point3<N>; 3],
+    s: [&Point3<N>; 3],
+    t_sides: &[Ordering; 3],
+    s_sides: &[Ordering; 3],
+    ctx: &N::Ctx,
+) -> bool {
+    if t_sides.contains(&Ordering::Equal) || s_sides.contains(&Ordering::Equal) {
+        return false;
+    }
+    let lone = |o: &[Ordering; 3]| (0..3).find(|&i| o[(i + 1) % 3] == o[(i + 2) % 3]);
+    let (Some(i), Some(j)) = (lone(t_sides), lone(s_sides)) else {
+        return false; // all on one side: decided by the caller
+    };
+    let (p1, mut q1, mut r1) = (t[i], t[(i + 1) % 3], t[(i + 2) % 3]);
+    let (p2, mut q2, mut r2) = (s[j], s[(j + 1) % 3], s[(j + 2) % 3]);
+    if t_sides[i] == Ordering::Less {
+        std::mem::swap(&mut q2, &mut r2);
+    }
+    if s_sides[j] == Ordering::Less {
+        std::mem::swap(&mut q1, &mut r1);
+    }
+    orient3d(p1, q1, p2, q2, ctx) == Ordering::Greater
+        || orient3d(p1, r1, r2, p2, ctx) == Ordering::Greater
+}
+
+/// True if the triangles `vab` and `vcd`, which share the vertex `v`, are known to meet only
+/// there, from orientations of their vertices alone: if either's other two vertices lie
+/// strictly on one side of the other's plane; or, when each plane strictly separates the
+/// other's two, the triangles' sections on the planes' common line L are segments from v, which
+/// overlap iff they leave v the same way — iff cd crosses the plane of vab on b's side of the
+/// line va, which orient3d(v, a, c, d) tells against orient3d(v, a, b, c). False where it
+/// cannot tell (a vertex on a plane, or cd crossing that plane on the line va).
+pub(crate) fn meet_only_at<N: Num>(
+    v: &Point3<N>,
+    [a, b]: [&Point3<N>; 2],
+    [c, d]: [&Point3<N>; 2],
+    ctx: &N::Ctx,
+) -> bool {
+    let (sc, sd) = (orient3d(v, a, b, c, ctx), orient3d(v, a, b, d, ctx));
+    let (sa, sb) = (orient3d(v, c, d, a, ctx), orient3d(v, c, d, b, ctx));
+    let one_side = |x: Ordering, y: Ordering| x == y && x != Ordering::Equal;
+    if one_side(sc, sd) || one_side(sa, sb) {
+        return true;
+    }
+    let straddle =
+        |x: Ordering, y: Ordering| x != y && x != Ordering::Equal && y != Ordering::Equal;
+    straddle(sc, sd) && straddle(sa, sb) && orient3d(v, a, c, d, ctx) == sc
 }
 
 /// The sides of `s`'s vertices relative to the plane of `t`.
@@ -239,5 +295,70 @@ mod tests {
         let (a, b, c) = (p(0, 0, 0), p(2, 0, 0), p(0, 2, 0));
         assert!(intersect([&a, &b, &c], [&p(0, 0, 1), &p(2, 0, 1), &p(0, 2, 1)], &()).is_none());
         assert!(intersect([&a, &b, &c], [&p(5, 0, -1), &p(5, 0, 1), &p(6, 1, 0)], &()).is_none());
+    }
+
+    /// A point of the small lattice the properties draw from (many contacts and coplanarities).
+    fn lattice() -> impl proptest::strategy::Strategy<Value = Point3<Rational>> {
+        use proptest::prelude::*;
+        (-4i64..=4, -4i64..=4, -4i64..=4).prop_map(|(x, y, z)| p(x, y, z))
+    }
+
+    /// Whether the segment `pq` crosses the triangle `abc`, when orientations decide it
+    /// strictly (`None` for a touch): the ends on opposite sides of the plane and the line pq
+    /// on the same side of all three edges.
+    fn crosses([p, q]: [&Point3<Rational>; 2], [a, b, c]: [&Point3<Rational>; 3]) -> Option<bool> {
+        let o = |a, b, c, d| orient3d(a, b, c, d, &());
+        let (sp, sq) = (o(a, b, c, p), o(a, b, c, q));
+        let edges = [o(p, q, a, b), o(p, q, b, c), o(p, q, c, a)];
+        if sp == Ordering::Equal || sq == Ordering::Equal || edges.contains(&Ordering::Equal) {
+            return None;
+        }
+        Some(sp != sq && edges.iter().all(|e| *e == edges[0]))
+    }
+
+    proptest::proptest! {
+        /// Devillers and Guigue's construction-free test equals an independent one: triangles
+        /// in general position meet iff an edge of one crosses the other.
+        #[test]
+        fn separated_iff_no_edge_crosses(t in proptest::array::uniform3(lattice()),
+                                         s in proptest::array::uniform3(lattice())) {
+            let (t, s) = (t.each_ref(), s.each_ref());
+            let (s_sides, t_sides) = (t_side(t, s, &()), t_side(s, t, &()));
+            proptest::prop_assume!(!s_sides.contains(&Ordering::Equal));
+            proptest::prop_assume!(!t_sides.contains(&Ordering::Equal));
+            proptest::prop_assume!(!strictly_one_side(&s_sides) && !strictly_one_side(&t_sides));
+            let crossings: Option<Vec<bool>> = [(t, s), (s, t)]
+                .into_iter()
+                .flat_map(|(x, y)| (0..3).map(move |i| crosses([x[i], x[(i + 1) % 3]], y)))
+                .collect();
+            let Some(crossings) = crossings else { return Ok(()) };
+            proptest::prop_assert_eq!(separated(t, s, &t_sides, &s_sides, &()), !crossings.contains(&true));
+        }
+
+        /// The construction-free test of two triangles sharing a vertex equals the
+        /// constructed intersection: where it answers, the contact is the vertex alone.
+        #[test]
+        fn meet_only_at_is_the_constructed_contact(v in lattice(),
+                                                   ab in proptest::array::uniform2(lattice()),
+                                                   cd in proptest::array::uniform2(lattice())) {
+            let o = |a, b, c| orient3d(&v, a, b, c, &());
+            proptest::prop_assume!(o(&ab[0], &ab[1], &cd[0]) != Ordering::Equal
+                || o(&ab[0], &ab[1], &cd[1]) != Ordering::Equal);
+            proptest::prop_assume!(o(&cd[0], &cd[1], &ab[0]) != Ordering::Equal
+                || o(&cd[0], &cd[1], &ab[1]) != Ordering::Equal);
+            let contact = intersect([&v, &ab[0], &ab[1]], [&v, &cd[0], &cd[1]], &())
+                .expect("they share v");
+            let alone = contact.points == [v.clone()];
+            if meet_only_at(&v, ab.each_ref(), cd.each_ref(), &()) {
+                proptest::prop_assert!(alone);
+            } else {
+                // It says no only where a segment leaves v along both, or it cannot tell.
+                let (sc, sd) = (o(&ab[0], &ab[1], &cd[0]), o(&ab[0], &ab[1], &cd[1]));
+                let (sa, sb) = (o(&cd[0], &cd[1], &ab[0]), o(&cd[0], &cd[1], &ab[1]));
+                let decided = [sa, sb, sc, sd].iter().all(|x| *x != Ordering::Equal)
+                    && orient3d(&v, &ab[0], &cd[0], &cd[1], &()) != Ordering::Equal;
+                proptest::prop_assert!(!alone || !decided);
+            }
+        }
     }
 }
