@@ -83,13 +83,23 @@ pub(crate) enum ArrangeError<N> {
     Internal(String),
 }
 
-/// The pieces of the arrangement: each a triangle over `soup.points` (which gains the contact
-/// points), oriented as its parent, with the index of its parent triangle.
+/// The arrangement of a soup's triangles against each other.
+#[derive(Clone, Debug)]
+pub(crate) struct Arrangement {
+    /// The pieces: each a triangle over the soup's points, oriented as its parent, with the
+    /// index of its parent triangle.
+    pub pieces: Vec<([usize; 3], usize)>,
+    /// For each of the soup's points, true if two intersected triangles meet there (for
+    /// [`Pairs::Across`]: the points of each operand on the other's boundary).
+    pub contact: Vec<bool>,
+}
+
+/// The arrangement of the soup's triangles (`soup.points` gains the contact points).
 pub(crate) fn arrange<N: Num>(
     soup: &mut Soup<N>,
     pairs: Pairs,
     ctx: &N::Ctx,
-) -> Result<Vec<([usize; 3], usize)>, ArrangeError<N>> {
+) -> Result<Arrangement, ArrangeError<N>> {
     let n = soup.tris.len();
     let tree = RTree::bulk_load(
         (0..n)
@@ -168,7 +178,14 @@ pub(crate) fn arrange<N: Num>(
             pieces.push((piece, t));
         }
     }
-    Ok(pieces)
+    let mut on_contact = vec![false; soup.points.len()];
+    for v in contact {
+        on_contact[v] = true;
+    }
+    Ok(Arrangement {
+        pieces,
+        contact: on_contact,
+    })
 }
 
 /// The shared vertices of triangles `i` and `j` if they are the whole intersection, decided

@@ -3,7 +3,7 @@
 //! the pieces of each that lie in the other (coincident pieces: one copy if equally oriented,
 //! none if opposite), and paste the kept pieces into glued surfaces.
 
-use super::arrange::{arrange, Pairs, Soup};
+use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::float_meet;
 use super::geom::{f64_box, in_triangle3, plane_key};
@@ -76,13 +76,14 @@ impl<N: Num> YinSet3<N> {
                 soup.push(brep.corners(t), operand as u8);
             }
         }
-        let pieces = arrange(&mut soup, Pairs::Across, &ctx).map_err(|e| {
+        let arrangement = arrange(&mut soup, Pairs::Across, &ctx).map_err(|e| {
             Yin3Error::Internal(format!(
                 "the arrangement of a meet's operands failed: {e:?}"
             ))
         })?;
         let bounded = [a.bounded, b.bounded];
-        let sides = classify(&soup, &pieces, bounded, &ctx);
+        let sides = classify(&soup, &arrangement, bounded, &ctx);
+        let pieces = arrangement.pieces;
         let kept: Vec<[usize; 3]> = pieces
             .iter()
             .zip(&sides)
@@ -107,13 +108,18 @@ impl<N: Num> YinSet3<N> {
 }
 
 /// The side of every piece relative to the other operand. Membership is constant on patches
-/// (pieces of one operand joined across edges off the other's boundary): one ray per patch.
+/// (pieces of one operand joined across edges off the other's boundary): one ray per patch,
+/// from a vertex of the patch off the other's boundary where it has one (an input vertex,
+/// nothing constructed), else from a piece's centroid. Only a piece whose three vertices are
+/// contact points can lie on the other's boundary, and only an edge between two contact points
+/// can run along it.
 fn classify<N: Num>(
     soup: &Soup<N>,
-    pieces: &[([usize; 3], usize)],
+    arrangement: &Arrangement,
     bounded: [bool; 2],
     ctx: &N::Ctx,
 ) -> Vec<Side> {
+    let (pieces, contact) = (&arrangement.pieces, &arrangement.contact);
     let op = |i: usize| soup.operand[pieces[i].1] as usize;
     let trees: [TriBoxes; 2] = [0u8, 1].map(|o| {
         TriBoxes::new(
@@ -143,10 +149,11 @@ fn classify<N: Num>(
     let mut uf = UnionFind::new(pieces.len());
     for ((u, v), at) in &edges {
         let (pu, pv) = (&soup.points[*u], &soup.points[*v]);
-        // The midpoint is constructed only if the edge's box meets one of the other's.
+        // The midpoint is constructed only if both ends are contact points and the edge's box
+        // meets one of the other's.
         let mid = OnceCell::new();
         let off = |o: usize| {
-            !trees[o].meets(&f64_box([pu, pv]))
+            !(contact[*u] && contact[*v] && trees[o].meets(&f64_box([pu, pv])))
                 || on_operand(o, mid.get_or_init(|| pu.midpoint(pv))).is_none()
         };
         for o in 0..2 {
@@ -158,18 +165,22 @@ fn classify<N: Num>(
             }
         }
     }
+    // A vertex off the other's boundary for each patch that has one.
+    let mut off_vertex: HashMap<usize, usize> = HashMap::new();
+    for (i, (t, _)) in pieces.iter().enumerate() {
+        if let Some(&v) = t.iter().find(|&&v| !contact[v]) {
+            off_vertex.entry(uf.find(i)).or_insert(v);
+        }
+    }
     let mut memo: HashMap<usize, Side> = HashMap::new();
     (0..pieces.len())
         .map(|i| {
             let (t, parent) = &pieces[i];
             let o = op(i);
             let [a, b, c] = t.map(|v| &soup.points[v]);
-            // The centroid is constructed only if the piece's box meets one of the other's,
-            // or for the ray of a new patch.
-            let q = OnceCell::new();
-            let centroid = || q.get_or_init(|| Point3::centroid(a, b, c));
-            if trees[1 - o].meets(&f64_box([a, b, c])) {
-                if let Some(s) = on_operand(1 - o, centroid()) {
+            let all_contact = t.iter().all(|&v| contact[v]);
+            if all_contact && trees[1 - o].meets(&f64_box([a, b, c])) {
+                if let Some(s) = on_operand(1 - o, &Point3::centroid(a, b, c)) {
                     return if along(*parent) == along(s) {
                         Side::Same
                     } else {
@@ -179,7 +190,14 @@ fn classify<N: Num>(
             }
             let root = uf.find(i);
             *memo.entry(root).or_insert_with(|| {
-                let q = centroid();
+                let centroid;
+                let q = match off_vertex.get(&root) {
+                    Some(&v) => &soup.points[v],
+                    None => {
+                        centroid = Point3::centroid(a, b, c);
+                        &centroid
+                    }
+                };
                 let others = trees[1 - o].along_x(q).map(|s| soup.corners(s));
                 if winding(others, q, ctx) + i64::from(!bounded[1 - o]) == 1 {
                     Side::Inside

@@ -153,7 +153,7 @@ fn build<N: Num>(vertices: &[Point3<N>], faces: &[Vec<usize>]) -> Result<Brep<N>
             face_of.push(f);
         }
     }
-    let pieces = arrange(&mut soup, Pairs::All, &exact).map_err(|e| match e {
+    let arrangement = arrange(&mut soup, Pairs::All, &exact).map_err(|e| match e {
         ArrangeError::Clash {
             a,
             b,
@@ -169,6 +169,7 @@ fn build<N: Num>(vertices: &[Point3<N>], faces: &[Vec<usize>]) -> Result<Brep<N>
         }
         ArrangeError::Internal(m) => Yin3Error::Internal(m),
     })?;
+    let pieces = arrangement.pieces;
     let origin: Vec<usize> = pieces.iter().map(|(_, t)| face_of[*t]).collect();
     let tris: Vec<[usize; 3]> = pieces.into_iter().map(|(t, _)| t).collect();
     let brep = Brep::assemble(soup.points, tris).map_err(|e| e.renumber_faces(&origin))?;
