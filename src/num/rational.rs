@@ -139,6 +139,25 @@ impl Rational {
 
     /// The exact value of a finite `f64` (`None` for NaN and infinities).
     pub fn from_float(v: f64) -> Option<Rational> {
+        if v == 0.0 {
+            return Some(Rational::from_i64(0));
+        }
+        // v = ±m·2^e with m odd: small as m·2^e or m / 2^−e when that fits.
+        let bits = v.to_bits();
+        let raw_exp = ((bits >> 52) & 0x7ff) as i32;
+        let frac = bits & ((1 << 52) - 1);
+        if raw_exp != 0 && raw_exp != 0x7ff {
+            let m = frac | (1 << 52);
+            let tz = m.trailing_zeros();
+            let (m, e) = ((m >> tz) as i128, raw_exp - 1075 + tz as i32);
+            let m = if v < 0.0 { -m } else { m };
+            if (0..=8).contains(&e) {
+                return Some(lowest(m << e, 1));
+            }
+            if (-61..0).contains(&e) {
+                return Some(lowest(m, 1 << -e));
+            }
+        }
         BigRational::from_float(v).map(from_big)
     }
 
@@ -529,6 +548,21 @@ mod tests {
         assert_ne!(x, Rational::parse("0.1").unwrap());
         assert_eq!(Num::to_f64(&x), 0.1);
         assert!(Rational::from_f64(f64::NAN).is_err());
+    }
+
+    proptest::proptest! {
+        /// The exact value of an `f64` (small when it fits) is num-rational's, canonical form
+        /// included: on every bit pattern (subnormals and huge exponents) and on numbers of
+        /// moderate size, where the small path applies.
+        #[test]
+        fn from_float_is_the_exact_value(bits in proptest::num::u64::ANY, moderate in -1e6f64..1e6) {
+            for v in [f64::from_bits(bits), moderate, moderate.trunc() * 64.0] {
+                proptest::prop_assert_eq!(
+                    Rational::from_float(v),
+                    BigRational::from_float(v).map(Rational::from)
+                );
+            }
+        }
     }
 
     proptest::proptest! {
