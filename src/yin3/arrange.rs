@@ -6,7 +6,7 @@
 //! conforming complex.
 
 use super::geom::{f64_box, in_triangle3, Chart};
-use super::tri::{intersect, meet_only_at};
+use super::tri::{apart_across, intersect, meet_only_at};
 use super::triangulate::triangulate;
 use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
@@ -190,7 +190,8 @@ pub(crate) fn arrange<N: Num>(
 
 /// The shared vertices of triangles `i` and `j` if they are the whole intersection, decided
 /// without constructing anything: two triangles sharing an edge and not coplanar meet in that
-/// edge; two sharing one vertex, as [`meet_only_at`] tells.
+/// edge, and coplanar ones iff they lie on opposite sides of it; two sharing one vertex, as
+/// [`meet_only_at`] tells.
 fn shared_only<N: Num>(soup: &Soup<N>, i: usize, j: usize, ctx: &N::Ctx) -> Option<Vec<usize>> {
     let (t, s) = (soup.tris[i], soup.tris[j]);
     let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
@@ -203,11 +204,20 @@ fn shared_only<N: Num>(soup: &Soup<N>, i: usize, j: usize, ctx: &N::Ctx) -> Opti
         [1, 2].map(|d| &soup.points[tri[(k + d) % 3]])
     };
     let alone = match shared[..] {
-        [_, _] => {
-            let [a, b, c] = soup.corners(i);
-            s.iter()
-                .filter(|w| !shared.contains(w))
-                .all(|&w| orient3d(a, b, c, &soup.points[w], ctx) != Ordering::Equal)
+        [u, v] => {
+            let a = t
+                .iter()
+                .find(|x| !shared.contains(x))
+                .map(|&x| &soup.points[x]);
+            let w = s
+                .iter()
+                .find(|x| !shared.contains(x))
+                .map(|&x| &soup.points[x]);
+            let (Some(a), Some(w)) = (a, w) else {
+                return None;
+            };
+            let (pu, pv) = (&soup.points[u], &soup.points[v]);
+            orient3d(pu, pv, a, w, ctx) != Ordering::Equal || apart_across([pu, pv], a, w, ctx)
         }
         [v] => meet_only_at(&soup.points[v], from(t, v), from(s, v), ctx),
         _ => false,
