@@ -142,7 +142,8 @@ impl Rational {
         if v == 0.0 {
             return Some(Rational::from_i64(0));
         }
-        // v = ±m·2^e with m odd: small as m·2^e or m / 2^−e when that fits.
+        // v = ±m·2^e with m odd, m < 2^53: small as m·2^e for e ≤ 8 or as m / 2^−e for
+        // e ≥ −61 (both terms below 2^62).
         let bits = v.to_bits();
         let raw_exp = ((bits >> 52) & 0x7ff) as i32;
         let frac = bits & ((1 << 52) - 1);

@@ -205,17 +205,12 @@ fn shared_only<N: Num>(soup: &Soup<N>, i: usize, j: usize, ctx: &N::Ctx) -> Opti
     };
     let alone = match shared[..] {
         [u, v] => {
-            let a = t
-                .iter()
-                .find(|x| !shared.contains(x))
-                .map(|&x| &soup.points[x]);
-            let w = s
-                .iter()
-                .find(|x| !shared.contains(x))
-                .map(|&x| &soup.points[x]);
-            let (Some(a), Some(w)) = (a, w) else {
-                return None;
+            // The third corner of a triangle.
+            let third = |tri: [usize; 3]| {
+                let x = tri.into_iter().find(|x| !shared.contains(x));
+                &soup.points[x.expect("a triangle has three distinct corners")]
             };
+            let (a, w) = (third(t), third(s));
             let (pu, pv) = (&soup.points[u], &soup.points[v]);
             orient3d(pu, pv, a, w, ctx) != Ordering::Equal || apart_across([pu, pv], a, w, ctx)
         }
