@@ -140,23 +140,29 @@ pub(crate) fn meet_only_at<N: Num>(
     if straddle(sc, sd) && straddle(sa, sb) {
         return orient3d(v, a, c, d, ctx) == sc;
     }
-    let out_of_vab = |x: &Point3<N>| !in_corner(v, [a, b], x, ctx);
-    let out_of_vcd = |x: &Point3<N>| !in_corner(v, [c, d], x, ctx);
+    let out = |corner: [&Point3<N>; 2], rays: &[&Point3<N>]| out_of_corner(v, corner, rays, ctx);
     match (sc, sd, sa, sb) {
-        (Equal, Equal, _, _) => out_of_vab(c) && out_of_vab(d) && out_of_vcd(a) && out_of_vcd(b),
-        (Equal, _, _, _) => out_of_vab(c),
-        (_, Equal, _, _) => out_of_vab(d),
-        (_, _, Equal, _) => out_of_vcd(a),
-        (_, _, _, Equal) => out_of_vcd(b),
+        (Equal, Equal, _, _) => out([a, b], &[c, d]) && out([c, d], &[a, b]),
+        (Equal, _, _, _) => out([a, b], &[c]),
+        (_, Equal, _, _) => out([a, b], &[d]),
+        (_, _, Equal, _) => out([c, d], &[a]),
+        (_, _, _, Equal) => out([c, d], &[b]),
         _ => false,
     }
 }
 
-/// True if the ray from `v` through `x`, a point of the plane of the triangle `vab`, lies in
-/// the triangle's closed corner at `v`; false if `vab` is degenerate.
-fn in_corner<N: Num>(v: &Point3<N>, [a, b]: [&Point3<N>; 2], x: &Point3<N>, ctx: &N::Ctx) -> bool {
-    in_plane_of([v, a, b], ctx)
-        .is_some_and(|o| o([v, a, x]) != Ordering::Less && o([v, x, b]) != Ordering::Less)
+/// True if no ray from `v` through a point of `rays` (points of the plane of the triangle
+/// `vab`) lies in the triangle's closed corner at `v`; false if `vab` is degenerate.
+fn out_of_corner<N: Num>(
+    v: &Point3<N>,
+    [a, b]: [&Point3<N>; 2],
+    rays: &[&Point3<N>],
+    ctx: &N::Ctx,
+) -> bool {
+    in_plane_of([v, a, b], ctx).is_some_and(|o| {
+        rays.iter()
+            .all(|x| o([v, a, x]) == Ordering::Less || o([v, x, b]) == Ordering::Less)
+    })
 }
 
 /// True if the coplanar triangles `uva` and `uvw`, which share the edge `uv`, lie strictly on
