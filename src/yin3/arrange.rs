@@ -7,7 +7,7 @@
 
 use super::geom::{f64_box, in_triangle3, Chart};
 use super::tri::{apart_across, intersect, meet_only_at};
-use super::triangulate::triangulate;
+use super::triangulate::{triangulate, TriangulateError};
 use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
@@ -121,7 +121,7 @@ pub(crate) fn arrange<N: Num>(
             .collect();
         others.sort_unstable();
         for j in others {
-            if let Some(shared) = shared_only(soup, i, j, ctx) {
+            if let Some(shared) = shared_only(&soup.points, soup.tris[i], soup.tris[j], ctx) {
                 contact.extend(shared);
                 continue;
             }
@@ -174,9 +174,15 @@ pub(crate) fn arrange<N: Num>(
             pieces.push((soup.tris[t], t));
             continue;
         }
-        for piece in retriangulate(soup, t, &extra[t], &cuts[t], ctx)? {
-            pieces.push((piece, t));
-        }
+        let cut = retriangulate(
+            &soup.points,
+            soup.tris[t],
+            extra[t].iter().copied(),
+            &cuts[t],
+            ctx,
+        )
+        .map_err(|e| ArrangeError::Internal(format!("re-triangulating triangle {t}: {e:?}")))?;
+        pieces.extend(cut.into_iter().map(|piece| (piece, t)));
     }
     let mut on_contact = vec![false; soup.points.len()];
     for v in contact {
@@ -188,12 +194,16 @@ pub(crate) fn arrange<N: Num>(
     })
 }
 
-/// The shared vertices of triangles `i` and `j` if they are the whole intersection, decided
-/// without constructing anything: two triangles sharing an edge and not coplanar meet in that
-/// edge, and coplanar ones iff they lie on opposite sides of it; two sharing one vertex, as
-/// [`meet_only_at`] tells.
-fn shared_only<N: Num>(soup: &Soup<N>, i: usize, j: usize, ctx: &N::Ctx) -> Option<Vec<usize>> {
-    let (t, s) = (soup.tris[i], soup.tris[j]);
+/// The shared vertices of triangles `t` and `s` (indices into `points`) if they are the whole
+/// intersection, decided without constructing anything: two triangles sharing an edge and not
+/// coplanar meet in that edge, and coplanar ones iff they lie on opposite sides of it; two
+/// sharing one vertex, as [`meet_only_at`] tells.
+pub(crate) fn shared_only<N: Num>(
+    points: &[Point3<N>],
+    t: [usize; 3],
+    s: [usize; 3],
+    ctx: &N::Ctx,
+) -> Option<Vec<usize>> {
     let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
     // The two corners that follow the shared vertex `v` around a triangle.
     let from = |tri: [usize; 3], v: usize| {
@@ -201,51 +211,44 @@ fn shared_only<N: Num>(soup: &Soup<N>, i: usize, j: usize, ctx: &N::Ctx) -> Opti
             .iter()
             .position(|&u| u == v)
             .expect("v is a shared corner");
-        [1, 2].map(|d| &soup.points[tri[(k + d) % 3]])
+        [1, 2].map(|d| &points[tri[(k + d) % 3]])
     };
     let alone = match shared[..] {
         [u, v] => {
             // The third corner of a triangle.
             let third = |tri: [usize; 3]| {
                 let x = tri.into_iter().find(|x| !shared.contains(x));
-                &soup.points[x.expect("a triangle has three distinct corners")]
+                &points[x.expect("a triangle has three distinct corners")]
             };
             let (a, w) = (third(t), third(s));
-            let (pu, pv) = (&soup.points[u], &soup.points[v]);
+            let (pu, pv) = (&points[u], &points[v]);
             orient3d(pu, pv, a, w, ctx) != Ordering::Equal || apart_across([pu, pv], a, w, ctx)
         }
-        [v] => meet_only_at(&soup.points[v], from(t, v), from(s, v), ctx),
+        [v] => meet_only_at(&points[v], from(t, v), from(s, v), ctx),
         _ => false,
     };
     alone.then_some(shared)
 }
 
-/// The pieces of triangle `t` with the points `extra` on it and the cut segments `cuts`.
-fn retriangulate<N: Num>(
-    soup: &Soup<N>,
-    t: usize,
-    extra: &BTreeSet<usize>,
+/// The pieces of the triangle `tri` (indices into `points`) with the points `extra` on it
+/// and the cut segments `cuts`, triangulated in a chart of its plane.
+pub(crate) fn retriangulate<N: Num>(
+    points: &[Point3<N>],
+    tri: [usize; 3],
+    extra: impl IntoIterator<Item = usize>,
     cuts: &[(usize, usize)],
     ctx: &N::Ctx,
-) -> Result<Vec<[usize; 3]>, ArrangeError<N>> {
-    let [a, b, c] = soup.corners(t);
+) -> Result<Vec<[usize; 3]>, TriangulateError> {
+    let [a, b, c] = tri.map(|v| &points[v]);
     let chart = Chart::of_triangle(a, b, c);
-    let ids: Vec<usize> = soup.tris[t]
-        .iter()
-        .copied()
-        .chain(extra.iter().copied())
-        .collect();
+    let ids: Vec<usize> = tri.into_iter().chain(extra).collect();
     let local: HashMap<usize, usize> = ids.iter().enumerate().map(|(k, &v)| (v, k)).collect();
-    let pts: Vec<Point<N>> = ids
-        .iter()
-        .map(|&v| chart.project(&soup.points[v]))
-        .collect();
+    let pts: Vec<Point<N>> = ids.iter().map(|&v| chart.project(&points[v])).collect();
     let cons: Vec<(usize, usize)> = cuts
         .iter()
         .filter(|(p, q)| p != q)
         .filter_map(|(p, q)| Some((*local.get(p)?, *local.get(q)?)))
         .collect();
-    let tris = triangulate(&pts, [0, 1, 2], &cons, ctx)
-        .map_err(|e| ArrangeError::Internal(format!("re-triangulating triangle {t}: {e:?}")))?;
+    let tris = triangulate(&pts, [0, 1, 2], &cons, ctx)?;
     Ok(tris.into_iter().map(|tri| tri.map(|k| ids[k])).collect())
 }

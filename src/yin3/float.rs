@@ -5,11 +5,12 @@
 //! with [`Yin3Error::Unrepresentable`]. Topology is the exact result's.
 
 use super::error::Yin3Error;
-use super::set::{Brep, YinSet3};
-use super::validate::revalidate;
+use super::set::{compact, Brep, YinSet3};
+use super::transversal::transversal_meet;
+use super::validate::{check_windings, conforming_after_moves, revalidate};
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// The meet of two float sets under the combined context `ctx` (module docs).
 pub(crate) fn float_meet<N: Num>(
@@ -17,6 +18,19 @@ pub(crate) fn float_meet<N: Num>(
     b: &YinSet3<N>,
     ctx: N::Ctx,
 ) -> Result<YinSet3<N>, Yin3Error> {
+    if let (Some(x), Some(y)) = (a.brep(), b.brep()) {
+        if let Some((points, kept)) = transversal_meet(x, y) {
+            if kept.is_empty() {
+                return Ok(YinSet3::empty().with_ctx(ctx));
+            }
+            let (points, kept) = compact(points, kept);
+            let rounded = rounded_points(&points)?;
+            return Ok(YinSet3::from_brep(
+                rounded_complex(&points, rounded, kept)?,
+                ctx,
+            ));
+        }
+    }
     rounded_set(&exact_set(a).meet(&exact_set(b)), ctx)
 }
 
@@ -46,18 +60,15 @@ fn exact_set<N: Num>(y: &YinSet3<N>) -> YinSet3<Rational> {
     }
 }
 
+/// The error that a rounded result is not valid.
+fn unrepresentable(e: &dyn std::fmt::Display) -> Yin3Error {
+    Yin3Error::Unrepresentable(e.to_string())
+}
+
 /// The exact boundary `b` with every vertex rounded to the nearest `f64`. If none moved, the
-/// exact structure is kept as it is. Otherwise vertices that round to one point are merged,
-/// triangles that collapse to a segment or a point are dropped (each takes a pair of opposite
-/// fins off an edge, so closed surfaces stay closed), and the rounded boundary is validated
-/// exactly; any failure is [`Yin3Error::Unrepresentable`].
+/// exact structure is kept as it is; otherwise as [`rounded_complex`].
 pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Error> {
-    let unrepresentable = |e: &dyn std::fmt::Display| Yin3Error::Unrepresentable(e.to_string());
-    let round = |p: &Point3<Rational>| {
-        let f = |v: &Rational| N::from_f64(v.to_f64()).map_err(|e| unrepresentable(&e));
-        Ok(Point3::new(f(&p.x)?, f(&p.y)?, f(&p.z)?))
-    };
-    let rounded = b.points.iter().map(round).collect::<Result<Vec<_>, _>>()?;
+    let rounded = rounded_points::<N>(&b.points)?;
     if rounded
         .iter()
         .zip(&b.points)
@@ -68,6 +79,46 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
         return Ok(b
             .clone()
             .map_points(|_| points.next().expect("one rounded point per point")));
+    }
+    rounded_complex(&b.points, rounded, b.tris.clone())
+}
+
+/// The nearest `f64` points.
+fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>, Yin3Error> {
+    let f = |v: &Rational| N::from_f64(v.to_f64()).map_err(|e| unrepresentable(&e));
+    points
+        .iter()
+        .map(|p| Ok(Point3::new(f(&p.x)?, f(&p.y)?, f(&p.z)?)))
+        .collect()
+}
+
+/// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
+/// and conforming, as the validator would rebuild it — with each point replaced by its
+/// rounding in `rounded`. If no two points round to one, only the triangles at moved points
+/// are checked against their neighbours ([`conforming_after_moves`]), else the whole boundary
+/// is validated. Otherwise vertices that round to one point are merged, triangles that
+/// collapse to a segment or a point are dropped (each takes a pair of opposite fins off an
+/// edge, so closed surfaces stay closed), and the rounded boundary is validated exactly. Any
+/// failure is [`Yin3Error::Unrepresentable`].
+pub(crate) fn rounded_complex<N: Num>(
+    exact: &[Point3<Rational>],
+    rounded: Vec<Point3<N>>,
+    tris: Vec<[usize; 3]>,
+) -> Result<Brep<N>, Yin3Error> {
+    if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
+        let moved: Vec<bool> = rounded
+            .iter()
+            .zip(exact)
+            .map(|(q, p)| exact_point(q) != *p)
+            .collect();
+        let brep = Brep::assemble(rounded, tris.clone()).map_err(|e| unrepresentable(&e))?;
+        // Assembling a compact boundary keeps its numbering, so `moved` still applies.
+        if brep.tris == tris && conforming_after_moves(&brep, &moved) {
+            check_windings(&exact_brep(&brep), &()).map_err(|e| unrepresentable(&e))?;
+        } else {
+            revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
+        }
+        return Ok(brep);
     }
     let mut index: HashMap<Point3<N>, usize> = HashMap::new();
     let mut points = Vec::new();
@@ -80,8 +131,7 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
         }
         new.push(i);
     }
-    let tris: Vec<[usize; 3]> = b
-        .tris
+    let tris: Vec<[usize; 3]> = tris
         .iter()
         .map(|t| t.map(|v| new[v]))
         .filter(|[p, q, r]| p != q && q != r && r != p)

@@ -16,6 +16,7 @@ mod meet;
 mod ops;
 mod set;
 pub mod shapes;
+mod transversal;
 mod tri;
 mod triangulate;
 mod validate;

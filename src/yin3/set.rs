@@ -185,7 +185,7 @@ impl<N: Num> Brep<N> {
 }
 
 /// Keep only the points that triangles use, renumbered in order of first use.
-fn compact<N: Num>(
+pub(crate) fn compact<N: Num>(
     points: Vec<Point3<N>>,
     tris: Vec<[usize; 3]>,
 ) -> (Vec<Point3<N>>, Vec<[usize; 3]>) {

@@ -80,6 +80,55 @@ pub(crate) fn intersect<N: Num>(
     }
 }
 
+/// True if the closed triangles `t` and `s` are shown disjoint by orientations of their
+/// vertices alone (false where that cannot tell): one lies strictly on one side of the
+/// other's plane, or touches it only in vertices that the other misses
+/// ([`misses_in_plane`]), or [`separated`] tells.
+pub(crate) fn apart<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N::Ctx) -> bool {
+    let s_sides = t_side(t, s, ctx);
+    if off_plane_of(s, &s_sides, t, ctx) {
+        return true;
+    }
+    let t_sides = t_side(s, t, ctx);
+    off_plane_of(t, &t_sides, s, ctx) || separated(t, s, &t_sides, &s_sides, ctx)
+}
+
+/// True if `x` (its vertices on sides `sides` of the plane of `y`) meets that plane at most in
+/// one or two of its vertices, none in the closed triangle `y`.
+fn off_plane_of<N: Num>(
+    x: [&Point3<N>; 3],
+    sides: &[Ordering; 3],
+    y: [&Point3<N>; 3],
+    ctx: &N::Ctx,
+) -> bool {
+    if proper(sides) {
+        return false;
+    }
+    let on: Vec<&Point3<N>> = (0..3)
+        .filter(|&i| sides[i] == Ordering::Equal)
+        .map(|i| x[i])
+        .collect();
+    match on.len() {
+        0 => true,
+        3 => false,
+        _ => misses_in_plane(y, &on, ctx),
+    }
+}
+
+/// True if the closed triangle `y` misses the point or segment `on` of its plane, by the
+/// separating-line theorem for convex polygons: the line of a side of `y` with `on` strictly
+/// outside it, or the segment's own line with `y` strictly on one side.
+fn misses_in_plane<N: Num>(y: [&Point3<N>; 3], on: &[&Point3<N>], ctx: &N::Ctx) -> bool {
+    let Some(o) = in_plane_of(y, ctx) else {
+        return false;
+    };
+    let outside = |i: usize| {
+        on.iter()
+            .all(|p| o([y[i], y[(i + 1) % 3], p]) == Ordering::Less)
+    };
+    (0..3).any(outside) || matches!(on, [p, q] if strictly_one_side(&y.map(|c| o([p, q, c]))))
+}
+
 /// True if `t` and `s` are disjoint though each plane passes strictly between the other's
 /// vertices (`t_sides`: t's vertices against s's plane; `s_sides`: s's against t's; none on a
 /// plane): Devillers and Guigue's test (2002) from two orientations of input vertices, nothing
@@ -423,6 +472,39 @@ mod tests {
                 let decided = [sa, sb, sc, sd].iter().all(|x| *x != Ordering::Equal)
                     && orient3d(&v, &ab[0], &cd[0], &cd[1], &()) != Ordering::Equal;
                 proptest::prop_assert!(!alone || !decided);
+            }
+        }
+
+        /// Triangles shown apart by orientations do not meet (the constructed intersection),
+        /// where s has one or two vertices in the plane of t, inside t or not.
+        #[test]
+        fn apart_is_the_constructed_contact(t in proptest::array::uniform3(lattice()),
+                                            s2 in lattice(),
+                                            k in proptest::array::uniform4(-4i64..=4),
+                                            two in proptest::bool::ANY) {
+            // s0, s1 = t0 + (k0 (t1 − t0) + k1 (t2 − t0)) / 2: in the plane of t.
+            let in_plane = |k0: i64, k1: i64| {
+                let half = |k: i64| Rational::from_i64(k) / Rational::from_i64(2);
+                let c = |i: usize| {
+                    let o = t[0].coord(i).clone();
+                    o.clone() + half(k0) * (t[1].coord(i).clone() - o.clone())
+                        + half(k1) * (t[2].coord(i).clone() - o)
+                };
+                Point3::new(c(0), c(1), c(2))
+            };
+            let s0 = in_plane(k[0], k[1]);
+            let s1 = if two { in_plane(k[2], k[3]) } else { Point3::new(s2.y.clone(), s2.z.clone(), s2.x.clone()) };
+            let s = [&s0, &s1, &s2];
+            proptest::prop_assume!(!collinear(&t[0], &t[1], &t[2]) && !collinear(s[0], s[1], s[2]));
+            let (t, s3) = (t.each_ref(), s);
+            let contact = intersect(t, s3, &());
+            if apart(t, s3, &()) || apart(s3, t, &()) {
+                proptest::prop_assert!(contact.is_none());
+            }
+            // Complete where s touches t's plane only in its vertices.
+            let sides = t_side(t, s3, &());
+            if contact.is_none() && !proper(&sides) && !sides.iter().all(|x| *x == Ordering::Equal) {
+                proptest::prop_assert!(apart(t, s3, &()));
             }
         }
 

@@ -3,12 +3,13 @@
 //! conforming by the arrangement of the faces against each other, and invariants I1–I4
 //! checked, with errors naming the face or edge at fault.
 
-use super::arrange::{arrange, ArrangeError, Pairs, Soup};
+use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::{exact_points, rounded_brep};
-use super::geom::{collinear, normal, Chart};
-use super::locate::winding;
+use super::geom::{collinear, f64_box, normal, Chart};
+use super::locate::{winding, TriBoxes};
 use super::set::{Brep, YinSet3};
+use super::tri::apart;
 use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, Num};
@@ -103,6 +104,30 @@ pub(crate) fn revalidate<M: Num, N: Num>(
         ));
     }
     Ok(())
+}
+
+/// True if the validator would rebuild the boundary `b` unchanged (I4 aside), knowing that it
+/// did before the vertices `moved` moved, each to a distinct point (a rounded result): every
+/// triangle with a moved vertex meets every other triangle exactly in their shared vertices
+/// and edges (a degenerate one fails against its neighbours across its edges). Decided by
+/// exact orientations of the points' values, nothing constructed — false where that cannot
+/// tell, and then the caller validates in full. Every other pair meets as it did.
+pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
+    let exact = &N::exact_ctx();
+    let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
+    let boxes = TriBoxes::new((0..b.tris.len()).map(|t| (t, b.corners(t))));
+    let meet_in_shared = |t: [usize; 3], s: [usize; 3]| {
+        if t.iter().any(|v| s.contains(v)) {
+            shared_only(&b.points, t, s, exact).is_some()
+        } else {
+            apart(t.map(|v| &b.points[v]), s.map(|v| &b.points[v]), exact)
+        }
+    };
+    (0..b.tris.len()).filter(|&t| touched[t]).all(|t| {
+        boxes
+            .meeting(&f64_box(b.corners(t)))
+            .all(|u| u == t || (touched[u] && u < t) || meet_in_shared(b.tris[t], b.tris[u]))
+    })
 }
 
 impl Yin3Error {
@@ -251,7 +276,7 @@ fn polygon_normal<N: Num>(vertices: &[Point3<N>], face: &[usize]) -> Point3<N> {
 
 /// I4: on the side its normals point to, each edge-connected closed surface has winding
 /// number 0 (bounded set) or −1 (unbounded set), by one ray per surface.
-fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yin3Error> {
+pub(crate) fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yin3Error> {
     let mut uf = UnionFind::new(b.tris.len());
     for fins in &b.table.fins {
         for f in &fins[1..] {
@@ -286,4 +311,61 @@ fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yin3Error> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+    use crate::yin3::shapes::{concat, cuboid};
+
+    /// The cubes [0, 1]³ and [1.5, 2.5]³ (coordinates in tenths) with the corners `moves`
+    /// moved: the local check and the full validator.
+    fn after_moving(moves: &[([i64; 3], [i64; 3])]) -> (bool, bool) {
+        let ten = Rational::from_i64(10);
+        let p = |v: [i64; 3]| v.map(|x| Rational::from_i64(x) / ten.clone());
+        let p = |v: [i64; 3]| {
+            let [x, y, z] = p(v);
+            Point3::<Rational>::new(x, y, z)
+        };
+        let (v, f) = concat(vec![
+            cuboid(&p([0; 3]), &p([10; 3])),
+            cuboid(&p([15; 3]), &p([25; 3])),
+        ]);
+        let b = YinSet3::from_triangles(v, f)
+            .expect("two cubes")
+            .brep()
+            .expect("bounded")
+            .clone();
+        let to = |q: &Point3<Rational>| {
+            moves
+                .iter()
+                .find(|(from, _)| *q == p(*from))
+                .map(|m| p(m.1))
+        };
+        let moved: Vec<bool> = b.points.iter().map(|q| to(q).is_some()).collect();
+        let after = b.map_points(|q| to(q).unwrap_or_else(|| q.clone()));
+        let full = revalidate(after.points.clone(), &after, ()).is_ok();
+        (conforming_after_moves(&after, &moved), full)
+    }
+
+    #[test]
+    fn a_moved_vertex_is_checked_against_its_neighbours() {
+        let corner = [10; 3];
+        // Pulled out a little: still valid.
+        assert_eq!(after_moving(&[(corner, [11, 11, 11])]), (true, true));
+        // Into the other cube: its faces cross the other's.
+        assert_eq!(after_moving(&[(corner, [17, 17, 17])]), (false, false));
+        // Both moved, crossing each other's faces.
+        assert_eq!(
+            after_moving(&[(corner, [17, 17, 17]), ([15; 3], [14; 3])]),
+            (false, false)
+        );
+        // Onto a face of the other cube: a contact the stored triangles do not conform to.
+        assert_eq!(after_moving(&[(corner, [15, 17, 17])]), (false, false));
+        // Folded over a neighbour across a shared edge, in its plane.
+        assert_eq!(after_moving(&[(corner, [4, 4, 10])]), (false, false));
+        // Onto the line of an edge of its own: a degenerate triangle.
+        assert_eq!(after_moving(&[(corner, [20, -10, 10])]), (false, false));
+    }
 }
