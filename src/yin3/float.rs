@@ -2,7 +2,9 @@
 //! values, and every decision about them is made on those values read as rationals. An
 //! operation is computed exactly and the result's vertices are rounded to the nearest `f64`s;
 //! the rounded boundary is accepted only if it is valid exactly, otherwise the operation fails
-//! with [`Yin3Error::Unrepresentable`]. Topology is the exact result's.
+//! with [`Yin3Error::Unrepresentable`]. Topology is the exact result's. Operands that cross
+//! transversally take the construction-light path of [`super::transversal`], others the
+//! general exact meet.
 
 use super::error::Yin3Error;
 use super::set::{compact, Brep, YinSet3};
@@ -12,7 +14,8 @@ use crate::kernel::Point3;
 use crate::num::{Num, Rational};
 use std::collections::{HashMap, HashSet};
 
-/// The meet of two float sets under the combined context `ctx` (module docs).
+/// The meet of two float sets under the combined context `ctx` (module docs): the transversal
+/// meet where it applies, else the general exact meet, rounded.
 pub(crate) fn float_meet<N: Num>(
     a: &YinSet3<N>,
     b: &YinSet3<N>,
