@@ -21,12 +21,18 @@ use super::set::Brep;
 use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, Rational};
 use crate::union_find::UnionFind;
+use rayon::prelude::*;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
+use std::cell::OnceCell;
 use std::cmp::Ordering::{self, Equal};
 use std::collections::{HashMap, HashSet};
 
 /// Where an edge `(u, v)` (global point indices, u < v) pierces triangle `tri` (global index).
 type Pierce = ((usize, usize), usize);
+
+/// Rays that scan every triangle of the other operand before an R-tree of its boxes is built
+/// (one in unit tests, so that they take both ways).
+const SCANNED_RAYS: usize = if cfg!(test) { 1 } else { 8 };
 
 /// Triangles over a table of exact points.
 type Complex = (Vec<Point3<Rational>>, Vec<[usize; 3]>);
@@ -44,10 +50,7 @@ enum Contact {
 /// The exact meet of the float boundaries `a` and `b` (bounded or not) if they cross
 /// transversally (module docs), `None` otherwise: its triangles (a conforming complex, as the
 /// validator would rebuild it) over a table of exact points, some of which may be unused.
-pub(crate) fn transversal_meet<N: Num>(
-    a: &Brep<N>,
-    b: &Brep<N>,
-) -> Option<Complex> {
+pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Complex> {
     let na = a.points.len();
     let f64s: Vec<[f64; 3]> = a
         .points
@@ -77,15 +80,17 @@ pub(crate) fn transversal_meet<N: Num>(
     points.extend(exact_points(&b.points));
     // The pierce points: each constructed once, on its edge's triangles and in its triangle.
     let mut index: HashMap<Pierce, usize> = HashMap::new();
+    let mut pierces: Vec<Pierce> = Vec::new();
     let mut on_edge: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
     let mut extra: Vec<Vec<usize>> = vec![Vec::new(); tris.len()];
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); tris.len()];
     let mut crossing_edges: HashSet<(usize, usize)> = HashSet::new();
+    let first_pierce = points.len();
     for &(t, s, ends) in &crossings {
         let [p, q] = ends.map(|(edge, tri)| {
             *index.entry((edge, tri)).or_insert_with(|| {
-                points.push(pierce(&points, edge, tris[tri]));
-                let v = points.len() - 1;
+                let v = first_pierce + pierces.len();
+                pierces.push((edge, tri));
                 on_edge.entry(edge).or_default().push(v);
                 extra[tri].push(v);
                 v
@@ -95,20 +100,34 @@ pub(crate) fn transversal_meet<N: Num>(
         cuts[s].push((p, q));
         crossing_edges.insert((p.min(q), p.max(q)));
     }
-    let mut pieces: Vec<([usize; 3], usize)> = Vec::with_capacity(tris.len());
-    for (t, &tri) in tris.iter().enumerate() {
+    let made: Vec<Point3<Rational>> = pierces
+        .par_iter()
+        .map(|&(edge, tri)| pierce(&points, edge, tris[tri]))
+        .collect();
+    points.extend(made);
+    // Every triangle with points on it, re-triangulated (on rayon's threads).
+    let on = |t: usize| {
+        let tri = tris[t];
         let mut on: Vec<usize> = (0..3)
             .filter_map(|k| on_edge.get(&key(tri[k], tri[(k + 1) % 3])))
             .flatten()
             .copied()
             .collect();
         on.extend(&extra[t]);
-        if on.is_empty() {
-            pieces.push((tri, t));
-            continue;
+        on
+    };
+    let cut: Vec<usize> = (0..tris.len()).filter(|&t| !on(t).is_empty()).collect();
+    let parts: Vec<Vec<[usize; 3]>> = cut
+        .par_iter()
+        .map(|&t| retriangulate(&points, tris[t], on(t), &cuts[t], &()).ok())
+        .collect::<Option<_>>()?;
+    let mut parts: HashMap<usize, Vec<[usize; 3]>> = cut.into_iter().zip(parts).collect();
+    let mut pieces: Vec<([usize; 3], usize)> = Vec::with_capacity(tris.len());
+    for (t, &tri) in tris.iter().enumerate() {
+        match parts.remove(&t) {
+            Some(part) => pieces.extend(part.into_iter().map(|piece| (piece, t))),
+            None => pieces.push((tri, t)),
         }
-        let cut = retriangulate(&points, tri, on, &cuts[t], &()).ok()?;
-        pieces.extend(cut.into_iter().map(|piece| (piece, t)));
     }
     let inside = inside(&pieces, &crossing_edges, [a, b])?;
     let kept: Vec<[usize; 3]> = pieces
@@ -213,24 +232,31 @@ fn inside<N: Num>(
     let (points_a, first_b) = (ops[0].points.len(), ops[0].tris.len());
     let inputs = points_a + ops[1].points.len();
     let operand = |i: usize| usize::from(pieces[i].1 >= first_b);
-    let mut edges: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
-    for (i, (t, _)) in pieces.iter().enumerate() {
-        for k in 0..3 {
-            edges.entry(key(t[k], t[(k + 1) % 3])).or_default().push(i);
-        }
-    }
+    // Each piece's edges, grouped by edge.
+    let mut fins: Vec<((usize, usize), usize)> = pieces
+        .iter()
+        .enumerate()
+        .flat_map(|(i, (t, _))| (0..3).map(move |k| (key(t[k], t[(k + 1) % 3]), i)))
+        .collect();
+    fins.sort_unstable();
     let mut uf = UnionFind::new(pieces.len());
     let mut flips: Vec<(usize, usize)> = Vec::new();
-    for (e, at) in &edges {
+    for at in fins.chunk_by(|x, y| x.0 == y.0) {
+        let across = crossing.contains(&at[0].0);
         for o in 0..2 {
-            let mine: Vec<usize> = at.iter().copied().filter(|&i| operand(i) == o).collect();
-            if crossing.contains(e) {
+            let mut mine = at.iter().map(|f| f.1).filter(|&i| operand(i) == o);
+            let Some(first) = mine.next() else {
+                continue;
+            };
+            if across {
                 // A crossing segment runs inside one triangle: one piece on each side.
-                let [x, y] = mine[..] else { return None };
-                flips.push((x, y));
+                let (Some(second), None) = (mine.next(), mine.next()) else {
+                    return None;
+                };
+                flips.push((first, second));
             } else {
-                for w in mine.iter().skip(1) {
-                    uf.union(mine[0], *w);
+                for w in mine {
+                    uf.union(first, w);
                 }
             }
         }
@@ -241,7 +267,9 @@ fn inside<N: Num>(
         next[x].push(y);
         next[y].push(x);
     }
-    let trees = ops.map(|op| TriBoxes::new((0..op.tris.len()).map(|s| (s, op.corners(s)))));
+    // A few rays scan every triangle; more use an R-tree of the other's boxes.
+    let trees: [OnceCell<TriBoxes>; 2] = Default::default();
+    let mut rays = 0;
     let mut side: Vec<Option<bool>> = vec![None; pieces.len()];
     for (i, (piece, _)) in pieces.iter().enumerate() {
         let root = uf.find(i);
@@ -253,8 +281,20 @@ fn inside<N: Num>(
         };
         let o = operand(i);
         let q = &ops[o].points[if o == 0 { v } else { v - points_a }];
-        let other = trees[1 - o].along_x(q).map(|s| ops[1 - o].corners(s));
-        let w = winding(other, q, &N::exact_ctx()) + i64::from(!ops[1 - o].bounded);
+        let other = ops[1 - o];
+        rays += 1;
+        let w = if rays <= SCANNED_RAYS {
+            winding(other.all_corners(), q, &N::exact_ctx())
+        } else {
+            let tree = trees[1 - o].get_or_init(|| {
+                TriBoxes::new((0..other.tris.len()).map(|s| (s, other.corners(s))))
+            });
+            winding(
+                tree.along_x(q).map(|s| other.corners(s)),
+                q,
+                &N::exact_ctx(),
+            )
+        } + i64::from(!other.bounded);
         side[root] = Some(w == 1);
         let mut stack = vec![root];
         while let Some(x) = stack.pop() {
