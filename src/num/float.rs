@@ -56,7 +56,8 @@ impl Float {
 ///   otherwise inside or outside exactly.
 /// * **3D.** [`crate::yin3::YinSet3`] in float mode computes every operation exactly on the
 ///   operands' `f64` values and rounds the result's vertices to the nearest `f64`s (no grid):
-///   a valid rounded result or `Yin3Error::Unrepresentable`; ε decides `locate`'s boundary
+///   a valid rounded result with the exact result's topology, or
+///   `Yin3Error::Unrepresentable`; ε decides `locate`'s boundary
 ///   band (a point within ε of a face), the default and the representable ε as above (README,
 ///   "3D float mode").
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

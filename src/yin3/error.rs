@@ -68,8 +68,8 @@ pub enum Yin3Error {
         representable: Float,
     },
     /// Float mode: the result has no valid representation with `f64` vertices (the exact
-    /// result, rounded to the nearest `f64`s, is not a valid boundary).
-    #[error("the float result is not representable: the exact result rounded to f64 is not a valid boundary ({0}); use exact mode")]
+    /// result, rounded to the nearest `f64`s, is not a valid boundary or has another topology).
+    #[error("the float result is not representable: the exact result rounded to f64 is not a valid boundary with its topology ({0}); use exact mode")]
     Unrepresentable(String),
     /// `validate` found a stored set that breaks an invariant (an internal bug).
     #[error("internal invariant broken: {0}")]

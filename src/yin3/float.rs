@@ -1,11 +1,12 @@
 //! 3D float mode (README, "3D float mode"): float sets are exactly valid sets of their `f64`
 //! values, and every decision about them is made on those values read as rationals. An
 //! operation is computed exactly and the result's vertices are rounded to the nearest `f64`s;
-//! the rounded boundary is accepted only if it is valid exactly, otherwise the operation fails
-//! with [`Yin3Error::Unrepresentable`]. Topology is the exact result's. Operands that cross
-//! transversally take the construction-light path of [`super::transversal`], others the
-//! general exact meet.
+//! the rounded boundary is accepted only if it is valid exactly and has the exact result's
+//! topology ([`Topology`]), otherwise the operation fails with
+//! [`Yin3Error::Unrepresentable`]. Operands that cross transversally take the
+//! construction-light path of [`super::transversal`], others the general exact meet.
 
+use super::betti::Betti3;
 use super::error::Yin3Error;
 use super::set::{compact, Brep, YinSet3};
 use super::transversal::transversal_meet;
@@ -28,8 +29,9 @@ pub(crate) fn float_meet<N: Num>(
             }
             let (points, kept) = compact(points, kept);
             let rounded = rounded_points(&points)?;
+            let keep = Topology::of(&Brep::assemble(points.clone(), kept.clone())?);
             return Ok(YinSet3::from_brep(
-                rounded_complex(&points, rounded, kept)?,
+                rounded_complex(&points, rounded, kept, &keep)?,
                 ctx,
             ));
         }
@@ -83,7 +85,7 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
             .clone()
             .map_points(|_| points.next().expect("one rounded point per point")));
     }
-    rounded_complex(&b.points, rounded, b.tris.clone())
+    rounded_complex(&b.points, rounded, b.tris.clone(), &Topology::of(b))
 }
 
 /// The nearest `f64` points.
@@ -101,9 +103,27 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 /// are checked against their neighbours ([`conforming_after_moves`]), else the whole boundary
 /// is validated. Otherwise vertices that round to one point are merged, triangles that
 /// collapse to a segment or a point are dropped (each takes a pair of opposite fins off an
-/// edge, so closed surfaces stay closed), and the rounded boundary is validated exactly. Any
-/// failure is [`Yin3Error::Unrepresentable`].
-pub(crate) fn rounded_complex<N: Num>(
+/// edge, so closed surfaces stay closed), and the rounded boundary is validated exactly. The
+/// result must have the topology `keep` of the exact one. Any failure is
+/// [`Yin3Error::Unrepresentable`].
+fn rounded_complex<N: Num>(
+    exact: &[Point3<Rational>],
+    rounded: Vec<Point3<N>>,
+    tris: Vec<[usize; 3]>,
+    keep: &Topology,
+) -> Result<Brep<N>, Yin3Error> {
+    let brep = rounded_boundary(exact, rounded, tris)?;
+    let got = Topology::of(&brep);
+    if got != *keep {
+        return Err(unrepresentable(&format!(
+            "rounding to f64 changes the topology of the result (exact: {keep}; rounded: {got})"
+        )));
+    }
+    Ok(brep)
+}
+
+/// The valid boundary of [`rounded_complex`], before its topology is compared.
+fn rounded_boundary<N: Num>(
     exact: &[Point3<Rational>],
     rounded: Vec<Point3<N>>,
     tris: Vec<[usize; 3]>,
@@ -145,6 +165,51 @@ pub(crate) fn rounded_complex<N: Num>(
     let brep = Brep::assemble(points, tris).map_err(|e| unrepresentable(&e))?;
     revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
     Ok(brep)
+}
+
+/// What rounding must keep of a set (README, "3D float mode"): boundedness, the Betti
+/// numbers, and each glued surface's orientation, genus and depth in the Hasse diagram
+/// (seed 003 Def. 7.3, 7.6), as a sorted list.
+#[derive(Debug, PartialEq)]
+struct Topology {
+    bounded: bool,
+    betti: Betti3,
+    surfaces: Vec<(bool, usize, usize)>,
+}
+
+impl Topology {
+    /// The topology of the set bounded by `b`.
+    fn of<N: Num>(b: &Brep<N>) -> Topology {
+        let depth = |mut s: usize| {
+            let mut d = 0;
+            while let Some(p) = b.parent[s] {
+                (s, d) = (p, d + 1);
+            }
+            d
+        };
+        let mut surfaces: Vec<_> = (b.surfaces.iter().enumerate())
+            .map(|(s, g)| (g.positive, g.genus, depth(s)))
+            .collect();
+        surfaces.sort_unstable();
+        Topology {
+            bounded: b.bounded,
+            betti: b.betti(),
+            surfaces,
+        }
+    }
+}
+
+impl std::fmt::Display for Topology {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        let Betti3 { b0, b1, b2 } = self.betti;
+        let pos = self.surfaces.iter().filter(|s| s.0).count();
+        let neg = self.surfaces.len() - pos;
+        let bounded = if self.bounded { "bounded" } else { "unbounded" };
+        write!(
+            f,
+            "{bounded}, Betti ({b0}, {b1}, {b2}), {pos} positive and {neg} negative glued surfaces"
+        )
+    }
 }
 
 /// The exact set `y` rounded ([`rounded_brep`]), under the context `ctx`.

@@ -140,6 +140,26 @@ impl<N: Num> Brep<N> {
         }
     }
 
+    /// The Betti numbers of the set it bounds (DESIGN-3D §2.12), computed once.
+    pub(crate) fn betti(&self) -> Betti3 {
+        *self.betti.get_or_init(|| {
+            let (atoms, bounded) = (self.atoms.len(), self.bounded);
+            if N::EXACT {
+                betti(
+                    &self.points,
+                    &self.tris,
+                    &self.table,
+                    atoms,
+                    bounded,
+                    &N::exact_ctx(),
+                )
+            } else {
+                let exact = exact_points(&self.points);
+                betti(&exact, &self.tris, &self.table, atoms, bounded, &())
+            }
+        })
+    }
+
     /// The corners of triangle `t`.
     pub(crate) fn corners(&self, t: usize) -> [&Point3<N>; 3] {
         self.tris[t].map(|v| &self.points[v])
@@ -318,22 +338,7 @@ impl<N: Num> YinSet3<N> {
                 b1: 0,
                 b2: 0,
             },
-            Repr3::Brep(b) => *b.betti.get_or_init(|| {
-                let (atoms, bounded) = (b.atoms.len(), b.bounded);
-                if N::EXACT {
-                    betti(
-                        &b.points,
-                        &b.tris,
-                        &b.table,
-                        atoms,
-                        bounded,
-                        &N::exact_ctx(),
-                    )
-                } else {
-                    let exact = exact_points(&b.points);
-                    betti(&exact, &b.tris, &b.table, atoms, bounded, &())
-                }
-            }),
+            Repr3::Brep(b) => b.betti(),
         }
     }
 
