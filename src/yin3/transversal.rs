@@ -15,12 +15,14 @@
 
 use super::arrange::retriangulate;
 use super::float::exact_points;
-use super::geom::{f64_box, normal};
+use super::geom::f64_box;
 use super::locate::{winding, TriBoxes};
 use super::set::Brep;
 use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, Rational};
 use crate::union_find::UnionFind;
+use num_bigint::BigInt;
+use num_traits::Float as _;
 use rayon::prelude::*;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
 use std::cell::OnceCell;
@@ -66,16 +68,24 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Compl
             .map(|s| GeomWithData::new(Rectangle::from_aabb(f64_box(b.corners(s))), s + first_b))
             .collect(),
     );
-    let mut crossings: Vec<(usize, usize, [Pierce; 2])> = Vec::new();
-    for t in 0..first_b {
-        for g in tree.locate_in_envelope_intersecting(&f64_box(a.corners(t))) {
-            match contact(&f64s, (t, tris[t]), (g.data, tris[g.data])) {
-                Contact::Apart => {}
-                Contact::Cross(ends) => crossings.push((t, g.data, ends)),
-                Contact::Degenerate => return None,
+    // Every pair of boxes that meet, on rayon's threads; the first degenerate pair ends it.
+    let crossings: Vec<(usize, usize, [Pierce; 2])> = (0..first_b)
+        .into_par_iter()
+        .map(|t| {
+            let mut mine = Vec::new();
+            for g in tree.locate_in_envelope_intersecting(&f64_box(a.corners(t))) {
+                match contact(&f64s, (t, tris[t]), (g.data, tris[g.data])) {
+                    Contact::Apart => {}
+                    Contact::Cross(ends) => mine.push((t, g.data, ends)),
+                    Contact::Degenerate => return None,
+                }
             }
-        }
-    }
+            Some(mine)
+        })
+        .collect::<Option<Vec<_>>>()?
+        .into_iter()
+        .flatten()
+        .collect();
     let mut points = exact_points(&a.points);
     points.extend(exact_points(&b.points));
     // The pierce points: each constructed once, on its edge's triangles and in its triangle.
@@ -102,7 +112,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Compl
     }
     let made: Vec<Point3<Rational>> = pierces
         .par_iter()
-        .map(|&(edge, tri)| pierce(&points, edge, tris[tri]))
+        .map(|&(edge, tri)| pierce(&f64s, edge, tris[tri]))
         .collect();
     points.extend(made);
     // Every triangle with points on it, re-triangulated (on rayon's threads).
@@ -205,17 +215,41 @@ fn straddling(tri: [usize; 3], sides: &[Ordering; 3]) -> [((usize, usize), Order
     out
 }
 
-/// The point where the edge `(u, v)` pierces the plane of the triangle `tri`, exactly; the
-/// same value whichever triangle of the edge asks.
-fn pierce(
-    points: &[Point3<Rational>],
-    (u, v): (usize, usize),
-    tri: [usize; 3],
-) -> Point3<Rational> {
-    let [a, b, c] = tri.map(|w| &points[w]);
-    let n = normal(a, b, c);
-    let (du, dv) = (n.dot(&points[u].sub(a)), n.dot(&points[v].sub(a)));
-    points[u].lerp(&points[v], &(du.clone() / (du - dv)))
+/// The point where the edge `(u, v)` pierces the plane of the triangle `tri` (indices into the
+/// `f64` points `p`), exactly: (du·V − dv·U) / (du − dv), du and dv the plane's values at U and
+/// V, in integers after scaling every coordinate by one power of two; the same value whichever
+/// triangle of the edge asks.
+fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
+    let parts = [u, v, tri[0], tri[1], tri[2]].map(|i| p[i].map(|x| x.integer_decode()));
+    let low = parts
+        .iter()
+        .flatten()
+        .filter(|(m, _, _)| *m != 0)
+        .map(|(_, e, _)| i32::from(*e))
+        .min()
+        .unwrap_or(0);
+    let int = |(m, e, sign): (u64, i16, i8)| match m {
+        0 => BigInt::ZERO,
+        _ => (BigInt::from(m) << (i32::from(e) - low)) * sign,
+    };
+    let [pu, pv, a, b, c] = parts.map(|q| q.map(int));
+    let sub = |x: &[BigInt; 3], y: &[BigInt; 3]| [0, 1, 2].map(|k| &x[k] - &y[k]);
+    let (ab, ac) = (sub(&b, &a), sub(&c, &a));
+    let n = [
+        &ab[1] * &ac[2] - &ab[2] * &ac[1],
+        &ab[2] * &ac[0] - &ab[0] * &ac[2],
+        &ab[0] * &ac[1] - &ab[1] * &ac[0],
+    ];
+    let value = |x: &[BigInt; 3]| {
+        let d = sub(x, &a);
+        &n[0] * &d[0] + &n[1] * &d[1] + &n[2] * &d[2]
+    };
+    let (du, dv) = (value(&pu), value(&pv));
+    let den = &du - &dv;
+    // Scaled back by 2^low: into the numerator for low ≥ 0, the denominator otherwise.
+    let (up, down) = (low.max(0) as usize, (-low).max(0) as usize);
+    let coord = |k: usize| Rational::new((&du * &pv[k] - &dv * &pu[k]) << up, den.clone() << down);
+    Point3::new(coord(0), coord(1), coord(2))
 }
 
 /// For each piece of the transversal arrangement of `ops` (each with its parent: operand 0's
@@ -388,18 +422,24 @@ mod tests {
         #![proptest_config(ProptestConfig::with_cases(64))]
 
         /// Jittered cubes that cross, nest or miss (the second operand also as its complement,
-        /// unbounded, and the first also with a second cube far away): the transversal meet
-        /// is taken and equals the general exact meet (a different algorithm: constructed
-        /// contacts, point-in-triangle distribution, one ray per patch).
+        /// unbounded, the first also with a second cube far away, and both scaled by 2^80):
+        /// the transversal meet is taken and equals the general exact meet (a different
+        /// algorithm: constructed contacts, point-in-triangle distribution, one ray per patch).
         #[test]
         fn equals_the_general_meet(
             ja in jitter(), jb in jitter(), jc in jitter(),
             offset in [-1.2..1.2, -1.2..1.2, -1.2..1.2f64], size in 0.3..1.6f64,
         ) {
+            // Corner 0 of the first cube at the origin: coordinates 0 occur.
+            let mut ja = ja;
+            ja[0] = [0.0; 3];
             let a = jittered_cube([0.0; 3], 1.0, &ja);
             let b = jittered_cube(offset, size, &jb);
             let far = both(a.clone(), jittered_cube([5.0, 0.0, 0.0], 1.0, &jc));
-            for (a, b, complement) in [(&a, &b, false), (&a, &b, true), (&far, &b, false)] {
+            // Coordinates of 2^80 and more: integers already, in the pierce points' arithmetic.
+            let huge = |(v, f): &Raw| (v.iter().map(|p| p.map(|x| x * 2f64.powi(80))).collect(), f.clone());
+            let (ha, hb) = (huge(&a), huge(&b));
+            for (a, b, complement) in [(&a, &b, false), (&a, &b, true), (&far, &b, false), (&ha, &hb, false)] {
                 let (fa, mut fb) = (solid::<Float>(a), solid::<Float>(b));
                 let (ea, mut eb) = (solid::<Rational>(a), solid::<Rational>(b));
                 if complement {

@@ -14,6 +14,7 @@ use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, Num};
 use crate::union_find::UnionFind;
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
 impl<N: Num> YinSet3<N> {
@@ -111,7 +112,8 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// triangle with a moved vertex meets every other triangle exactly in their shared vertices
 /// and edges (a degenerate one fails against its neighbours across its edges). Decided by
 /// exact orientations of the points' values, nothing constructed — false where that cannot
-/// tell, and then the caller validates in full. Every other pair meets as it did.
+/// tell, and then the caller validates in full. Every other pair meets as it did. On rayon's
+/// threads.
 pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
     let exact = &N::exact_ctx();
     let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
@@ -123,11 +125,14 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
             apart(t.map(|v| &b.points[v]), s.map(|v| &b.points[v]), exact)
         }
     };
-    (0..b.tris.len()).filter(|&t| touched[t]).all(|t| {
-        boxes
-            .meeting(&f64_box(b.corners(t)))
-            .all(|u| u == t || (touched[u] && u < t) || meet_in_shared(b.tris[t], b.tris[u]))
-    })
+    (0..b.tris.len())
+        .into_par_iter()
+        .filter(|&t| touched[t])
+        .all(|t| {
+            boxes
+                .meeting(&f64_box(b.corners(t)))
+                .all(|u| u == t || (touched[u] && u < t) || meet_in_shared(b.tris[t], b.tris[u]))
+        })
 }
 
 impl Yin3Error {
