@@ -6,8 +6,8 @@
 //! [`Yin3Error::Unrepresentable`]. Operands that cross transversally take the
 //! construction-light path of [`super::transversal`], others the general exact meet.
 
-use super::betti::Betti3;
 use super::error::Yin3Error;
+use super::kept::{provably_kept, Topology};
 use super::set::{compact, Brep, YinSet3};
 use super::transversal::transversal_meet;
 use super::validate::{check_windings, conforming_after_moves, revalidate};
@@ -29,14 +29,24 @@ pub(crate) fn float_meet<N: Num>(
             }
             let (points, kept) = compact(points, kept);
             let rounded = rounded_points(&points)?;
-            let keep = Topology::of(&Brep::assemble(points.clone(), kept.clone())?);
+            let exact = || Ok(Topology::of(&Brep::assemble(points.clone(), kept.clone())?));
             return Ok(YinSet3::from_brep(
-                rounded_complex(&points, rounded, kept, &keep)?,
+                rounded_complex(&points, rounded, kept.clone(), exact)?,
                 ctx,
             ));
         }
     }
-    rounded_set(&exact_set(a).meet(&exact_set(b)), ctx)
+    rounded_exact(a, b, ctx, YinSet3::meet)
+}
+
+/// `op` computed exactly on the operands' values and rounded once, under the context `ctx`.
+pub(crate) fn rounded_exact<N: Num>(
+    a: &YinSet3<N>,
+    b: &YinSet3<N>,
+    ctx: N::Ctx,
+    op: impl Fn(&YinSet3<Rational>, &YinSet3<Rational>) -> YinSet3<Rational>,
+) -> Result<YinSet3<N>, Yin3Error> {
+    rounded_set(&op(&exact_set(a), &exact_set(b)), ctx)
 }
 
 /// The exact value of a float vertex.
@@ -85,7 +95,7 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
             .clone()
             .map_points(|_| points.next().expect("one rounded point per point")));
     }
-    rounded_complex(&b.points, rounded, b.tris.clone(), &Topology::of(b))
+    rounded_complex(&b.points, rounded, b.tris.clone(), || Ok(Topology::of(b)))
 }
 
 /// The nearest `f64` points.
@@ -104,17 +114,20 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 /// is validated. Otherwise vertices that round to one point are merged, triangles that
 /// collapse to a segment or a point are dropped (each takes a pair of opposite fins off an
 /// edge, so closed surfaces stay closed), and the rounded boundary is validated exactly. The
-/// result must have the topology `keep` of the exact one. Any failure is
-/// [`Yin3Error::Unrepresentable`].
+/// result must have the exact one's topology, computed by `keep` unless [`provably_kept`]
+/// shows it. Any failure is [`Yin3Error::Unrepresentable`].
 fn rounded_complex<N: Num>(
     exact: &[Point3<Rational>],
     rounded: Vec<Point3<N>>,
     tris: Vec<[usize; 3]>,
-    keep: &Topology,
+    keep: impl FnOnce() -> Result<Topology, Yin3Error>,
 ) -> Result<Brep<N>, Yin3Error> {
-    let brep = rounded_boundary(exact, rounded, tris)?;
-    let got = Topology::of(&brep);
-    if got != *keep {
+    let (brep, same_triangles) = rounded_boundary(exact, rounded, tris)?;
+    if same_triangles && provably_kept(&brep) {
+        return Ok(brep);
+    }
+    let (keep, got) = (keep()?, Topology::of(&brep));
+    if got != keep {
         return Err(unrepresentable(&format!(
             "rounding to f64 changes the topology of the result (exact: {keep}; rounded: {got})"
         )));
@@ -122,12 +135,13 @@ fn rounded_complex<N: Num>(
     Ok(brep)
 }
 
-/// The valid boundary of [`rounded_complex`], before its topology is compared.
+/// The valid boundary of [`rounded_complex`], before its topology is compared, and whether it
+/// has the triangles `tris` (no point merged, the numbering kept).
 fn rounded_boundary<N: Num>(
     exact: &[Point3<Rational>],
     rounded: Vec<Point3<N>>,
     tris: Vec<[usize; 3]>,
-) -> Result<Brep<N>, Yin3Error> {
+) -> Result<(Brep<N>, bool), Yin3Error> {
     if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
         let moved: Vec<bool> = rounded
             .iter()
@@ -136,12 +150,13 @@ fn rounded_boundary<N: Num>(
             .collect();
         let brep = Brep::assemble(rounded, tris.clone()).map_err(|e| unrepresentable(&e))?;
         // Assembling a compact boundary keeps its numbering, so `moved` still applies.
-        if brep.tris == tris && conforming_after_moves(&brep, &moved) {
+        let same = brep.tris == tris;
+        if same && conforming_after_moves(&brep, &moved) {
             check_windings(&exact_brep(&brep), &()).map_err(|e| unrepresentable(&e))?;
         } else {
             revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
         }
-        return Ok(brep);
+        return Ok((brep, same));
     }
     let mut index: HashMap<Point3<N>, usize> = HashMap::new();
     let mut points = Vec::new();
@@ -164,52 +179,7 @@ fn rounded_boundary<N: Num>(
     }
     let brep = Brep::assemble(points, tris).map_err(|e| unrepresentable(&e))?;
     revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
-    Ok(brep)
-}
-
-/// What rounding must keep of a set (README, "3D float mode"): boundedness, the Betti
-/// numbers, and each glued surface's orientation, genus and depth in the Hasse diagram
-/// (seed 003 Def. 7.3, 7.6), as a sorted list.
-#[derive(Debug, PartialEq)]
-struct Topology {
-    bounded: bool,
-    betti: Betti3,
-    surfaces: Vec<(bool, usize, usize)>,
-}
-
-impl Topology {
-    /// The topology of the set bounded by `b`.
-    fn of<N: Num>(b: &Brep<N>) -> Topology {
-        let depth = |mut s: usize| {
-            let mut d = 0;
-            while let Some(p) = b.parent[s] {
-                (s, d) = (p, d + 1);
-            }
-            d
-        };
-        let mut surfaces: Vec<_> = (b.surfaces.iter().enumerate())
-            .map(|(s, g)| (g.positive, g.genus, depth(s)))
-            .collect();
-        surfaces.sort_unstable();
-        Topology {
-            bounded: b.bounded,
-            betti: b.betti(),
-            surfaces,
-        }
-    }
-}
-
-impl std::fmt::Display for Topology {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        let Betti3 { b0, b1, b2 } = self.betti;
-        let pos = self.surfaces.iter().filter(|s| s.0).count();
-        let neg = self.surfaces.len() - pos;
-        let bounded = if self.bounded { "bounded" } else { "unbounded" };
-        write!(
-            f,
-            "{bounded}, Betti ({b0}, {b1}, {b2}), {pos} positive and {neg} negative glued surfaces"
-        )
-    }
+    Ok((brep, false))
 }
 
 /// The exact set `y` rounded ([`rounded_brep`]), under the context `ctx`.

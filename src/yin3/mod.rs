@@ -11,6 +11,7 @@ mod float;
 mod geom;
 mod glue;
 mod hasse;
+mod kept;
 mod locate;
 mod meet;
 mod ops;

@@ -2,6 +2,7 @@
 //! difference, and the operators `!`, `&`, `|`, `-`, `^` (DESIGN-3D §2.9–2.10).
 
 use super::error::Yin3Error;
+use super::float::rounded_exact;
 use super::set::{Brep, Repr3, YinSet3};
 use crate::num::Num;
 use rayon::prelude::*;
@@ -59,8 +60,13 @@ impl<N: Num> YinSet3<N> {
         or_panic(self.try_symmetric_difference(other), "symmetric difference")
     }
 
-    /// The symmetric difference, or float mode's error ([`YinSet3::try_meet`]).
+    /// The symmetric difference, or float mode's error ([`YinSet3::try_meet`]). Float mode
+    /// computes it exactly and rounds once, so that it keeps the exact result's topology.
     pub fn try_symmetric_difference(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
+        if !N::EXACT {
+            let ctx = N::combine_ctx(self.ctx, other.ctx);
+            return rounded_exact(self, other, ctx, YinSet3::symmetric_difference);
+        }
         self.try_difference(other)?
             .try_join(&other.try_difference(self)?)
     }

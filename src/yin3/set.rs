@@ -357,6 +357,34 @@ impl<N: Num> YinSet3<N> {
         }
     }
 
+    /// The area of the boundary (the interface area between the set and its complement), in
+    /// `f64` in either mode: each triangle's area |(q − p) × (r − p)| / 2 takes a square root.
+    /// 0 for 0̂ and 1̂.
+    ///
+    /// ```
+    /// use yinset::kernel::Point3;
+    /// use yinset::num::{Num, Rational};
+    /// use yinset::yin3::YinSet3;
+    /// let p = |x, y, z| Point3::new(Rational::from_i64(x), Rational::from_i64(y), Rational::from_i64(z));
+    /// let boxed = YinSet3::cuboid(&p(0, 0, 0), &p(1, 2, 3)).unwrap();
+    /// assert_eq!(boxed.boundary_area(), 22.0);
+    /// assert_eq!(boxed.complement().boundary_area(), 22.0);
+    /// ```
+    pub fn boundary_area(&self) -> f64 {
+        let area = |[p, q, r]: [&Point3<N>; 3]| {
+            let [p, q, r] = [p, q, r].map(|x| x.to_f64());
+            let u = [0, 1, 2].map(|k| q[k] - p[k]);
+            let w = [0, 1, 2].map(|k| r[k] - p[k]);
+            let n = [
+                u[1] * w[2] - u[2] * w[1],
+                u[2] * w[0] - u[0] * w[2],
+                u[0] * w[1] - u[1] * w[0],
+            ];
+            (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt() / 2.0
+        };
+        self.brep().map_or(0.0, |b| b.all_corners().map(area).sum())
+    }
+
     /// The bounding box of the boundary (`None` for 0̂ and 1̂).
     pub fn bbox(&self) -> Option<BBox3<N>> {
         BBox3::of(self.vertices())

@@ -1,0 +1,240 @@
+//! Whether rounding a result's vertices to `f64` kept its topology (README, "3D float mode"):
+//! [`Topology`], compared between the exact and the rounded boundary, and [`provably_kept`],
+//! a sufficient test that needs no exact structure.
+
+use super::betti::Betti3;
+use super::fins::Pairing;
+use super::glue::corner_cycles;
+use super::set::Brep;
+use crate::num::Num;
+
+/// What rounding must keep of a set: boundedness, the Betti numbers, and each glued surface's
+/// orientation, genus and depth in the Hasse diagram (seed 003 Def. 7.3, 7.6), sorted.
+#[derive(Debug, PartialEq)]
+pub(crate) struct Topology {
+    bounded: bool,
+    betti: Betti3,
+    surfaces: Vec<(bool, usize, usize)>,
+}
+
+impl Topology {
+    /// The topology of the set bounded by `b`.
+    pub(crate) fn of<N: Num>(b: &Brep<N>) -> Topology {
+        let depth = |mut s: usize| {
+            let mut d = 0;
+            while let Some(p) = b.parent[s] {
+                (s, d) = (p, d + 1);
+            }
+            d
+        };
+        let mut surfaces: Vec<_> = (b.surfaces.iter().enumerate())
+            .map(|(s, g)| (g.positive, g.genus, depth(s)))
+            .collect();
+        surfaces.sort_unstable();
+        Topology {
+            bounded: b.bounded,
+            betti: b.betti(),
+            surfaces,
+        }
+    }
+}
+
+impl std::fmt::Display for Topology {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        let Betti3 { b0, b1, b2 } = self.betti;
+        let pos = self.surfaces.iter().filter(|s| s.0).count();
+        let neg = self.surfaces.len() - pos;
+        let bounded = if self.bounded { "bounded" } else { "unbounded" };
+        write!(
+            f,
+            "{bounded}, Betti ({b0}, {b1}, {b2}), {pos} positive and {neg} negative glued surfaces"
+        )
+    }
+}
+
+/// The unit roundoff of `f64`, 2⁻⁵³.
+const U: f64 = f64::EPSILON / 2.0;
+
+/// True only if the rounded boundary `b` — the exact boundary's very triangles, each vertex
+/// moved to its nearest `f64` — has the exact boundary's [`Topology`]. Sufficient: every edge
+/// has two fins and every vertex one corner cycle, so the boundary is disjoint closed
+/// surfaces, and the set's topology is their orientations and nesting; each surface's signed
+/// volume (positive iff it is positively oriented, Def. 7.3) is farther from 0 than rounding
+/// and the `f64` sum can move it; and no two surfaces' boxes come within the rounding of each
+/// other, so no surface is nested in another, exactly or rounded.
+pub(crate) fn provably_kept<N: Num>(b: &Brep<N>) -> bool {
+    if b.table.fins.iter().any(|f| f.len() != 2) {
+        return false;
+    }
+    let mut cycles = corner_cycles(&b.table, &b.tris, None, Pairing::Inside);
+    let mut cycle_at = vec![usize::MAX; b.points.len()];
+    for (t, tri) in b.tris.iter().enumerate() {
+        for (k, &v) in tri.iter().enumerate() {
+            let c = cycles.find(3 * t + k);
+            if cycle_at[v] == usize::MAX {
+                cycle_at[v] = c;
+            } else if cycle_at[v] != c {
+                return false;
+            }
+        }
+    }
+    let p: Vec<[f64; 3]> = b.points.iter().map(|q| q.to_f64()).collect();
+    let largest = p.iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 {
+        return false;
+    }
+    // Scaled by a power of two to below 2 (exact, or off by a subnormal's half ulp where a
+    // tiny coordinate beside a huge one underflows), so that no product overflows.
+    let k = -(largest.log2().floor() as i32);
+    let p: Vec<[f64; 3]> = p.iter().map(|v| v.map(|c| times_pow2(c, k))).collect();
+    // Each exact coordinate is within half an ulp of its rounding (a subnormal's too), and of
+    // the scaled rounding within that plus half a subnormal ulp.
+    let moved = 2.0 * U * times_pow2(largest, k) + 2.0 * f64::from_bits(1);
+    let boxes: Vec<[[f64; 3]; 2]> = b
+        .surfaces
+        .iter()
+        .map(|s| {
+            let mut bx = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+            for &t in &s.triangles {
+                for &v in &b.tris[t] {
+                    for k in 0..3 {
+                        bx[0][k] = bx[0][k].min(p[v][k]);
+                        bx[1][k] = bx[1][k].max(p[v][k]);
+                    }
+                }
+            }
+            bx
+        })
+        .collect();
+    let apart = |x: &[[f64; 3]; 2], y: &[[f64; 3]; 2]| {
+        (0..3).any(|k| x[1][k] + 4.0 * moved < y[0][k] || y[1][k] + 4.0 * moved < x[0][k])
+    };
+    let nested =
+        (0..boxes.len()).any(|i| (i + 1..boxes.len()).any(|j| !apart(&boxes[i], &boxes[j])));
+    !nested
+        && b.surfaces
+            .iter()
+            .zip(&boxes)
+            .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
+}
+
+/// c·2^k, in steps that neither overflow nor underflow on the way.
+fn times_pow2(c: f64, k: i32) -> f64 {
+    let step = |c: f64, k: i32| c * 2f64.powi(k);
+    let half = k / 2;
+    step(step(c, half), k - half)
+}
+
+/// Whether the signed volume of the closed surface of triangles `tris` over the points `p`
+/// (inside the box `bx`) has the sign it had before every coordinate moved by up to `moved`:
+/// 6V = Σ det(a − o, b − o, c − o) for any origin o, here the box's low corner; each
+/// determinant moves by at most 6((M + 2δ)³ − (M + δ)³) = 6(3M²δ + 9Mδ² + 7δ³) when its
+/// vectors (at most M in each coordinate) move by δ, and the `f64` sum of n determinants errs
+/// by at most (n + 16)·2u times the sum of the absolute values of their products.
+fn volume_sign_kept(
+    p: &[[f64; 3]],
+    tris: impl Iterator<Item = [usize; 3]>,
+    bx: &[[f64; 3]; 2],
+    moved: f64,
+) -> bool {
+    let o = bx[0];
+    let m = (0..3).fold(0.0f64, |m, k| m.max(bx[1][k] - o[k])) * (1.0 + 4.0 * U);
+    let (mut sum, mut magnitude, mut n) = (0.0, 0.0, 0.0);
+    for [i, j, k] in tris {
+        let d = |v: usize| [0, 1, 2].map(|c| p[v][c] - o[c]);
+        let (a, b, c) = (d(i), d(j), d(k));
+        let terms = [
+            a[0] * b[1] * c[2],
+            -a[0] * b[2] * c[1],
+            a[1] * b[2] * c[0],
+            -a[1] * b[0] * c[2],
+            a[2] * b[0] * c[1],
+            -a[2] * b[1] * c[0],
+        ];
+        sum += terms.iter().sum::<f64>();
+        magnitude += terms.iter().map(|t| t.abs()).sum::<f64>();
+        n += 1.0;
+    }
+    let d = moved;
+    let geometric = n * 6.0 * (3.0 * m * m * d + 9.0 * m * d * d + 7.0 * d * d * d);
+    let arithmetic = (n + 16.0) * 2.0 * U * magnitude;
+    sum.abs() > 1.01 * (geometric + arithmetic)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Point3;
+    use crate::num::{Float, Tolerance};
+    use crate::yin3::shapes::{concat, cuboid};
+    use crate::yin3::YinSet3;
+
+    /// The float set bounded by the boxes `[lo, hi]` (each reversed if `hi < lo` on x).
+    fn boxes_set(corners: &[([f64; 3], [f64; 3])]) -> YinSet3<Float> {
+        let p = |v: [f64; 3]| Point3::new(Float::new(v[0]), Float::new(v[1]), Float::new(v[2]));
+        let (v, f) = concat(
+            corners
+                .iter()
+                .map(|(lo, hi)| cuboid(&p(*lo), &p(*hi)))
+                .collect(),
+        );
+        YinSet3::from_triangles_with(v, f, Tolerance::new(0.0)).expect("valid boxes")
+    }
+
+    fn boxes(corners: &[([f64; 3], [f64; 3])]) -> Brep<Float> {
+        boxes_set(corners).brep().expect("a boundary").clone()
+    }
+
+    /// Unit cubes (0,0,0) and (1,1,0) meet at an edge, joined also through (0,0,1), (0,1,1)
+    /// and (1,1,1): one glued surface with four fins on that edge, not a closed manifold.
+    #[test]
+    fn a_surface_through_an_edge_is_not_provable() {
+        let cube = |c: [f64; 3]| boxes_set(&[(c, c.map(|x| x + 1.0))]);
+        let cells = [
+            [0.0, 0.0, 1.0],
+            [0.0, 1.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [1.0, 1.0, 0.0],
+        ];
+        let y = (cells.iter()).fold(cube([0.0; 3]), |y, &c| y.try_join(&cube(c)).expect("join"));
+        assert_eq!(y.surfaces().len(), 1);
+        assert!(!provably_kept(y.brep().expect("a boundary")));
+    }
+
+    #[test]
+    fn a_box_far_from_flat_keeps_its_topology() {
+        assert!(provably_kept(&boxes(&[([0.0; 3], [1.0; 3])])));
+        assert!(provably_kept(&boxes(&[([1e300; 3], [1.5e300; 3])])));
+    }
+
+    /// A box thinner than what rounding its vertices could move it by: its orientation is not
+    /// provable (the sign of the volume is the exact result's only if nothing moved).
+    #[test]
+    fn a_sliver_thinner_than_rounding_is_not_provable() {
+        let thin = 1.0 + 4.0 * f64::EPSILON;
+        assert!(!provably_kept(&boxes(&[(
+            [0.0, 0.0, 1.0],
+            [1.0, 1.0, thin]
+        )])));
+        assert!(provably_kept(&boxes(&[(
+            [0.0, 0.0, 1.0],
+            [1.0, 1.0, 1.0 + 1e-9]
+        )])));
+    }
+
+    /// Two boxes apart are provable; a box inside the other's cavity (nested) and boxes sharing
+    /// an edge (four fins on it) or boxes whose boxes come within rounding are not.
+    #[test]
+    fn nesting_and_contact_are_not_provable() {
+        assert!(provably_kept(&boxes(&[
+            ([0.0; 3], [1.0; 3]),
+            ([2.0; 3], [3.0; 3])
+        ])));
+        let cavity = ([4.0, 1.0, 1.0], [1.0, 4.0, 4.0]);
+        assert!(!provably_kept(&boxes(&[([0.0; 3], [5.0; 3]), cavity])));
+        let edge = ([1.0, 1.0, 0.0], [2.0, 2.0, 1.0]);
+        assert!(!provably_kept(&boxes(&[([0.0; 3], [1.0; 3]), edge])));
+        let near = ([1.0 + f64::EPSILON, 0.0, 0.0], [2.0, 1.0, 1.0]);
+        assert!(!provably_kept(&boxes(&[([0.0; 3], [1.0; 3]), near])));
+    }
+}
