@@ -20,7 +20,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-TARGETS=(parse_yin2 parse_wkt parse_geojson construct ops_exact ops_float parse_obj construct3 ops3_exact)
+TARGETS=(parse_yin2 parse_wkt parse_geojson construct ops_exact ops_float parse_obj construct3 ops3_exact ops3_float)
 
 usage() {
     sed -n '3,6p' "$0" | sed 's/^# \{0,1\}//' >&2
@@ -30,7 +30,7 @@ usage() {
 seeds_of() {
     case "$1" in
     ops_exact | ops_float) echo ops ;;
-    ops3_exact) echo ops3 ;;
+    ops3_exact | ops3_float) echo ops3 ;;
     *) echo "$1" ;;
     esac
 }

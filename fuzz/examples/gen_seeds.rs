@@ -10,8 +10,9 @@
 //! * `construct`: each figure configuration as one curve list (valid and invalid ones).
 //! * `parse_yin2`, `parse_wkt`, `parse_geojson`: small texts in each format, the figures
 //!   written by the crate's writers, a panda curve, JTS WKT, small Martinez/GIS GeoJSON files.
-//! * `ops3` (target `ops3_exact`): the degenerate configurations of DESIGN-3D §3
-//!   (tests/yin3_degenerate.rs) as operand pairs on the lattice, axis-aligned and rotated.
+//! * `ops3` (targets `ops3_exact`, `ops3_float`): the degenerate configurations of DESIGN-3D §3
+//!   (tests/yin3_degenerate.rs) as operand pairs on the lattice, axis-aligned and rotated, and
+//!   each once more with a float-mode placement in turn (B moved off the lattice, ε, scale).
 //! * `construct3`: those solids' meshes alone and two in one face list, invalid meshes (an open
 //!   box, a flipped face, crossing boxes, nested boxes of one orientation, bad faces), and the
 //!   small shared meshes of `../shared/data/3d` rounded onto the lattice.
@@ -34,11 +35,11 @@ use yinset_fuzz::input::{
     MAX_POINTS, NONZERO,
 };
 use yinset_fuzz::input3::{
-    Combine, Construct3Input, LatticePoint, Operand, Ops3Input, Probe3, Solid, LATTICE, MAX_FACES3,
-    MAX_VERTICES3, ROTATE,
+    Combine, Construct3Input, LatticePoint, Operand, Ops3Input, Place3, Probe3, Solid, LATTICE,
+    MAX_FACES3, MAX_VERTICES3, MOVE_NONE, MOVE_SCALE, MOVE_SHIFT, MOVE_THIRDS, ROTATE,
 };
 use yinset_fuzz::text;
-use yinset_fuzz::{check, check3};
+use yinset_fuzz::{check, check3, check3_float};
 
 type Ring = Vec<(u8, u8)>;
 
@@ -811,7 +812,41 @@ fn solid_obj(name: &str, s: &Solid, rotate: bool) -> Option<String> {
     Some(obj::write_obj(&v, &[(name.to_string(), tris)]))
 }
 
+/// 3D float mode's placements (input3.rs, Place3): B moved off the lattice (general position,
+/// the transversal path) or by a coarse unit (still degenerate), ε from coarse to too fine,
+/// and the ends of the `f64` range.
+fn placements3() -> Vec<(&'static str, Place3)> {
+    let place = |mode, k, exp, eps, scale| Place3 {
+        mode,
+        k,
+        exp,
+        eps,
+        scale,
+    };
+    vec![
+        // B shifted by (1, 2, 3)·2⁻²⁰: every contact becomes a proper crossing.
+        ("shift_fine", place(MOVE_SHIFT, [1, 2, 3], 20, 0, 0)),
+        // B shifted by (½, ½, ½): a coarse move (the Betti numbers are checked).
+        ("shift_half", place(MOVE_SHIFT, [1, 1, 1], 1, 0, 0)),
+        // B shifted by 2⁻⁴⁰ with ε = 2⁻³⁰: moved by less than ε.
+        ("shift_below_eps", place(MOVE_SHIFT, [1, -1, 1], 40, 30, 0)),
+        // B scaled about (2, 2, 2) by 1 + (1, −2, 3)·2⁻¹⁰: planes through the centre kept.
+        ("scaled_axes", place(MOVE_SCALE, [1, -2, 3], 10, 0, 0)),
+        // B shifted by the f64s nearest (5, 7, 11)/48: full mantissas.
+        ("thirds", place(MOVE_THIRDS, [5, 7, 11], 4, 0, 0)),
+        // Everything times 2⁻⁸⁹⁶ and 2⁸⁸⁹, B shifted finely.
+        ("tiny", place(MOVE_SHIFT, [1, 2, 3], 20, 0, -128)),
+        ("huge", place(MOVE_SHIFT, [1, 2, 3], 20, 0, 127)),
+        // ε = 2⁻⁵⁵: too fine for coordinates up to 4 (ToleranceTooFine).
+        ("eps_too_fine", place(MOVE_NONE, [0; 3], 0, 55, 0)),
+        // ε = ½, B shifted by (3, 2, 1)/64.
+        ("eps_half", place(MOVE_SHIFT, [3, 2, 1], 6, 1, 0)),
+    ]
+}
+
 fn generate3(seeds: &mut Seeds) {
+    let places = placements3();
+    let mut k = 0;
     for (name, a, b) in figure_pairs3() {
         for flags in [0, ROTATE] {
             let input = Ops3Input {
@@ -819,9 +854,18 @@ fn generate3(seeds: &mut Seeds) {
                 a: a.clone(),
                 b: b.clone(),
                 probes: probes3(),
+                place: Place3::default(),
             };
             let suffix = if flags == ROTATE { "_rotated" } else { "" };
             seeds.add("ops3", format!("fig_{name}{suffix}"), input.encode());
+            // The same pair placed for float mode (ops3_float; ops3_exact ignores it).
+            let (place_name, place) = places[k % places.len()];
+            k += 1;
+            seeds.add(
+                "ops3",
+                format!("float_{place_name}_{name}{suffix}"),
+                Ops3Input { place, ..input }.encode(),
+            );
         }
         // The constructor: each operand's solids, and both first solids as one face list.
         let meshes: Vec<_> = [&a.first, &a.second, &b.first]
@@ -937,7 +981,11 @@ fn replay(corpus: &str, bytes: &[u8]) -> Result<(), String> {
         "parse_yin2" => text::yin2(&text::text_of(bytes)),
         "parse_wkt" => text::wkt(&text::text_of(bytes)),
         "parse_geojson" => text::geojson(&text::text_of(bytes)),
-        "ops3" => check3::ops3_exact(&yinset_fuzz::input::decode(bytes).expect("decodes")),
+        "ops3" => {
+            let input: Ops3Input = yinset_fuzz::input::decode(bytes).expect("decodes");
+            check3::ops3_exact(&input);
+            check3_float::ops3_float(&input);
+        }
         "construct3" => check3::construct3(&yinset_fuzz::input::decode(bytes).expect("decodes")),
         "parse_obj" => check3::obj(&text::text_of(bytes)),
         other => panic!("unknown corpus {other}"),

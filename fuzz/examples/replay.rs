@@ -6,7 +6,7 @@
 //! ```
 use yinset_fuzz::input::{decode, ConstructInput, OpsInput};
 use yinset_fuzz::input3::{Construct3Input, Ops3Input};
-use yinset_fuzz::{check, check3, text};
+use yinset_fuzz::{check, check3, check3_float, text};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -35,10 +35,14 @@ fn main() {
             "parse_yin2" => text::yin2(&text::text_of(&data)),
             "parse_wkt" => text::wkt(&text::text_of(&data)),
             "parse_geojson" => text::geojson(&text::text_of(&data)),
-            "ops3_exact" => {
+            "ops3_exact" | "ops3_float" => {
                 let input: Ops3Input = decode(&data).expect("decodes");
                 eprintln!("{input:?}");
-                check3::ops3_exact(&input);
+                if target == "ops3_exact" {
+                    check3::ops3_exact(&input);
+                } else {
+                    check3_float::ops3_float(&input);
+                }
             }
             "construct3" => {
                 let input: Construct3Input = decode(&data).expect("decodes");

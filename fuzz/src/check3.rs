@@ -39,8 +39,9 @@ fn lattice(p: LatticePoint, rotate: bool) -> P3 {
     point(p.0.map(|c| 2 * i64::from(c)), rotate)
 }
 
-/// A short description of a set for failure messages: 0̂, 1̂, or its triangles.
-pub fn show(y: &Y3) -> String {
+/// A short description of a set for failure messages: 0̂, 1̂, or its triangles (float
+/// vertices as the shortest decimals that read back to them).
+pub fn show<N: Num>(y: &YinSet3<N>) -> String {
     if y.is_empty() {
         return "0̂".into();
     }

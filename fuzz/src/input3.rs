@@ -7,7 +7,7 @@
 //! gives the bytes back, for the seed generator.
 //!
 //! ```text
-//! Ops3Input       := flags:u8 Operand Operand Probes3
+//! Ops3Input       := flags:u8 Operand Operand Probes3 Place3
 //! flags           := bit 0: rotate everything by the rational rotation ROTATION
 //! Operand         := flags:u8 Solid Solid       bit 0: complement; bits 1-2: how the two
 //!                                               solids combine (0: the first alone, 1: ∨, 2: ∧,
@@ -22,6 +22,18 @@
 //! point           := byte % 125 = x + 5y + 25z  (lattice 0..=4)
 //! Probes3         := n:u8 probe:u8{n % (MAX_PROBES3+1)}
 //! probe           := byte % 216 = i + 6j + 36k: the point (i − ½, j − ½, k − ½)
+//! Place3          := mode:u8 k:i8{3} exp:u8 eps:u8 scale:i8    (ops3_float only; absent
+//!                    bytes read 0: B not moved, the default ε, unit scale)
+//! mode            := % 4: how B's f64 values leave the lattice, with d = 2^-(exp % 64):
+//!                    0 not at all; 1 shifted by (k0, k1, k2)·d (exact unless rounded);
+//!                    2 scaled about (2, 2, 2) by 1 + k_c·d along axis c; 3 shifted by the
+//!                    f64 nearest k_c·d/3 (full mantissas)
+//! eps             := % 56: 0 the default ε (relative to each operand's extent), else
+//!                    ε = 2^-eps (times the scale; fine ones are ToleranceTooFine)
+//! scale           := everything times 2^(7·scale): 2^-896 … 2^889
+//!
+//! The Place3 bytes come last so that inputs without them (the seeds written before they
+//! existed) decode as before: B on the lattice, the default ε, unit scale.
 //!
 //! Construct3Input := nverts:u8 point:u8{nverts % (MAX_VERTICES3+1)}
 //!                    nfaces:u8 Face{nfaces % (MAX_FACES3+1)}
@@ -264,7 +276,92 @@ fn encode_probes(probes: &[Probe3], out: &mut Vec<u8>) {
     }
 }
 
-/// Input of the 3D binary-operation target.
+/// How B's `f64` values leave the lattice ([`Place3::mode`]).
+pub const MOVE_NONE: u8 = 0;
+/// B shifted by k·d (d = 2^-exp).
+pub const MOVE_SHIFT: u8 = 1;
+/// B scaled about (2, 2, 2) by 1 + k_c·d along each axis c.
+pub const MOVE_SCALE: u8 = 2;
+/// B shifted by the `f64` nearest k·d/3.
+pub const MOVE_THIRDS: u8 = 3;
+/// Largest ε exponent: ε = 2^-eps, eps < EPS3_STEPS.
+pub const EPS3_STEPS: u8 = 56;
+/// The scale is 2^(SCALE3_STEP · scale).
+pub const SCALE3_STEP: i32 = 7;
+
+/// Where float mode (target `ops3_float`) puts the operands: B optionally moved off the lattice
+/// by a small shift or scale, everything optionally scaled by a power of two, and ε.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Place3 {
+    /// [`MOVE_NONE`], [`MOVE_SHIFT`], [`MOVE_SCALE`] or [`MOVE_THIRDS`].
+    pub mode: u8,
+    /// The multiples k_c of the unit, per axis.
+    pub k: [i8; 3],
+    /// The unit d = 2^-exp (exp < 64).
+    pub exp: u8,
+    /// 0: the default ε; else ε = 2^-eps (eps < [`EPS3_STEPS`]), before scaling.
+    pub eps: u8,
+    /// Every coordinate and ε times 2^(SCALE3_STEP · scale).
+    pub scale: i8,
+}
+
+impl Place3 {
+    fn decode(u: &mut Unstructured<'_>) -> Result<Place3> {
+        let mode = u8::arbitrary(u)? % 4;
+        let mut k = [0i8; 3];
+        for c in &mut k {
+            *c = u8::arbitrary(u)? as i8;
+        }
+        Ok(Place3 {
+            mode,
+            k,
+            exp: u8::arbitrary(u)? % 64,
+            eps: u8::arbitrary(u)? % EPS3_STEPS,
+            scale: u8::arbitrary(u)? as i8,
+        })
+    }
+
+    /// The bytes of a placement; none for the default one (missing bytes read as 0), so that
+    /// inputs without it keep their earlier encoding.
+    fn encode(&self, out: &mut Vec<u8>) {
+        assert!(
+            self.mode < 4 && self.exp < 64 && self.eps < EPS3_STEPS,
+            "bad placement"
+        );
+        if *self != Place3::default() {
+            out.extend([
+                self.mode,
+                self.k[0] as u8,
+                self.k[1] as u8,
+                self.k[2] as u8,
+                self.exp,
+                self.eps,
+                self.scale as u8,
+            ]);
+        }
+    }
+
+    /// True if B leaves the lattice (a move with some k_c ≠ 0).
+    pub fn moves(&self) -> bool {
+        self.mode != MOVE_NONE && self.k != [0; 3]
+    }
+
+    /// The exponent of the scale 2^s.
+    pub fn exponent(&self) -> i32 {
+        SCALE3_STEP * i32::from(self.scale)
+    }
+
+    /// ε before scaling; 0 asks for the default.
+    pub fn eps(&self) -> f64 {
+        if self.eps == 0 {
+            0.0
+        } else {
+            2f64.powi(-i32::from(self.eps))
+        }
+    }
+}
+
+/// Input of the 3D binary-operation targets.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct Ops3Input {
     /// [`ROTATE`].
@@ -272,6 +369,8 @@ pub struct Ops3Input {
     pub a: Operand,
     pub b: Operand,
     pub probes: Vec<Probe3>,
+    /// Float mode only (`ops3_float`): B's move, ε and the scale.
+    pub place: Place3,
 }
 
 impl<'a> Arbitrary<'a> for Ops3Input {
@@ -281,6 +380,7 @@ impl<'a> Arbitrary<'a> for Ops3Input {
             a: Operand::decode(u)?,
             b: Operand::decode(u)?,
             probes: decode_probes(u)?,
+            place: Place3::decode(u)?,
         })
     }
 }
@@ -292,6 +392,7 @@ impl Ops3Input {
         self.a.encode(&mut out);
         self.b.encode(&mut out);
         encode_probes(&self.probes, &mut out);
+        self.place.encode(&mut out);
         out
     }
 }
@@ -370,8 +471,21 @@ mod tests {
                 mask: 0b1001_0110,
             }),
             probes: vec![Probe3([0, 5, 3]), Probe3([5, 5, 5])],
+            place: Place3::default(),
         };
         assert_eq!(decode::<Ops3Input>(&input.encode()).unwrap(), input);
+        let placed = Ops3Input {
+            place: Place3 {
+                mode: MOVE_THIRDS,
+                k: [-128, 0, 127],
+                exp: 63,
+                eps: EPS3_STEPS - 1,
+                scale: -128,
+            },
+            ..input.clone()
+        };
+        assert_eq!(placed.encode().len(), input.encode().len() + 7);
+        assert_eq!(decode::<Ops3Input>(&placed.encode()).unwrap(), placed);
         let c = Construct3Input {
             vertices: vec![LatticePoint::new(4, 4, 4), LatticePoint::new(0, 1, 2)],
             faces: vec![vec![0, 1, 2], vec![1, 0, 1, 0, 2, 2]],
