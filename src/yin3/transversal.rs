@@ -353,6 +353,7 @@ mod tests {
     use super::*;
     use crate::num::Float;
     use crate::yin3::set::compact;
+    use crate::yin3::shapes::cuboid;
     use crate::yin3::YinSet3;
     use proptest::prelude::*;
 
@@ -365,14 +366,9 @@ mod tests {
         let corners = (0..8)
             .map(|i| [0, 1, 2].map(|k| o[k] + s * (f64::from(i >> k & 1) + jitter[i as usize][k])))
             .collect();
-        let quads = [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ];
+        // The unit cube's quads, with cuboid's corner numbering (bit k of i: coordinate k).
+        let unit = |v: i64| Point3::new(Float::from_i64(v), Float::from_i64(v), Float::from_i64(v));
+        let (_, quads) = cuboid(&unit(0), &unit(1));
         let tris = quads
             .iter()
             .flat_map(|q| [vec![q[0], q[1], q[2]], vec![q[0], q[2], q[3]]])
