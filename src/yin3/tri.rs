@@ -82,8 +82,8 @@ pub(crate) fn intersect<N: Num>(
 
 /// True if the closed triangles `t` and `s` are shown disjoint by orientations of their
 /// vertices alone (false where that cannot tell): one lies strictly on one side of the
-/// other's plane, or touches it only in vertices that the other misses
-/// ([`misses_in_plane`]), or [`separated`] tells.
+/// other's plane, or touches it only in vertices that the other misses, or both lie in one
+/// plane with a side of one separating them ([`misses_in_plane`]), or [`separated`] tells.
 pub(crate) fn apart<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N::Ctx) -> bool {
     let s_sides = t_side(t, s, ctx);
     if off_plane_of(s, &s_sides, t, ctx) {
@@ -94,7 +94,8 @@ pub(crate) fn apart<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N::Ctx
 }
 
 /// True if `x` (its vertices on sides `sides` of the plane of `y`) meets that plane at most in
-/// one or two of its vertices, none in the closed triangle `y`.
+/// one or two of its vertices, none in the closed triangle `y`, or lies in it with a side of
+/// `y` separating them.
 fn off_plane_of<N: Num>(
     x: [&Point3<N>; 3],
     sides: &[Ordering; 3],
@@ -110,14 +111,13 @@ fn off_plane_of<N: Num>(
         .collect();
     match on.len() {
         0 => true,
-        3 => false,
         _ => misses_in_plane(y, &on, ctx),
     }
 }
 
-/// True if the closed triangle `y` misses the point or segment `on` of its plane, by the
-/// separating-line theorem for convex polygons: the line of a side of `y` with `on` strictly
-/// outside it, or the segment's own line with `y` strictly on one side.
+/// True if the closed triangle `y` misses the point, segment or triangle `on` of its plane, by
+/// the separating-line theorem for convex polygons: the line of a side of `y` with `on`
+/// strictly outside it, or a segment's own line with `y` strictly on one side.
 fn misses_in_plane<N: Num>(y: [&Point3<N>; 3], on: &[&Point3<N>], ctx: &N::Ctx) -> bool {
     let Some(o) = in_plane_of(y, ctx) else {
         return false;
@@ -372,6 +372,20 @@ mod tests {
         Point3::int(x, y, z)
     }
 
+    /// Coplanar triangles are apart when the line of a side of either has the other strictly
+    /// outside (here only a side of the second does), not when they overlap or touch.
+    #[test]
+    fn coplanar_triangles_apart_by_a_side_line() {
+        let t = [p(0, 0, 0), p(2, 0, 0), p(1, 1, 0)];
+        let above = [p(-5, 2, 0), p(7, 2, 0), p(1, 10, 0)];
+        let overlapping = [p(1, 0, 0), p(3, 1, 0), p(0, 3, 0)];
+        let touching = [p(1, 1, 0), p(-5, 10, 0), p(7, 10, 0)];
+        let t = t.each_ref();
+        assert!(apart(t, above.each_ref(), &()) && apart(above.each_ref(), t, &()));
+        assert!(!apart(t, overlapping.each_ref(), &()));
+        assert!(!apart(t, touching.each_ref(), &()));
+    }
+
     #[test]
     fn crossing_triangles_meet_in_a_segment_through_both_interiors() {
         let (a, b, c) = (p(0, 0, 0), p(4, 0, 0), p(0, 4, 0));
@@ -476,12 +490,13 @@ mod tests {
         }
 
         /// Triangles shown apart by orientations do not meet (the constructed intersection),
-        /// where s has one or two vertices in the plane of t, inside t or not.
+        /// where s has one, two or three vertices in the plane of t, inside t or not.
         #[test]
         fn apart_is_the_constructed_contact(t in proptest::array::uniform3(lattice()),
                                             s2 in lattice(),
-                                            k in proptest::array::uniform4(-4i64..=4),
-                                            two in proptest::bool::ANY) {
+                                            k in proptest::array::uniform6(-4i64..=4),
+                                            two in proptest::bool::ANY,
+                                            flat in proptest::bool::ANY) {
             // s0, s1 = t0 + (k0 (t1 − t0) + k1 (t2 − t0)) / 2: in the plane of t.
             let in_plane = |k0: i64, k1: i64| {
                 let half = |k: i64| Rational::from_i64(k) / Rational::from_i64(2);
@@ -494,6 +509,7 @@ mod tests {
             };
             let s0 = in_plane(k[0], k[1]);
             let s1 = if two { in_plane(k[2], k[3]) } else { Point3::new(s2.y.clone(), s2.z.clone(), s2.x.clone()) };
+            let s2 = if two && flat { in_plane(k[4], k[5]) } else { s2 };
             let s = [&s0, &s1, &s2];
             proptest::prop_assume!(!collinear(&t[0], &t[1], &t[2]) && !collinear(s[0], s[1], s[2]));
             let (t, s3) = (t.each_ref(), s);

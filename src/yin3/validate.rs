@@ -9,7 +9,7 @@ use super::float::{exact_points, rounded_brep};
 use super::geom::{collinear, f64_box, normal, Chart};
 use super::locate::{winding, TriBoxes};
 use super::set::{Brep, YinSet3};
-use super::tri::apart;
+use super::tri::{apart, intersect};
 use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, Num};
@@ -111,9 +111,10 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// did before the vertices `moved` moved, each to a distinct point (a rounded result): every
 /// triangle with a moved vertex meets every other triangle exactly in their shared vertices
 /// and edges (a degenerate one fails against its neighbours across its edges). Decided by
-/// exact orientations of the points' values, nothing constructed — false where that cannot
-/// tell, and then the caller validates in full. Every other pair meets as it did. On rayon's
-/// threads.
+/// exact orientations of the points' values; a pair without a shared vertex that they cannot
+/// tell apart is intersected exactly, as the validator would; other pairs they cannot tell
+/// make it false, and then the caller validates in full. Every other pair meets as it did. On
+/// rayon's threads.
 pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
     let exact = &N::exact_ctx();
     let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
@@ -122,7 +123,8 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
         if t.iter().any(|v| s.contains(v)) {
             shared_only(&b.points, t, s, exact).is_some()
         } else {
-            apart(t.map(|v| &b.points[v]), s.map(|v| &b.points[v]), exact)
+            let (t, s) = (t.map(|v| &b.points[v]), s.map(|v| &b.points[v]));
+            apart(t, s, exact) || intersect(t, s, exact).is_none()
         }
     };
     (0..b.tris.len())
