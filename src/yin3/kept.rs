@@ -87,9 +87,11 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>) -> bool {
     // tiny coordinate beside a huge one underflows), so that no product overflows.
     let k = -(largest.log2().floor() as i32);
     let p: Vec<[f64; 3]> = p.iter().map(|v| v.map(|c| times_pow2(c, k))).collect();
-    // Each exact coordinate is within half an ulp of its rounding (a subnormal's too), and of
-    // the scaled rounding within that plus half a subnormal ulp.
-    let moved = 2.0 * U * times_pow2(largest, k) + 2.0 * f64::from_bits(1);
+    // Each exact coordinate is within half an ulp of its rounding: at most u times its
+    // magnitude, or half a subnormal ulp (scaled by 2^k with the rest); the scaled rounding
+    // is within half a subnormal ulp more.
+    let tiny = f64::from_bits(1);
+    let moved = 2.0 * U * times_pow2(largest, k) + times_pow2(tiny, k) + tiny;
     let boxes: Vec<[[f64; 3]; 2]> = b
         .surfaces
         .iter()
@@ -220,6 +222,11 @@ mod tests {
             [0.0, 0.0, 1.0],
             [1.0, 1.0, 1.0 + 1e-9]
         )])));
+        // Subnormal coordinates: one ulp (2⁻¹⁰⁷⁴) thick is within the rounding, 2⁻¹⁰⁴⁰ is not.
+        let (lo, ulp) = (1e-310, f64::from_bits(1));
+        let slab = |top: f64| boxes(&[([0.0, 0.0, lo], [lo, lo, top])]);
+        assert!(!provably_kept(&slab(lo + ulp)));
+        assert!(provably_kept(&slab(lo + 2f64.powi(-1040))));
     }
 
     /// Two boxes apart are provable; a box inside the other's cavity (nested) and boxes sharing
