@@ -174,9 +174,12 @@ pub(crate) fn arrange<N: Num>(
             pieces.push((soup.tris[t], t));
             continue;
         }
+        let [a, b, c] = soup.corners(t);
         let cut = retriangulate(
             &soup.points,
             soup.tris[t],
+            Chart::of_triangle(a, b, c),
+            [&[]; 3],
             extra[t].iter().copied(),
             &cuts[t],
             ctx,
@@ -230,18 +233,23 @@ pub(crate) fn shared_only<N: Num>(
     alone.then_some(shared)
 }
 
-/// The pieces of the triangle `tri` (indices into `points`) with the points `extra` on it
-/// and the cut segments `cuts`, triangulated in a chart of its plane.
+/// The pieces of the triangle `tri` (indices into `points`), counterclockwise in `chart`,
+/// with the points `sides[k]` known to lie inside its side k (from corner k to corner k + 1),
+/// the points `extra` on it and the cut segments `cuts`, triangulated in the chart.
 pub(crate) fn retriangulate<N: Num>(
     points: &[Point3<N>],
     tri: [usize; 3],
+    chart: Chart,
+    sides: [&[usize]; 3],
     extra: impl IntoIterator<Item = usize>,
     cuts: &[(usize, usize)],
     ctx: &N::Ctx,
 ) -> Result<Vec<[usize; 3]>, TriangulateError> {
-    let [a, b, c] = tri.map(|v| &points[v]);
-    let chart = Chart::of_triangle(a, b, c);
-    let ids: Vec<usize> = tri.into_iter().chain(extra).collect();
+    let ids: Vec<usize> = tri
+        .into_iter()
+        .chain(sides.iter().flat_map(|side| side.iter().copied()))
+        .chain(extra)
+        .collect();
     let local: HashMap<usize, usize> = ids.iter().enumerate().map(|(k, &v)| (v, k)).collect();
     let pts: Vec<Point<N>> = ids.iter().map(|&v| chart.project(&points[v])).collect();
     let cons: Vec<(usize, usize)> = cuts
@@ -249,6 +257,8 @@ pub(crate) fn retriangulate<N: Num>(
         .filter(|(p, q)| p != q)
         .filter_map(|(p, q)| Some((*local.get(p)?, *local.get(q)?)))
         .collect();
-    let tris = triangulate(&pts, [0, 1, 2], &cons, ctx)?;
+    let on_side = sides.map(|side| side.iter().map(|v| local[v]).collect::<Vec<usize>>());
+    let on_side = [&on_side[0][..], &on_side[1][..], &on_side[2][..]];
+    let tris = triangulate(&pts, [0, 1, 2], on_side, &cons, ctx)?;
     Ok(tris.into_iter().map(|tri| tri.map(|k| ids[k])).collect())
 }

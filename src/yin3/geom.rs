@@ -1,7 +1,7 @@
 //! Plane keys, 2D charts of planes, and point/triangle predicates (DESIGN-3D §2.1).
 
 use crate::kernel::{orient, orient3d, Point, Point3};
-use crate::num::Num;
+use crate::num::{exact_orient_f64, Num};
 use std::cmp::Ordering;
 
 /// |v|.
@@ -87,12 +87,40 @@ impl Chart {
     /// The chart of planes with normal `n` (nonzero).
     pub(crate) fn of_normal<N: Num>(n: &Point3<N>) -> Chart {
         let k = dominant_axis(n);
+        Chart::of_axis(k, n.coord(k).sign())
+    }
+
+    /// The chart dropping coordinate `k`, for planes whose normal's coordinate `k` has the
+    /// sign `s` (nonzero; `Equal` is taken as positive).
+    fn of_axis(k: usize, s: Ordering) -> Chart {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        if n.coord(k).sign() == Ordering::Less {
+        if s == Ordering::Less {
             Chart { keep: [j, i] }
         } else {
             Chart { keep: [i, j] }
         }
+    }
+
+    /// The chart of the triangle `t` of `f64` points, in which it is counterclockwise: the
+    /// axis where the normal, computed in `f64`, is largest among those where its exact sign
+    /// (the orientation of the triangle's projection) is nonzero; `None` if the triangle is
+    /// degenerate.
+    pub(crate) fn of_f64_triangle(t: [[f64; 3]; 3]) -> Option<Chart> {
+        let [a, b, c] = t;
+        let (u, v) = (
+            [0, 1, 2].map(|k| b[k] - a[k]),
+            [0, 1, 2].map(|k| c[k] - a[k]),
+        );
+        let mut best: Option<(usize, f64, Ordering)> = None;
+        for k in 0..3 {
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            let size = (u[i] * v[j] - u[j] * v[i]).abs();
+            let sign = exact_orient_f64([a[i], a[j]], [b[i], b[j]], [c[i], c[j]]);
+            if sign != Ordering::Equal && best.is_none_or(|(_, m, _)| size > m) {
+                best = Some((k, size, sign));
+            }
+        }
+        best.map(|(k, _, sign)| Chart::of_axis(k, sign))
     }
 
     /// The chart of the plane of the triangle `abc`, in which it is counterclockwise.
@@ -163,4 +191,56 @@ pub(crate) fn f64_box<'a, N: Num>(
         }
     }
     rstar::AABB::from_corners(lo.map(f64::next_down), hi.map(f64::next_up))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+    use proptest::prelude::*;
+
+    /// A coordinate: a random mantissa times a power of two, sometimes a shared value (so that
+    /// coordinate planes and exact collinearity occur).
+    fn coordinate() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            (-1000i32..1000, -60i32..60).prop_map(|(m, e)| f64::from(m) * 2f64.powi(e)),
+            Just(0.0),
+            Just(1.0),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+
+        /// The chart of an `f64` triangle keeps it counterclockwise, checked on its exact
+        /// values, and exists iff the triangle is not degenerate (exactly collinear corners,
+        /// [`collinear`]); the third corner is sometimes on the line of the first two, or
+        /// nearly so.
+        #[test]
+        fn f64_chart_keeps_the_triangle_counterclockwise(
+            a in [coordinate(), coordinate(), coordinate()],
+            b in [coordinate(), coordinate(), coordinate()],
+            c in [coordinate(), coordinate(), coordinate()],
+            on_line in prop_oneof![Just(None), (-4i32..8).prop_map(Some)],
+            nudge in prop_oneof![Just(0.0), Just(1e-12), Just(-3e-15)],
+        ) {
+            // c on the line of a and b: a + 2^k (b − a) when that is exact in f64.
+            let c = match on_line {
+                Some(k) => [0, 1, 2].map(|i| a[i] + 2f64.powi(k) * (b[i] - a[i]) + nudge),
+                None => c,
+            };
+            let exact = |p: [f64; 3]| {
+                let r = |x: f64| Rational::from_f64(x).expect("finite");
+                Point3::new(r(p[0]), r(p[1]), r(p[2]))
+            };
+            let (ea, eb, ec) = (exact(a), exact(b), exact(c));
+            match Chart::of_f64_triangle([a, b, c]) {
+                None => prop_assert!(collinear(&ea, &eb, &ec)),
+                Some(chart) => {
+                    let (pa, pb, pc) = (chart.project(&ea), chart.project(&eb), chart.project(&ec));
+                    prop_assert_eq!(orient(&pa, &pb, &pc, &()), Ordering::Greater);
+                }
+            }
+        }
+    }
 }

@@ -15,7 +15,7 @@
 
 use super::arrange::retriangulate;
 use super::float::exact_points;
-use super::geom::f64_box;
+use super::geom::{f64_box, Chart};
 use super::locate::{winding, TriBoxes};
 use super::set::Brep;
 use crate::kernel::Point3;
@@ -115,21 +115,28 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Compl
         .map(|&(edge, tri)| pierce(&f64s, edge, tris[tri]))
         .collect();
     points.extend(made);
-    // Every triangle with points on it, re-triangulated (on rayon's threads).
-    let on = |t: usize| {
+    // Every triangle with points on it, re-triangulated (on rayon's threads): the pierce
+    // points of its edges lie inside those sides, the others inside it.
+    let no_points = Vec::new();
+    let sides = |t: usize| {
         let tri = tris[t];
-        let mut on: Vec<usize> = (0..3)
-            .filter_map(|k| on_edge.get(&key(tri[k], tri[(k + 1) % 3])))
-            .flatten()
-            .copied()
-            .collect();
-        on.extend(&extra[t]);
-        on
+        [0, 1, 2].map(|k| {
+            on_edge
+                .get(&key(tri[k], tri[(k + 1) % 3]))
+                .unwrap_or(&no_points)
+                .as_slice()
+        })
     };
-    let cut: Vec<usize> = (0..tris.len()).filter(|&t| !on(t).is_empty()).collect();
+    let cut: Vec<usize> = (0..tris.len())
+        .filter(|&t| !extra[t].is_empty() || sides(t).iter().any(|side| !side.is_empty()))
+        .collect();
     let parts: Vec<Vec<[usize; 3]>> = cut
         .par_iter()
-        .map(|&t| retriangulate(&points, tris[t], on(t), &cuts[t], &()).ok())
+        .map(|&t| {
+            let chart = Chart::of_f64_triangle(tris[t].map(|v| f64s[v]))?;
+            let extra = extra[t].iter().copied();
+            retriangulate(&points, tris[t], chart, sides(t), extra, &cuts[t], &()).ok()
+        })
         .collect::<Option<_>>()?;
     let mut parts: HashMap<usize, Vec<[usize; 3]>> = cut.into_iter().zip(parts).collect();
     let mut pieces: Vec<([usize; 3], usize)> = Vec::with_capacity(tris.len());
@@ -252,6 +259,18 @@ fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rat
     Point3::new(coord(0), coord(1), coord(2))
 }
 
+/// The bits of each field of a packed fin ([`fin`]).
+const FIELD: u32 = 42;
+
+/// The low [`FIELD`] bits.
+const MASK: u128 = (1 << FIELD) - 1;
+
+/// The edge `(u, v)` and the piece `i` at it as one integer that sorts by edge (each below
+/// 2^[`FIELD`]).
+fn fin((u, v): (usize, usize), i: usize) -> u128 {
+    (u as u128) << (2 * FIELD) | (v as u128) << FIELD | i as u128
+}
+
 /// For each piece of the transversal arrangement of `ops` (each with its parent: operand 0's
 /// triangles first, then operand 1's; over operand 0's points, operand 1's, then the pierce
 /// points), true if it lies inside the other operand: patches joined across edges that are not
@@ -266,19 +285,27 @@ fn inside<N: Num>(
     let (points_a, first_b) = (ops[0].points.len(), ops[0].tris.len());
     let inputs = points_a + ops[1].points.len();
     let operand = |i: usize| usize::from(pieces[i].1 >= first_b);
-    // Each piece's edges, grouped by edge.
-    let mut fins: Vec<((usize, usize), usize)> = pieces
+    // Each piece's edges, grouped by edge: (edge, piece) packed in one integer and sorted.
+    let too_big = |n: usize| n as u128 > MASK;
+    if too_big(pieces.len()) || pieces.iter().flat_map(|p| p.0).any(too_big) {
+        return None;
+    }
+    let mut fins: Vec<u128> = pieces
         .iter()
         .enumerate()
-        .flat_map(|(i, (t, _))| (0..3).map(move |k| (key(t[k], t[(k + 1) % 3]), i)))
+        .flat_map(|(i, (t, _))| (0..3).map(move |k| fin(key(t[k], t[(k + 1) % 3]), i)))
         .collect();
-    fins.sort_unstable();
+    fins.par_sort_unstable();
+    let edge = |f: &u128| ((f >> (2 * FIELD)) as usize, (f >> FIELD & MASK) as usize);
     let mut uf = UnionFind::new(pieces.len());
     let mut flips: Vec<(usize, usize)> = Vec::new();
-    for at in fins.chunk_by(|x, y| x.0 == y.0) {
-        let across = crossing.contains(&at[0].0);
+    for at in fins.chunk_by(|x, y| x >> FIELD == y >> FIELD) {
+        let across = crossing.contains(&edge(&at[0]));
         for o in 0..2 {
-            let mut mine = at.iter().map(|f| f.1).filter(|&i| operand(i) == o);
+            let mut mine = at
+                .iter()
+                .map(|f| (f & MASK) as usize)
+                .filter(|&i| operand(i) == o);
             let Some(first) = mine.next() else {
                 continue;
             };

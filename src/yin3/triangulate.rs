@@ -27,7 +27,10 @@ pub(crate) enum TriangulateError {
 /// Triangulate the triangle `corners` (indices into `points`, counterclockwise) using every
 /// point of `points` as a vertex, so that every constraint is a union of edges.
 ///
-/// The points must be pairwise distinct and the constraints pairs of distinct points. The
+/// The points must be pairwise distinct and the constraints pairs of distinct points.
+/// `sides[k]` lists points the caller knows to lie inside side k (from corner k to corner
+/// k + 1): they are ordered along it and split it without a predicate; other points are
+/// located by orientations, whether on a side or not. The
 /// result is a list of counterclockwise triangles that tile the triangle conformingly: no point
 /// lies inside a triangle or inside an edge, and each piece of a constraint between consecutive
 /// points on it is an edge. Constraints may overlap, run along the sides or pass through
@@ -36,11 +39,21 @@ pub(crate) enum TriangulateError {
 pub(crate) fn triangulate<N: Num>(
     points: &[Point<N>],
     corners: [usize; 3],
+    sides: [&[usize]; 3],
     constraints: &[(usize, usize)],
     ctx: &N::Ctx,
 ) -> Result<Vec<[usize; 3]>, TriangulateError> {
     let mut mesh = Mesh::new(points, corners, ctx)?;
-    let mut order: Vec<usize> = (0..points.len()).filter(|p| !corners.contains(p)).collect();
+    let mut placed = vec![false; points.len()];
+    for (k, side) in sides.iter().enumerate() {
+        mesh.split_side(corners[k], corners[(k + 1) % 3], side)?;
+        for &p in *side {
+            placed[p] = true;
+        }
+    }
+    let mut order: Vec<usize> = (0..points.len())
+        .filter(|&p| !corners.contains(&p) && !placed[p])
+        .collect();
     // Golden-ratio scrambled order: the history of splits stays shallow for sorted input.
     order.sort_by_key(|&p| (p as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
     for p in order {
@@ -235,6 +248,26 @@ impl<'a, N: Num> Mesh<'a, N> {
         Ok(())
     }
 
+    /// Make the points `on` of the side `xy` of the triangulation vertices, nearest to `x`
+    /// first, each splitting the triangle on the side's remaining piece.
+    fn split_side(&mut self, x: usize, y: usize, on: &[usize]) -> Result<(), TriangulateError> {
+        let mut on = on.to_vec();
+        // Points of a segment are in lexicographic order from its smaller end.
+        let (px, py) = (&self.points[x], &self.points[y]);
+        on.sort_by(|&p, &q| self.points[p].cmp(&self.points[q]));
+        if px > py {
+            on.reverse();
+        }
+        let mut from = x;
+        for p in on {
+            let missing = TriangulateError::Inconsistent("a side point is not inside its side");
+            let id = *self.edges.get(&(from, y)).ok_or(missing)?;
+            self.split_edge(id, from, p)?;
+            from = p;
+        }
+        Ok(())
+    }
+
     /// Split the current triangle `id`, `[x, y, z]` from its vertex `x`, at the point `p` of
     /// its edge `xy` into `[x, p, z]` and `[p, y, z]`.
     fn split_edge(&mut self, id: usize, x: usize, p: usize) -> Result<(), TriangulateError> {
@@ -403,6 +436,9 @@ mod tests {
         }
     }
 
+    /// No point declared on a side.
+    const NO_SIDES: [&[usize]; 3] = [&[], &[], &[]];
+
     /// Triangulate and check, returning the triangles.
     fn run(
         xy: &[(i64, i64)],
@@ -410,7 +446,7 @@ mod tests {
         constraints: &[(usize, usize)],
     ) -> Vec<[usize; 3]> {
         let points = pts::<Rational>(xy);
-        let tris = triangulate(&points, corners, constraints, &()).expect("valid input");
+        let tris = triangulate(&points, corners, NO_SIDES, constraints, &()).expect("valid input");
         check(&points, corners, constraints, &tris, &());
         tris
     }
@@ -511,10 +547,10 @@ mod tests {
     fn broken_promises_are_errors() {
         let points = pts::<Rational>(&[(0, 0), (10, 0), (0, 10), (1, 1), (6, 1), (1, 6), (5, 5)]);
         let crossing = [(0, 3), (4, 5), (3, 6)];
-        let r = triangulate(&points, [0, 1, 2], &crossing, &());
+        let r = triangulate(&points, [0, 1, 2], NO_SIDES, &crossing, &());
         assert_eq!(r, Err(TriangulateError::CrossingConstraints(1, 2)));
         let outside = pts::<Rational>(&[(0, 0), (10, 0), (0, 10), (1, 1), (6, 5)]);
-        let r = triangulate(&outside, [0, 1, 2], &[], &());
+        let r = triangulate(&outside, [0, 1, 2], NO_SIDES, &[], &());
         assert_eq!(r, Err(TriangulateError::PointOutside(4)));
     }
 
@@ -522,7 +558,7 @@ mod tests {
     fn float_mode_runs_the_ring() {
         let points = pts::<Float>(&RING_POINTS);
         let ctx = Tolerance::new(1e-9);
-        let tris = triangulate(&points, [0, 1, 2], &RING, &ctx).expect("valid input");
+        let tris = triangulate(&points, [0, 1, 2], NO_SIDES, &RING, &ctx).expect("valid input");
         check(&points, [0, 1, 2], &RING, &tris, &ctx);
     }
 
@@ -555,6 +591,7 @@ mod tests {
         fn random_grid_points_and_constraints(
             pick in proptest::sample::subsequence(grid(), 0..=45),
             candidates in proptest::collection::vec((0usize..1000, 0usize..1000), 0..20),
+            declare_sides in proptest::bool::ANY,
         ) {
             let mut points = pick;
             let n = points.len();
@@ -571,10 +608,18 @@ mod tests {
                     kept.push(s);
                 }
             }
-            let tris = triangulate(&points, corners, &kept, &()).expect("valid input");
+            // The points strictly inside each side, by the lattice's own arithmetic (grid
+            // points on the line between the two corners, other than the corners).
+            let on_side = |k: usize| -> Vec<usize> {
+                let (a, b) = (&points[corners[k]], &points[corners[(k + 1) % 3]]);
+                (0..n).filter(|&i| cross(a, b, &points[i]) == Rational::zero()).collect()
+            };
+            let sides = if declare_sides { [0, 1, 2].map(on_side) } else { Default::default() };
+            let sides = [&sides[0][..], &sides[1][..], &sides[2][..]];
+            let tris = triangulate(&points, corners, sides, &kept, &()).expect("valid input");
             check(&points, corners, &kept, &tris, &());
             if kept.len() < all.len() {
-                match triangulate(&points, corners, &all, &()) {
+                match triangulate(&points, corners, sides, &all, &()) {
                     Err(TriangulateError::CrossingConstraints(i, j)) => {
                         prop_assert!(i < j && bad_crossing(&points, all[i], all[j]));
                     }

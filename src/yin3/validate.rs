@@ -118,7 +118,12 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
     let exact = &N::exact_ctx();
     let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
-    let boxes = TriBoxes::new((0..b.tris.len()).map(|t| (t, b.corners(t))));
+    // Usually few triangles moved: their boxes are indexed, and every triangle asks them.
+    let boxes = TriBoxes::new(
+        (0..b.tris.len())
+            .filter(|&t| touched[t])
+            .map(|t| (t, b.corners(t))),
+    );
     let meet_in_shared = |t: [usize; 3], s: [usize; 3]| {
         if t.iter().any(|v| s.contains(v)) {
             shared_only(&b.points, t, s, exact).is_some()
@@ -127,14 +132,12 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
             apart(t, s, exact) || intersect(t, s, exact).is_none()
         }
     };
-    (0..b.tris.len())
-        .into_par_iter()
-        .filter(|&t| touched[t])
-        .all(|t| {
-            boxes
-                .meeting(&f64_box(b.corners(t)))
-                .all(|u| u == t || (touched[u] && u < t) || meet_in_shared(b.tris[t], b.tris[u]))
-        })
+    // Each pair of a moved triangle t and another u once: a moved u asks only for t > u.
+    (0..b.tris.len()).into_par_iter().all(|u| {
+        boxes
+            .meeting(&f64_box(b.corners(u)))
+            .all(|t| t == u || (touched[u] && t < u) || meet_in_shared(b.tris[t], b.tris[u]))
+    })
 }
 
 impl Yin3Error {
