@@ -108,16 +108,30 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>) -> bool {
             bx
         })
         .collect();
-    let apart = |x: &[[f64; 3]; 2], y: &[[f64; 3]; 2]| {
-        (0..3).any(|k| x[1][k] + 4.0 * moved < y[0][k] || y[1][k] + 4.0 * moved < x[0][k])
-    };
-    let nested =
-        (0..boxes.len()).any(|i| (i + 1..boxes.len()).any(|j| !apart(&boxes[i], &boxes[j])));
-    !nested
+    !any_close(&boxes, 4.0 * moved)
         && b.surfaces
             .iter()
             .zip(&boxes)
             .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
+}
+
+/// True if two of the boxes `[min, max]` come within `gap` of each other on every axis: a
+/// sweep along x, each box compared with those whose x-range reaches it.
+fn any_close(boxes: &[[[f64; 3]; 2]], gap: f64) -> bool {
+    let mut order: Vec<usize> = (0..boxes.len()).collect();
+    order.sort_by(|&i, &j| boxes[i][0][0].total_cmp(&boxes[j][0][0]));
+    let close = |x: &[[f64; 3]; 2], y: &[[f64; 3]; 2]| {
+        (0..3).all(|k| x[1][k] + gap >= y[0][k] && y[1][k] + gap >= x[0][k])
+    };
+    let mut reaching: Vec<usize> = Vec::new();
+    for i in order {
+        reaching.retain(|&j| boxes[j][1][0] + gap >= boxes[i][0][0]);
+        if reaching.iter().any(|&j| close(&boxes[i], &boxes[j])) {
+            return true;
+        }
+        reaching.push(i);
+    }
+    false
 }
 
 /// c·2^k, in steps that neither overflow nor underflow on the way.
@@ -243,5 +257,24 @@ mod tests {
         assert!(!provably_kept(&boxes(&[([0.0; 3], [1.0; 3]), edge])));
         let near = ([1.0 + f64::EPSILON, 0.0, 0.0], [2.0, 1.0, 1.0]);
         assert!(!provably_kept(&boxes(&[([0.0; 3], [1.0; 3]), near])));
+    }
+
+    /// The sweep finds a close pair that is not consecutive along x (a long box, one apart
+    /// from it in y whose x-range still reaches the third, then one close to the long one),
+    /// and none where an axis separates every pair.
+    #[test]
+    fn the_sweep_finds_every_close_pair() {
+        let long = [[0.0, 0.0, 0.0], [10.0, 1.0, 1.0]];
+        let above = [[1.0, 5.0, 0.0], [5.0, 6.0, 1.0]];
+        let beside = [[3.0, 0.5, 0.5], [4.0, 2.0, 2.0]];
+        let far = [[3.0, 3.0, 3.0], [4.0, 4.0, 4.0]];
+        for (boxes, close) in [
+            (vec![long, above, beside], true),
+            (vec![beside, above, long], true),
+            (vec![long, above, far], false),
+            (vec![above, beside], false),
+        ] {
+            assert_eq!(any_close(&boxes, 0.1), close, "{boxes:?}");
+        }
     }
 }
