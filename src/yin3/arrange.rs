@@ -10,9 +10,10 @@ use super::tri::{apart_across, intersect, meet_only_at};
 use super::triangulate::{triangulate, TriangulateError};
 use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
+use foldhash::HashMap;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
 use std::cmp::Ordering;
-use std::collections::{BTreeSet, HashMap};
+use std::collections::BTreeSet;
 
 /// Triangles over one table of interned points, each tagged with its operand.
 #[derive(Clone, Debug, Default)]
@@ -31,7 +32,7 @@ impl<N: Num> Soup<N> {
     pub(crate) fn new() -> Soup<N> {
         Soup {
             points: Vec::new(),
-            index: HashMap::new(),
+            index: HashMap::default(),
             tris: Vec::new(),
             operand: Vec::new(),
         }
@@ -101,11 +102,26 @@ pub(crate) fn arrange<N: Num>(
     ctx: &N::Ctx,
 ) -> Result<Arrangement, ArrangeError<N>> {
     let n = soup.tris.len();
-    let tree = RTree::bulk_load(
-        (0..n)
-            .map(|i| GeomWithData::new(Rectangle::from_aabb(f64_box(soup.corners(i))), i))
-            .collect(),
-    );
+    // One R-tree of boxes per group of triangles whose pairs are wanted: the other operand's,
+    // or, for every pair, all of them.
+    let group: Vec<usize> = (0..n)
+        .map(|i| match pairs {
+            Pairs::Across => usize::from(soup.operand[i]),
+            Pairs::All => 0,
+        })
+        .collect();
+    let trees: [RTree<GeomWithData<Rectangle<[f64; 3]>, usize>>; 2] = [0, 1].map(|g| {
+        RTree::bulk_load(
+            (0..n)
+                .filter(|&i| group[i] == g)
+                .map(|i| GeomWithData::new(Rectangle::from_aabb(f64_box(soup.corners(i))), i))
+                .collect(),
+        )
+    });
+    let tree_against = |i: usize| match pairs {
+        Pairs::Across => &trees[1 - group[i]],
+        Pairs::All => &trees[0],
+    };
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut contact: BTreeSet<usize> = BTreeSet::new();
     // The contact points each triangle is known to contain: in exact mode those of its own
@@ -114,10 +130,10 @@ pub(crate) fn arrange<N: Num>(
     let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
     for i in 0..n {
         let b = f64_box(soup.corners(i));
-        let mut others: Vec<usize> = tree
+        let mut others: Vec<usize> = tree_against(i)
             .locate_in_envelope_intersecting(&b)
             .map(|g| g.data)
-            .filter(|&j| j > i && (pairs == Pairs::All || soup.operand[i] != soup.operand[j]))
+            .filter(|&j| j > i)
             .collect();
         others.sort_unstable();
         for j in others {
@@ -158,7 +174,10 @@ pub(crate) fn arrange<N: Num>(
     // Every contact point goes to every triangle containing it.
     for &v in &contact {
         let b = f64_box([&soup.points[v]]);
-        for g in tree.locate_in_envelope_intersecting(&b) {
+        for g in trees
+            .iter()
+            .flat_map(|t| t.locate_in_envelope_intersecting(&b))
+        {
             let t = g.data;
             if !soup.tris[t].contains(&v)
                 && !extra[t].contains(&v)

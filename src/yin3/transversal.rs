@@ -21,13 +21,13 @@ use super::set::Brep;
 use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, Rational};
 use crate::union_find::UnionFind;
+use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use num_bigint::BigInt;
 use num_traits::Float as _;
 use rayon::prelude::*;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
 use std::cell::OnceCell;
 use std::cmp::Ordering::{self, Equal};
-use std::collections::{HashMap, HashSet};
 
 /// Where an edge `(u, v)` (global point indices, u < v) pierces triangle `tri` (global index).
 type Pierce = ((usize, usize), usize);

@@ -8,9 +8,9 @@
 
 use crate::kernel::{on_closed_segment, orient, Point};
 use crate::num::Num;
+use foldhash::{HashMap, HashMapExt};
 use std::cmp::Ordering::{Equal, Greater, Less};
 use std::collections::hash_map::Entry;
-use std::collections::HashMap;
 
 /// Why a triangle could not be re-triangulated (a caller's broken promise).
 #[derive(Debug, Clone, PartialEq, Eq)]
