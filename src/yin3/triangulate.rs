@@ -1,7 +1,8 @@
 //! Exact constrained triangulation of one triangle with extra points and constraint segments:
 //! the re-triangulation of a cut face (seed 004 step 2; DESIGN-3D §2.4).
 //!
-//! Points are inserted one by one, each located by descending the history of splits; then every
+//! Points the caller knows to lie on a side split it first, in their order along it; the others
+//! are inserted one by one, each located by descending the history of splits; then every
 //! constraint, split at the points on it, is made an edge by removing the triangles its open
 //! segment crosses and ear-clipping the two pseudo-polygons on its sides. Every decision is an
 //! [`orient`] or the exact order of points: no Delaunay test, no floats, no ε of our own.
