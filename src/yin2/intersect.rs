@@ -10,7 +10,7 @@
 
 use super::vertex::{Crossing, Vertex};
 use crate::kernel::{classify, crosses, Contact, Point};
-use crate::num::{Num, Rational};
+use crate::num::{Float, Num, Rational, Tolerance};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 
@@ -22,11 +22,9 @@ pub type Edge<N> = (Point<N>, Point<N>);
 /// Exact mode: Bentley–Ottmann, O((n + I) log n). It keeps its status ordered through the
 /// crossing points (held implicitly, decided by filtered predicates, exact where the filter
 /// cannot decide: [`super::vertex`]), so it needs them exact; with rounded ones (float mode) it can
-/// miss a pair, so float mode takes the pairs of edges whose boxes meet ([`by_extents`]), and,
-/// when those exceed [`BOX_PAIRS_PER_EDGE`] per edge (long slanted edges side by side: their
-/// number grows like n²), the meeting pairs of the edges' exact images by Bentley–Ottmann
-/// ([`exact_image_pairs`]). That fallback finds every pair that meets exactly but not the pairs
-/// that only come within ε, which float mode's snap rounding then resolves on the ε-grid.
+/// miss a pair, so float mode takes the candidates of [`float_candidates`]. Its fallback finds
+/// every pair that meets exactly but not the pairs that only come within ε, which float mode's
+/// snap rounding then resolves on the ε-grid.
 pub fn intersections<N: Num>(
     edges: &[Edge<N>],
     ctx: &N::Ctx,
@@ -35,8 +33,7 @@ pub fn intersections<N: Num>(
     let mut pairs = if N::EXACT {
         Sweep::new(edges, ctx).run()
     } else {
-        by_extents(edges, BOX_PAIRS_PER_EDGE * edges.len() + 4096)
-            .unwrap_or_else(|| exact_image_pairs(edges))
+        float_candidates(edges)
     };
     pairs.sort_unstable();
     pairs.dedup();
@@ -51,55 +48,67 @@ pub fn intersections<N: Num>(
 }
 
 /// The pairs `i < j` of `edges` whose interiors cross (the `Crossing` contacts of
-/// [`intersections`]), by Bentley–Ottmann in O((n + I) log n), without constructing the
-/// crossing points. Exact backends only.
-pub(crate) fn crossing_pairs(edges: &[Edge<Rational>]) -> Vec<(usize, usize)> {
-    let mut pairs = Sweep::new(edges, &()).run();
+/// [`intersections`]), without constructing the crossing points, for edges whose `f64`
+/// coordinates are read as the exact values they are (float mode's grid fragments): the
+/// candidates of [`float_candidates`], each decided by exact `f64` orientations.
+pub(crate) fn crossing_pairs(edges: &[Edge<Float>]) -> Vec<(usize, usize)> {
+    let exact = Tolerance::default();
+    let mut pairs = float_candidates(edges);
     pairs.sort_unstable();
     pairs.dedup();
-    pairs.retain(|&(i, j)| crosses(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, &()));
+    pairs.retain(|&(i, j)| crosses(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, &exact));
     pairs
 }
 
-/// Float mode's budget of box pairs per edge before it falls back to [`exact_image_pairs`]:
-/// also the bound on the pair list's memory, 16 bytes a pair (at 256 a pair it was 12 GB of the
-/// W1 n = 10⁶ float meet's 15 GB peak).
-pub const BOX_PAIRS_PER_EDGE: usize = 16;
+/// Float mode's candidate pairs of edges: the pairs whose boxes meet ([`by_extents`]), or,
+/// where finding them would scan more than [`BOX_SCANS_PER_EDGE`] pairs per edge (long slanted
+/// edges side by side: their number grows like n²), the meeting pairs of the edges' exact
+/// images by Bentley–Ottmann ([`exact_image_pairs`]), O((n + I) log n).
+fn float_candidates<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
+    by_extents(edges, BOX_SCANS_PER_EDGE * edges.len() + 4096)
+        .unwrap_or_else(|| exact_image_pairs(edges))
+}
 
-/// The pairs of edges whose bounding boxes meet, from an R*-tree of the boxes (`rstar`):
-/// complete whatever the arithmetic (each box is widened by an ulp around its `f64` image,
-/// exact for floats), O(n log n + K) for K box pairs in practice; `None` once K passes
-/// `budget`.
+/// Float mode's budget of box pairs scanned per edge before it falls back to
+/// [`exact_image_pairs`] (the GIS outlines of the benches scan 13–17): also the bound on the
+/// pair list's memory, 16 bytes a pair (at 256 a pair it was 12 GB of the W1 n = 10⁶ float
+/// meet's 15 GB peak).
+pub const BOX_SCANS_PER_EDGE: usize = 32;
+
+/// The pairs of edges whose bounding boxes meet, by sweep and prune: the boxes sorted by their
+/// left side, each paired with the boxes still open at it whose y-ranges meet its own. Complete
+/// whatever the arithmetic (each box is widened by an ulp around its `f64` image, exact for
+/// floats); O(n log n + X) for X pairs of boxes whose x-ranges overlap, and `None` once X
+/// passes `budget` (long slanted edges side by side, where X grows like n²).
 fn by_extents<N: Num>(edges: &[Edge<N>], budget: usize) -> Option<Vec<(usize, usize)>> {
-    use rstar::{primitives::GeomWithData, RTree, AABB};
-    let boxes: Vec<AABB<[f64; 2]>> = edges
+    let boxes: Vec<[f64; 4]> = edges
         .iter()
         .map(|(a, b)| {
             let (x, y) = ([a.x.to_f64(), b.x.to_f64()], [a.y.to_f64(), b.y.to_f64()]);
-            AABB::from_corners(
-                [x[0].min(x[1]).next_down(), y[0].min(y[1]).next_down()],
-                [x[0].max(x[1]).next_up(), y[0].max(y[1]).next_up()],
-            )
+            [
+                x[0].min(x[1]).next_down(),
+                x[0].max(x[1]).next_up(),
+                y[0].min(y[1]).next_down(),
+                y[0].max(y[1]).next_up(),
+            ]
         })
         .collect();
-    let tree = RTree::bulk_load(
-        boxes
-            .iter()
-            .enumerate()
-            .map(|(i, b)| GeomWithData::new(rstar::primitives::Rectangle::from_aabb(*b), i))
-            .collect(),
-    );
-    let mut out = Vec::new();
-    for (i, b) in boxes.iter().enumerate() {
-        out.extend(
-            tree.locate_in_envelope_intersecting(b)
-                .map(|g| g.data)
-                .filter(|&j| j > i)
-                .map(|j| (i, j)),
-        );
-        if out.len() > budget {
+    let mut order: Vec<usize> = (0..boxes.len()).collect();
+    order.sort_unstable_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
+    let (mut open, mut out, mut work) = (Vec::<usize>::new(), Vec::new(), 0usize);
+    for &i in &order {
+        let b = boxes[i];
+        open.retain(|&j| boxes[j][1] >= b[0]);
+        work += open.len();
+        if work > budget {
             return None;
         }
+        out.extend(
+            open.iter()
+                .filter(|&&j| boxes[j][2] <= b[3] && b[2] <= boxes[j][3])
+                .map(|&j| (i.min(j), i.max(j))),
+        );
+        open.push(i);
     }
     Some(out)
 }
@@ -893,10 +902,11 @@ mod tests {
                 v.dedup_by_key(|&mut (i, j, _)| (i, j));
                 v
             };
-            prop_assert_eq!(by_extents(&edges, 0).is_none(), edges.len() > 1 && !by_extents(&edges, usize::MAX).unwrap().is_empty());
+            let pairs = by_extents(&edges, usize::MAX).unwrap();
+            prop_assert!(pairs.is_empty() || by_extents(&edges, 0).is_none());
             prop_assert_eq!(
                 classified(exact_image_pairs(&edges)),
-                classified(by_extents(&edges, usize::MAX).unwrap())
+                classified(pairs)
             );
         }
     }

@@ -8,11 +8,12 @@ use super::intersect::{arrange, crossing_pairs, Edge};
 use super::set::YinSet2;
 use super::winding::{Pair, Winding};
 use crate::kernel::Point;
-use crate::num::{Float, Num, Rational, Tolerance};
+use crate::num::{Float, Num, Tolerance};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
 use rstar::{RTree, SelectionFunction, AABB};
+use std::cell::OnceCell;
 use std::collections::BTreeSet;
 
 /// A grid point: integer multiples of the grid spacing, relative to the local origin.
@@ -140,7 +141,7 @@ fn unit_edges(fragments: &[Labelled]) -> Vec<Edge<Float>> {
 
 /// Snap rounding (Hobby 1999; Guibas and Marimont 1998) of grid segments: each segment is
 /// rerouted, in order along it, through the centres of the hot pixels it meets — the pixels of
-/// the segments' endpoints and of their crossings, found by one exact sweep — which leaves no
+/// the segments' endpoints and of their crossings ([`crossing_pairs`]) — which leaves no
 /// two fragments crossing. Where two fragments still cross (half-open pixels, see
 /// [`meets_pixel`]), [`Snap::force`] adds the pixel of their crossing and forces it into both
 /// paths where their segments do not meet it; paths stay monotone along their segments and
@@ -155,12 +156,8 @@ impl Snap {
     /// The hot pixels of `segments`: endpoints and the pixels of crossings.
     fn new(segments: Vec<Labelled>) -> Snap {
         let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
-        let exact: Vec<Edge<Rational>> = segments
-            .iter()
-            .map(|&((a, b), _)| (Point::int(a.0, a.1), Point::int(b.0, b.1)))
-            .collect();
         hot.extend(
-            crossing_pairs(&exact)
+            crossing_pairs(&unit_edges(&segments))
                 .into_iter()
                 .map(|(i, j)| crossing_pixel(segments[i].0, segments[j].0)),
         );
@@ -174,12 +171,13 @@ impl Snap {
 
     /// The fragments of all segments (with their labels) and the segment each comes from.
     fn fragments(&self) -> (Vec<Labelled>, Vec<usize>) {
-        let pixels = RTree::bulk_load(self.hot.iter().map(|&(x, y)| [x, y]).collect());
-        let (mut fragments, mut owner) = (Vec::new(), Vec::new());
+        let pixels = HotPixels::new(&self.hot);
+        let (mut fragments, mut owner, mut path) = (Vec::new(), Vec::new(), Vec::new());
         for (k, &(s, label)) in self.segments.iter().enumerate() {
-            for f in reroute(s, &pixels, &self.forced[k]) {
+            reroute(s, &pixels, &self.forced[k], &mut path);
+            for w in path.windows(2) {
                 owner.push(k);
-                fragments.push((f, label));
+                fragments.push(((w[0], w[1]), label));
             }
         }
         (fragments, owner)
@@ -221,31 +219,64 @@ fn inside_projection(s: (G, G), c: G) -> bool {
     t > 0 && t < d.0 * d.0 + d.1 * d.1
 }
 
-/// The segment `s` rerouted through the centres of the hot pixels it meets and through the
-/// `forced` centres, in order along `s` (centres projecting strictly inside `s` only). The hot
-/// pixels come from an R-tree searched along the segment ([`AlongSegment`]), so the cost
-/// follows the pixels near the segment, not all pixels in its x-range.
-fn reroute(s: (G, G), hot: &RTree<[i64; 2]>, forced: &BTreeSet<G>) -> Vec<(G, G)> {
-    let (a, b) = s;
-    let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
-    let along = |c: &G| (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
-    let mut stops: Vec<(i128, G)> = hot
-        .locate_with_selection_function(AlongSegment(a, b))
-        .map(|p| (p[0], p[1]))
-        .filter(|&c| c != a && c != b && inside_projection(s, c))
-        .chain(forced.iter().copied().filter(|&c| c != a && c != b))
-        .map(|c| (along(&c), c))
-        .collect();
-    if stops.is_empty() {
-        return vec![s];
+/// The hot pixels, for finding the ones a segment meets: sorted by x, so that a segment whose
+/// x-range holds few of them scans that slab; an R-tree, built on first need, searched along a
+/// segment whose slab holds many ([`AlongSegment`]), so that the cost follows the pixels near
+/// the segment, not all pixels in its x-range.
+struct HotPixels {
+    sorted: Vec<G>,
+    tree: OnceCell<RTree<[i64; 2]>>,
+}
+
+/// The most hot pixels a segment's slab may hold for it to be scanned rather than searched.
+const SLAB_SCAN: usize = 64;
+
+impl HotPixels {
+    fn new(hot: &BTreeSet<G>) -> HotPixels {
+        HotPixels {
+            sorted: hot.iter().copied().collect(),
+            tree: OnceCell::new(),
+        }
     }
-    stops.sort();
-    stops.dedup();
-    let mut path = vec![a];
-    path.extend(stops.into_iter().map(|(_, c)| c));
-    path.push(b);
+
+    /// Appends to `out` the hot pixels that the segment `ab` meets ([`meets_pixel`]).
+    fn met_by(&self, a: G, b: G, out: &mut Vec<G>) {
+        // A pixel met by the segment has its centre within the segment's box (both on the grid).
+        let from = self.sorted.partition_point(|c| c.0 < a.0.min(b.0));
+        let to = self.sorted.partition_point(|c| c.0 <= a.0.max(b.0));
+        if to - from <= SLAB_SCAN {
+            let (lo, hi) = (a.1.min(b.1), a.1.max(b.1));
+            let meets = |c: &&G| (lo..=hi).contains(&c.1) && meets_pixel(a, b, **c);
+            out.extend(self.sorted[from..to].iter().filter(meets));
+        } else {
+            out.extend(self.along(a, b));
+        }
+    }
+
+    /// The hot pixels that the segment `ab` meets, from the R-tree search along it.
+    fn along(&self, a: G, b: G) -> impl Iterator<Item = G> + '_ {
+        let tree = self
+            .tree
+            .get_or_init(|| RTree::bulk_load(self.sorted.iter().map(|&(x, y)| [x, y]).collect()));
+        tree.locate_with_selection_function(AlongSegment(a, b))
+            .map(|p| (p[0], p[1]))
+    }
+}
+
+/// The path of the segment `s = ab` rerouted through the centres of the hot pixels it meets and
+/// through the `forced` centres, in order along `s` (centres projecting strictly inside `s`
+/// only), into `path` (from `a` to `b`, no point repeated in a row).
+fn reroute(s: (G, G), hot: &HotPixels, forced: &BTreeSet<G>, path: &mut Vec<G>) {
+    let (a, b) = s;
+    path.clear();
+    hot.met_by(a, b, path);
+    path.extend(forced);
+    path.retain(|&c| c != a && c != b && inside_projection(s, c));
+    let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
+    path.sort_unstable_by_key(|c| ((c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1, *c));
     path.dedup();
-    path.windows(2).map(|w| (w[0], w[1])).collect()
+    path.insert(0, a);
+    path.push(b);
 }
 
 /// The R-tree search for the hot pixels a segment meets: a node is opened when the segment
@@ -410,21 +441,24 @@ mod tests {
     }
 
     proptest! {
-        /// The R-tree search along a segment finds exactly the pixels that `meets_pixel`
-        /// accepts among all of them (segments through corners and along pixel edges included).
+        /// The hot pixels a segment meets, by the slab scan or the R-tree search (both taken:
+        /// up to 80 pixels in 12 columns put more or fewer than [`SLAB_SCAN`] in a slab), are
+        /// exactly the pixels that `meets_pixel` accepts among all of them (segments through
+        /// corners and along pixel edges included).
         #[test]
-        fn search_along_a_segment_finds_every_pixel_it_meets(
+        fn hot_pixels_met_by_a_segment_are_the_pixels_it_meets(
             a in (0i64..12, 0i64..12),
             b in (0i64..12, 0i64..12),
             pixels in proptest::collection::btree_set((0i64..12, 0i64..12), 0..80),
         ) {
-            let tree = RTree::bulk_load(pixels.iter().map(|&(x, y)| [x, y]).collect());
-            let mut found: Vec<G> = tree
-                .locate_with_selection_function(AlongSegment(a, b))
-                .map(|p| (p[0], p[1]))
-                .collect();
-            found.sort();
+            let hot = HotPixels::new(&pixels);
             let want: Vec<G> = pixels.iter().copied().filter(|&c| meets_pixel(a, b, c)).collect();
+            let mut found: Vec<G> = hot.along(a, b).collect();
+            found.sort();
+            prop_assert_eq!(&found, &want);
+            let mut found = Vec::new();
+            hot.met_by(a, b, &mut found);
+            found.sort();
             prop_assert_eq!(found, want);
         }
     }
