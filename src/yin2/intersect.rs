@@ -22,9 +22,11 @@ pub type Edge<N> = (Point<N>, Point<N>);
 /// Exact mode: Bentley–Ottmann, O((n + I) log n). It keeps its status ordered through the
 /// crossing points (held implicitly, decided by filtered predicates, exact where the filter
 /// cannot decide: [`super::vertex`]), so it needs them exact; with rounded ones (float mode) it can
-/// miss a pair, so float mode takes the candidates of [`float_candidates`]. Its fallback finds
-/// every pair that meets exactly but not the pairs that only come within ε, which float mode's
-/// snap rounding then resolves on the ε-grid.
+/// miss a pair, so float mode takes the pairs of edges whose boxes meet, or, when finding them
+/// would scan more than [`BOX_SCANS_PER_EDGE`] pairs per edge, the meeting pairs of the edges'
+/// exact images by Bentley–Ottmann. That fallback finds every pair that meets exactly but not
+/// the pairs that only come within ε, which float mode's snap rounding then resolves on the
+/// ε-grid.
 pub fn intersections<N: Num>(
     edges: &[Edge<N>],
     ctx: &N::Ctx,
@@ -69,8 +71,8 @@ fn float_candidates<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
         .unwrap_or_else(|| exact_image_pairs(edges))
 }
 
-/// Float mode's budget of box pairs scanned per edge before it falls back to
-/// [`exact_image_pairs`] (the GIS outlines of the benches scan 13–17): also the bound on the
+/// Float mode's budget of box pairs scanned per edge before it falls back to the sweep of the
+/// edges' exact images (the GIS outlines of the benches scan 13–17): also the bound on the
 /// pair list's memory, 16 bytes a pair (at 256 a pair it was 12 GB of the W1 n = 10⁶ float
 /// meet's 15 GB peak).
 pub const BOX_SCANS_PER_EDGE: usize = 32;
