@@ -148,19 +148,22 @@ fn unit_edges(fragments: &[Labelled]) -> Vec<Edge<Float>> {
 /// every such round adds a new (segment, centre) stop, so the iteration ends.
 struct Snap {
     segments: Vec<Labelled>,
-    hot: BTreeSet<G>,
+    /// Sorted, without repeats.
+    hot: Vec<G>,
     forced: Vec<BTreeSet<G>>,
 }
 
 impl Snap {
     /// The hot pixels of `segments`: endpoints and the pixels of crossings.
     fn new(segments: Vec<Labelled>) -> Snap {
-        let mut hot: BTreeSet<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
+        let mut hot: Vec<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
         hot.extend(
             crossing_pairs(&unit_edges(&segments))
                 .into_iter()
                 .map(|(i, j)| crossing_pixel(segments[i].0, segments[j].0)),
         );
+        hot.sort_unstable();
+        hot.dedup();
         let forced = vec![BTreeSet::new(); segments.len()];
         Snap {
             segments,
@@ -194,7 +197,10 @@ impl Snap {
         let mut progress = false;
         for &(i, j) in crossed {
             let c = crossing_pixel(fragments[i].0, fragments[j].0);
-            progress |= self.hot.insert(c);
+            if let Err(at) = self.hot.binary_search(&c) {
+                self.hot.insert(at, c);
+                progress = true;
+            }
             for k in [owner[i], owner[j]] {
                 progress |= inside_projection(self.segments[k].0, c) && self.forced[k].insert(c);
             }
@@ -223,18 +229,19 @@ fn inside_projection(s: (G, G), c: G) -> bool {
 /// x-range holds few of them scans that slab; an R-tree, built on first need, searched along a
 /// segment whose slab holds many ([`AlongSegment`]), so that the cost follows the pixels near
 /// the segment, not all pixels in its x-range.
-struct HotPixels {
-    sorted: Vec<G>,
+struct HotPixels<'a> {
+    sorted: &'a [G],
     tree: OnceCell<RTree<[i64; 2]>>,
 }
 
 /// The most hot pixels a segment's slab may hold for it to be scanned rather than searched.
 const SLAB_SCAN: usize = 64;
 
-impl HotPixels {
-    fn new(hot: &BTreeSet<G>) -> HotPixels {
+impl<'a> HotPixels<'a> {
+    /// The pixels `sorted` (in the order of `G`: by x, then y).
+    fn new(sorted: &'a [G]) -> HotPixels<'a> {
         HotPixels {
-            sorted: hot.iter().copied().collect(),
+            sorted,
             tree: OnceCell::new(),
         }
     }
@@ -266,7 +273,7 @@ impl HotPixels {
 /// The path of the segment `s = ab` rerouted through the centres of the hot pixels it meets and
 /// through the `forced` centres, in order along `s` (centres projecting strictly inside `s`
 /// only), into `path` (from `a` to `b`, no point repeated in a row).
-fn reroute(s: (G, G), hot: &HotPixels, forced: &BTreeSet<G>, path: &mut Vec<G>) {
+fn reroute(s: (G, G), hot: &HotPixels<'_>, forced: &BTreeSet<G>, path: &mut Vec<G>) {
     let (a, b) = s;
     path.clear();
     hot.met_by(a, b, path);
@@ -451,7 +458,8 @@ mod tests {
             b in (0i64..12, 0i64..12),
             pixels in proptest::collection::btree_set((0i64..12, 0i64..12), 0..80),
         ) {
-            let hot = HotPixels::new(&pixels);
+            let sorted: Vec<G> = pixels.iter().copied().collect();
+            let hot = HotPixels::new(&sorted);
             let want: Vec<G> = pixels.iter().copied().filter(|&c| meets_pixel(a, b, c)).collect();
             let mut found: Vec<G> = hot.along(a, b).collect();
             found.sort();
