@@ -83,34 +83,30 @@ pub const BOX_SCANS_PER_EDGE: usize = 32;
 /// floats); O(n log n + X) for X pairs of boxes whose x-ranges overlap, and `None` once X
 /// passes `budget` (long slanted edges side by side, where X grows like n²).
 fn by_extents<N: Num>(edges: &[Edge<N>], budget: usize) -> Option<Vec<(usize, usize)>> {
-    let boxes: Vec<[f64; 4]> = edges
+    let mut boxes: Vec<([f64; 4], usize)> = edges
         .iter()
-        .map(|(a, b)| {
+        .enumerate()
+        .map(|(i, (a, b))| {
             let (x, y) = ([a.x.to_f64(), b.x.to_f64()], [a.y.to_f64(), b.y.to_f64()]);
-            [
-                x[0].min(x[1]).next_down(),
-                x[0].max(x[1]).next_up(),
-                y[0].min(y[1]).next_down(),
-                y[0].max(y[1]).next_up(),
-            ]
+            let lo_hi = |v: [f64; 2]| [v[0].min(v[1]).next_down(), v[0].max(v[1]).next_up()];
+            let ([x0, x1], [y0, y1]) = (lo_hi(x), lo_hi(y));
+            ([x0, x1, y0, y1], i)
         })
         .collect();
-    let mut order: Vec<usize> = (0..boxes.len()).collect();
-    order.sort_unstable_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
-    let (mut open, mut out, mut work) = (Vec::<usize>::new(), Vec::new(), 0usize);
-    for &i in &order {
-        let b = boxes[i];
-        open.retain(|&j| boxes[j][1] >= b[0]);
+    boxes.sort_unstable_by(|a, b| a.0[0].total_cmp(&b.0[0]));
+    let (mut open, mut out, mut work) = (Vec::<([f64; 4], usize)>::new(), Vec::new(), 0usize);
+    for &(b, i) in &boxes {
+        open.retain(|(c, _)| c[1] >= b[0]);
         work += open.len();
         if work > budget {
             return None;
         }
         out.extend(
             open.iter()
-                .filter(|&&j| boxes[j][2] <= b[3] && b[2] <= boxes[j][3])
-                .map(|&j| (i.min(j), i.max(j))),
+                .filter(|(c, _)| c[2] <= b[3] && b[2] <= c[3])
+                .map(|&(_, j)| (i.min(j), i.max(j))),
         );
-        open.push(i);
+        open.push((b, i));
     }
     Some(out)
 }

@@ -235,7 +235,7 @@ struct HotPixels<'a> {
 }
 
 /// The most hot pixels a segment's slab may hold for it to be scanned rather than searched.
-const SLAB_SCAN: usize = 64;
+const SLAB_SCAN: usize = 1024;
 
 impl<'a> HotPixels<'a> {
     /// The pixels `sorted` (in the order of `G`: by x, then y).
@@ -448,9 +448,8 @@ mod tests {
     }
 
     proptest! {
-        /// The hot pixels a segment meets, by the slab scan or the R-tree search (both taken:
-        /// up to 80 pixels in 12 columns put more or fewer than [`SLAB_SCAN`] in a slab), are
-        /// exactly the pixels that `meets_pixel` accepts among all of them (segments through
+        /// The hot pixels a segment meets, by the slab scan ([`HotPixels::met_by`] below
+        /// [`SLAB_SCAN`]) and by the R-tree search ([`HotPixels::along`]), are exactly the pixels that `meets_pixel` accepts among all of them (segments through
         /// corners and along pixel edges included).
         #[test]
         fn hot_pixels_met_by_a_segment_are_the_pixels_it_meets(
