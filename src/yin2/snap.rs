@@ -13,7 +13,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
 use rstar::{RTree, SelectionFunction, AABB};
-use std::cell::OnceCell;
+use std::cell::{Cell, OnceCell};
 use std::collections::BTreeSet;
 
 /// A grid point: integer multiples of the grid spacing, relative to the local origin.
@@ -225,17 +225,25 @@ fn inside_projection(s: (G, G), c: G) -> bool {
     t > 0 && t < d.0 * d.0 + d.1 * d.1
 }
 
-/// The hot pixels, for finding the ones a segment meets: sorted by x, so that a segment whose
-/// x-range holds few of them scans that slab; an R-tree, built on first need, searched along a
-/// segment whose slab holds many ([`AlongSegment`]), so that the cost follows the pixels near
-/// the segment, not all pixels in its x-range.
+/// The hot pixels, for finding the ones a segment meets: sorted by x, so that a segment scans
+/// the pixels of its x-range (its slab), and an R-tree searched along a segment
+/// ([`AlongSegment`]), whose cost follows the pixels near the segment, not all pixels in its
+/// slab. The tree is built once crowded slabs (over [`SLAB_SCAN`] pixels) have cost as much
+/// scanning as building it would ([`BUILD_COST`] per pixel), as in renting before buying: few
+/// long edges are scanned, many (long slanted edges side by side) are searched.
 struct HotPixels<'a> {
     sorted: &'a [G],
     tree: OnceCell<RTree<[i64; 2]>>,
+    /// The pixels scanned so far in crowded slabs.
+    crowded: Cell<usize>,
 }
 
-/// The most hot pixels a segment's slab may hold for it to be scanned rather than searched.
-const SLAB_SCAN: usize = 1024;
+/// The most hot pixels a slab may hold for it to be scanned whatever it has cost so far.
+const SLAB_SCAN: usize = 64;
+
+/// The cost of building the R-tree, per pixel, in pixels scanned (measured: about 100 ns a
+/// pixel to build, 1–2 ns a pixel to scan).
+const BUILD_COST: usize = 64;
 
 impl<'a> HotPixels<'a> {
     /// The pixels `sorted` (in the order of `G`: by x, then y).
@@ -243,6 +251,7 @@ impl<'a> HotPixels<'a> {
         HotPixels {
             sorted,
             tree: OnceCell::new(),
+            crowded: Cell::new(0),
         }
     }
 
@@ -251,7 +260,14 @@ impl<'a> HotPixels<'a> {
         // A pixel met by the segment has its centre within the segment's box (both on the grid).
         let from = self.sorted.partition_point(|c| c.0 < a.0.min(b.0));
         let to = self.sorted.partition_point(|c| c.0 <= a.0.max(b.0));
-        if to - from <= SLAB_SCAN {
+        let slab = to - from;
+        let scan = slab <= SLAB_SCAN
+            || self.tree.get().is_none()
+                && self.crowded.get() + slab <= BUILD_COST * self.sorted.len();
+        if scan {
+            if slab > SLAB_SCAN {
+                self.crowded.set(self.crowded.get() + slab);
+            }
             let (lo, hi) = (a.1.min(b.1), a.1.max(b.1));
             let meets = |c: &&G| (lo..=hi).contains(&c.1) && meets_pixel(a, b, **c);
             out.extend(self.sorted[from..to].iter().filter(meets));
@@ -448,9 +464,10 @@ mod tests {
     }
 
     proptest! {
-        /// The hot pixels a segment meets, by the slab scan ([`HotPixels::met_by`] below
-        /// [`SLAB_SCAN`]) and by the R-tree search ([`HotPixels::along`]), are exactly the pixels that `meets_pixel` accepts among all of them (segments through
-        /// corners and along pixel edges included).
+        /// The hot pixels a segment meets, by the slab scan ([`HotPixels::met_by`]: at most 80
+        /// pixels, never enough to build the tree) and by the R-tree search
+        /// ([`HotPixels::along`]), are exactly the pixels that `meets_pixel` accepts among all
+        /// of them (segments through corners and along pixel edges included).
         #[test]
         fn hot_pixels_met_by_a_segment_are_the_pixels_it_meets(
             a in (0i64..12, 0i64..12),
