@@ -464,10 +464,10 @@ mod tests {
     }
 
     proptest! {
-        /// The hot pixels a segment meets, by the slab scan ([`HotPixels::met_by`]: at most 80
-        /// pixels, never enough to build the tree) and by the R-tree search
-        /// ([`HotPixels::along`]), are exactly the pixels that `meets_pixel` accepts among all
-        /// of them (segments through corners and along pixel edges included).
+        /// The hot pixels a segment meets, by the slab scan ([`HotPixels::met_by`] on one
+        /// segment's slab of at most 80 pixels: never enough to build the tree) and by the
+        /// R-tree search ([`HotPixels::along`]), are exactly the pixels that `meets_pixel`
+        /// accepts among all of them (segments through corners and along pixel edges included).
         #[test]
         fn hot_pixels_met_by_a_segment_are_the_pixels_it_meets(
             a in (0i64..12, 0i64..12),
@@ -477,11 +477,11 @@ mod tests {
             let sorted: Vec<G> = pixels.iter().copied().collect();
             let hot = HotPixels::new(&sorted);
             let want: Vec<G> = pixels.iter().copied().filter(|&c| meets_pixel(a, b, c)).collect();
-            let mut found: Vec<G> = hot.along(a, b).collect();
-            found.sort();
-            prop_assert_eq!(&found, &want);
             let mut found = Vec::new();
             hot.met_by(a, b, &mut found);
+            found.sort();
+            prop_assert_eq!(&found, &want);
+            let mut found: Vec<G> = hot.along(a, b).collect();
             found.sort();
             prop_assert_eq!(found, want);
         }
