@@ -9,7 +9,7 @@
 use super::error::Yin3Error;
 use super::kept::{provably_kept, Topology};
 use super::set::{compact, Brep, YinSet3};
-use super::transversal::transversal_meet;
+use super::transversal::{transversal_meet, Transversal};
 use super::validate::{check_windings, conforming_after_moves, revalidate};
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
@@ -23,7 +23,22 @@ pub(crate) fn float_meet<N: Num>(
     ctx: N::Ctx,
 ) -> Result<YinSet3<N>, Yin3Error> {
     if let (Some(x), Some(y)) = (a.brep(), b.brep()) {
-        if let Some((points, kept)) = transversal_meet(x, y) {
+        if let Some(meet) = transversal_meet(x, y) {
+            if let Transversal::Apart([in_b, in_a]) = &meet {
+                // An operand whose boundary lies wholly inside the other, and not the
+                // other's in it, is the meet.
+                let (all, none) = (
+                    |v: &[bool]| !v.contains(&false),
+                    |v: &[bool]| !v.contains(&true),
+                );
+                if all(in_b) && none(in_a) {
+                    return Ok(a.clone().with_ctx(ctx));
+                }
+                if none(in_b) && all(in_a) {
+                    return Ok(b.clone().with_ctx(ctx));
+                }
+            }
+            let (points, kept) = meet.complex(x, y);
             if kept.is_empty() {
                 return Ok(YinSet3::empty().with_ctx(ctx));
             }

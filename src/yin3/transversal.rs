@@ -15,7 +15,7 @@
 
 use super::arrange::retriangulate;
 use super::float::exact_points;
-use super::geom::{f64_box, Chart};
+use super::geom::Chart;
 use super::locate::{winding, TriBoxes};
 use super::set::Brep;
 use crate::kernel::Point3;
@@ -25,8 +25,8 @@ use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use num_bigint::BigInt;
 use num_traits::Float as _;
 use rayon::prelude::*;
-use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
-use std::cell::OnceCell;
+use rstar::{primitives::GeomWithData, primitives::Rectangle, Envelope, RTree, AABB};
+use std::cell::{Cell, OnceCell};
 use std::cmp::Ordering::{self, Equal};
 
 /// Where an edge `(u, v)` (global point indices, u < v) pierces triangle `tri` (global index).
@@ -49,10 +49,46 @@ enum Contact {
     Degenerate,
 }
 
+/// The meet of two float boundaries that cross transversally or not at all.
+pub(crate) enum Transversal {
+    /// The boundaries do not meet: for each operand, whether each of its glued surfaces lies
+    /// inside the other operand (one ray per surface).
+    Apart([Vec<bool>; 2]),
+    /// They cross: the meet's triangles (a conforming complex, as the validator would rebuild
+    /// it) over a table of exact points, some of which may be unused.
+    Crossing(Complex),
+}
+
+impl Transversal {
+    /// The meet's triangles over a table of exact points: operand `a`'s, then `b`'s, then the
+    /// pierce points; where the boundaries are apart, the triangles of the glued surfaces that
+    /// lie inside the other operand.
+    pub(crate) fn complex<N: Num>(self, a: &Brep<N>, b: &Brep<N>) -> Complex {
+        let inside = match self {
+            Transversal::Crossing(complex) => return complex,
+            Transversal::Apart(inside) => inside,
+        };
+        let mut points = exact_points(&a.points);
+        points.extend(exact_points(&b.points));
+        let mut tris = Vec::new();
+        for (o, (op, inside)) in [a, b].into_iter().zip(inside).enumerate() {
+            let shift = o * a.points.len();
+            for (surface, _) in op.surfaces.iter().zip(inside).filter(|(_, kept)| *kept) {
+                tris.extend(
+                    surface
+                        .triangles
+                        .iter()
+                        .map(|&t| op.tris[t].map(|v| v + shift)),
+                );
+            }
+        }
+        (points, tris)
+    }
+}
+
 /// The exact meet of the float boundaries `a` and `b` (bounded or not) if they cross
-/// transversally (module docs), `None` otherwise: its triangles (a conforming complex, as the
-/// validator would rebuild it) over a table of exact points, some of which may be unused.
-pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Complex> {
+/// transversally or not at all (module docs), `None` otherwise.
+pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Transversal> {
     let na = a.points.len();
     let f64s: Vec<[f64; 3]> = a
         .points
@@ -63,17 +99,26 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Compl
     let mut tris: Vec<[usize; 3]> = a.tris.clone();
     tris.extend(b.tris.iter().map(|t| t.map(|v| v + na)));
     let first_b = a.tris.len();
+    let boxes: Vec<AABB<[f64; 3]>> = tris
+        .iter()
+        .map(|t| AABB::from_points(t.map(|v| &f64s[v])))
+        .collect();
+    let hull = |of: &[AABB<[f64; 3]>]| of.iter().fold(AABB::new_empty(), |h, b| h.merged(b));
+    let (hull_a, hull_b) = (hull(&boxes[..first_b]), hull(&boxes[first_b..]));
+    // Only triangles whose boxes meet the other operand's box can meet it.
     let tree = RTree::bulk_load(
-        (0..b.tris.len())
-            .map(|s| GeomWithData::new(Rectangle::from_aabb(f64_box(b.corners(s))), s + first_b))
+        (first_b..tris.len())
+            .filter(|&s| boxes[s].intersects(&hull_a))
+            .map(|s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s))
             .collect(),
     );
     // Every pair of boxes that meet, on rayon's threads; the first degenerate pair ends it.
     let crossings: Vec<(usize, usize, [Pierce; 2])> = (0..first_b)
         .into_par_iter()
+        .filter(|&t| boxes[t].intersects(&hull_b))
         .map(|t| {
             let mut mine = Vec::new();
-            for g in tree.locate_in_envelope_intersecting(&f64_box(a.corners(t))) {
+            for g in tree.locate_in_envelope_intersecting(&boxes[t]) {
                 match contact(&f64s, (t, tris[t]), (g.data, tris[g.data])) {
                     Contact::Apart => {}
                     Contact::Cross(ends) => mine.push((t, g.data, ends)),
@@ -86,6 +131,18 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Compl
         .into_iter()
         .flatten()
         .collect();
+    let rays = Rays::new([a, b]);
+    if crossings.is_empty() {
+        // Each glued surface lies wholly on one side of the other boundary.
+        let inside = |o: usize| {
+            let op = [a, b][o];
+            op.surfaces
+                .iter()
+                .map(|s| rays.inside_other(o, &op.points[op.tris[s.triangles[0]][0]]))
+                .collect()
+        };
+        return Some(Transversal::Apart([inside(0), inside(1)]));
+    }
     let mut points = exact_points(&a.points);
     points.extend(exact_points(&b.points));
     // The pierce points: each constructed once, on its edge's triangles and in its triangle.
@@ -146,14 +203,14 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Compl
             None => pieces.push((tri, t)),
         }
     }
-    let inside = inside(&pieces, &crossing_edges, [a, b])?;
+    let inside = inside(&pieces, &crossing_edges, &rays)?;
     let kept: Vec<[usize; 3]> = pieces
         .iter()
         .zip(&inside)
         .filter(|(_, &inside)| inside)
         .map(|((piece, _), _)| *piece)
         .collect();
-    Some((points, kept))
+    Some(Transversal::Crossing((points, kept)))
 }
 
 /// The edge `uv` as a key (smaller index first).
@@ -280,8 +337,9 @@ fn fin((u, v): (usize, usize), i: usize) -> u128 {
 fn inside<N: Num>(
     pieces: &[([usize; 3], usize)],
     crossing: &HashSet<(usize, usize)>,
-    ops: [&Brep<N>; 2],
+    rays: &Rays<N>,
 ) -> Option<Vec<bool>> {
+    let ops = rays.ops;
     let (points_a, first_b) = (ops[0].points.len(), ops[0].tris.len());
     let inputs = points_a + ops[1].points.len();
     let operand = |i: usize| usize::from(pieces[i].1 >= first_b);
@@ -328,9 +386,6 @@ fn inside<N: Num>(
         next[x].push(y);
         next[y].push(x);
     }
-    // A few rays scan every triangle; more use an R-tree of the other's boxes.
-    let trees: [OnceCell<TriBoxes>; 2] = Default::default();
-    let mut rays = 0;
     let mut side: Vec<Option<bool>> = vec![None; pieces.len()];
     for (i, (piece, _)) in pieces.iter().enumerate() {
         let root = uf.find(i);
@@ -342,21 +397,7 @@ fn inside<N: Num>(
         };
         let o = operand(i);
         let q = &ops[o].points[if o == 0 { v } else { v - points_a }];
-        let other = ops[1 - o];
-        rays += 1;
-        let w = if rays <= SCANNED_RAYS {
-            winding(other.all_corners(), q, &N::exact_ctx())
-        } else {
-            let tree = trees[1 - o].get_or_init(|| {
-                TriBoxes::new((0..other.tris.len()).map(|s| (s, other.corners(s))))
-            });
-            winding(
-                tree.along_x(q).map(|s| other.corners(s)),
-                q,
-                &N::exact_ctx(),
-            )
-        } + i64::from(!other.bounded);
-        side[root] = Some(w == 1);
+        side[root] = Some(rays.inside_other(o, q));
         let mut stack = vec![root];
         while let Some(x) = stack.pop() {
             let flipped = side[x].map(|s| !s);
@@ -375,10 +416,48 @@ fn inside<N: Num>(
     (0..pieces.len()).map(|i| side[uf.find(i)]).collect()
 }
 
+/// Rays from points of one operand to the other ([`winding`]): the first few scan every
+/// triangle, later ones an R-tree of the other's boxes, built on first need.
+struct Rays<'a, N: Num> {
+    ops: [&'a Brep<N>; 2],
+    trees: [OnceCell<TriBoxes>; 2],
+    cast: Cell<usize>,
+}
+
+impl<'a, N: Num> Rays<'a, N> {
+    fn new(ops: [&'a Brep<N>; 2]) -> Self {
+        Rays {
+            ops,
+            trees: Default::default(),
+            cast: Cell::new(0),
+        }
+    }
+
+    /// True if `q`, a point of operand `o` off the other's boundary, lies inside the other.
+    fn inside_other(&self, o: usize, q: &Point3<N>) -> bool {
+        let other = self.ops[1 - o];
+        self.cast.set(self.cast.get() + 1);
+        let w = if self.cast.get() <= SCANNED_RAYS {
+            winding(other.all_corners(), q, &N::exact_ctx())
+        } else {
+            let tree = self.trees[1 - o].get_or_init(|| {
+                TriBoxes::new((0..other.tris.len()).map(|s| (s, other.corners(s))))
+            });
+            winding(
+                tree.along_x(q).map(|s| other.corners(s)),
+                q,
+                &N::exact_ctx(),
+            )
+        };
+        w + i64::from(!other.bounded) == 1
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::num::Float;
+    use crate::yin3::float::exact_brep;
     use crate::yin3::set::compact;
     use crate::yin3::shapes::cuboid;
     use crate::yin3::YinSet3;
@@ -426,7 +505,8 @@ mod tests {
 
     /// The transversal meet of two float sets as an exact set, `None` where it declines.
     fn transversal(a: &YinSet3<Float>, b: &YinSet3<Float>) -> Option<YinSet3<Rational>> {
-        let (points, kept) = transversal_meet(a.brep()?, b.brep()?)?;
+        let (x, y) = (a.brep()?, b.brep()?);
+        let (points, kept) = transversal_meet(x, y)?.complex(x, y);
         if kept.is_empty() {
             return Some(YinSet3::empty());
         }
@@ -470,7 +550,49 @@ mod tests {
                 }
                 let fast = transversal(&fa, &fb);
                 prop_assert!(fast.is_some(), "declined a generic pair");
-                prop_assert_eq!(fast.unwrap(), ea.meet(&eb));
+                let exact = ea.meet(&eb);
+                prop_assert_eq!(fast.unwrap(), exact.clone());
+                if let Some(Transversal::Apart(_)) = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap()) {
+                    // Nothing is rounded where the boundaries are apart: the float meet is exact.
+                    let float = fa.try_meet(&fb).expect("a float meet");
+                    let values = float.brep().map(|b| YinSet3::from_brep(exact_brep(b), ()));
+                    prop_assert_eq!(values.unwrap_or_else(YinSet3::empty), exact);
+                }
+            }
+        }
+    }
+
+    /// Boundaries that do not meet — nested either way, disjoint, and with complements (glued
+    /// surfaces of both operands kept) — take the apart path, and the float meet is the exact
+    /// meet of the values, unrounded.
+    #[test]
+    fn apart_boundaries_meet_exactly() {
+        let still = [[0.0; 3]; 8];
+        let big = jittered_cube([0.0; 3], 4.0, &still);
+        let small = jittered_cube([1.0; 3], 1.0, &still);
+        let far = jittered_cube([9.0; 3], 1.0, &still);
+        for (x, y) in [(&big, &small), (&small, &big), (&small, &far), (&big, &far)] {
+            let (fx, fy) = (solid::<Float>(x), solid::<Float>(y));
+            let (ex, ey) = (solid::<Rational>(x), solid::<Rational>(y));
+            for (fa, fb, ea, eb) in [
+                (fx.clone(), fy.clone(), ex.clone(), ey.clone()),
+                (fx.clone(), fy.complement(), ex.clone(), ey.complement()),
+                (
+                    fx.complement(),
+                    fy.complement(),
+                    ex.complement(),
+                    ey.complement(),
+                ),
+            ] {
+                let meet = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap());
+                assert!(matches!(meet, Some(Transversal::Apart(_))));
+                let float = fa.try_meet(&fb).expect("a float meet");
+                let values = match float.brep() {
+                    Some(b) => YinSet3::from_brep(exact_brep(b), ()),
+                    None if float.is_empty() => YinSet3::empty(),
+                    None => YinSet3::full(),
+                };
+                assert_eq!(values, ea.meet(&eb));
             }
         }
     }

@@ -200,6 +200,78 @@ pub(crate) fn meet_only_at<N: Num>(
     }
 }
 
+/// True if the triangles `t` and `s` (indices into `points`) meet only in their shared
+/// corners, decided on their images in the coordinate plane across which `t`'s normal (in
+/// `f64`, a hint only) is longest, where neither image degenerates: projecting is then
+/// one-to-one on each triangle, so images that meet only in the images of shared corners mean
+/// triangles that meet only there. Shared edge: the third corners' images strictly on
+/// opposite sides of it; one shared corner: the images' closed corners at it disjoint; none:
+/// an edge line of one image with the other image strictly outside (separating axis). False
+/// where it cannot tell.
+pub(crate) fn images_meet_only_in_shared<N: Num>(
+    points: &[Point3<N>],
+    t: [usize; 3],
+    s: [usize; 3],
+    ctx: &N::Ctx,
+) -> bool {
+    use Ordering::Equal;
+    let [p, q, r] = t.map(|v| points[v].to_f64());
+    let (u, w) = (
+        [0, 1, 2].map(|i| q[i] - p[i]),
+        [0, 1, 2].map(|i| r[i] - p[i]),
+    );
+    let n = [
+        u[1] * w[2] - u[2] * w[1],
+        u[2] * w[0] - u[0] * w[2],
+        u[0] * w[1] - u[1] * w[0],
+    ];
+    let k = (0..3).fold(0, |k, i| if n[i].abs() > n[k].abs() { i } else { k });
+    let image = |v: usize| [points[v].coord((k + 1) % 3), points[v].coord((k + 2) % 3)];
+    let o = |a: usize, b: usize, c: usize| N::orient2d(image(a), image(b), image(c), ctx);
+    let (st, ss) = (o(t[0], t[1], t[2]), o(s[0], s[1], s[2]));
+    if st == Equal || ss == Equal {
+        return false;
+    }
+    let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
+    // The two corners that follow `v` around `tri`, and whether `x` lies in the closed
+    // corner they span at `v` (oriented `sign`).
+    let corner = |tri: [usize; 3], v: usize| {
+        let k = tri
+            .iter()
+            .position(|&x| x == v)
+            .expect("v is a shared corner");
+        [tri[(k + 1) % 3], tri[(k + 2) % 3]]
+    };
+    let in_corner = |v: usize, [a, b]: [usize; 2], sign: Ordering, x: usize| {
+        [o(v, a, x), o(v, x, b)]
+            .iter()
+            .all(|&o| o == sign || o == Equal)
+    };
+    match shared[..] {
+        [x, y] => {
+            let third = |tri: [usize; 3]| tri.into_iter().find(|v| !shared.contains(v));
+            let (sa, sw) = (third(t), third(s));
+            let (sa, sw) = (
+                o(x, y, sa.expect("three corners")),
+                o(x, y, sw.expect("three corners")),
+            );
+            sa != Equal && sw != Equal && sa != sw
+        }
+        [v] => {
+            let (ct, cs) = (corner(t, v), corner(s, v));
+            !cs.iter().any(|&x| in_corner(v, ct, st, x))
+                && !ct.iter().any(|&x| in_corner(v, cs, ss, x))
+        }
+        [] => [(t, st, s), (s, ss, t)].iter().any(|&(tri, sign, other)| {
+            (0..3).any(|e| {
+                let (a, b) = (tri[e], tri[(e + 1) % 3]);
+                other.iter().all(|&x| o(a, b, x) == sign.reverse())
+            })
+        }),
+        _ => false,
+    }
+}
+
 /// True if no ray from `v` through a point of `rays` (points of the plane of the triangle
 /// `vab`) lies in the triangle's closed corner at `v`; false if `vab` is degenerate.
 fn out_of_corner<N: Num>(
@@ -521,6 +593,42 @@ mod tests {
             let sides = t_side(t, s3, &());
             if contact.is_none() && !proper(&sides) && !sides.iter().all(|x| *x == Ordering::Equal) {
                 proptest::prop_assert!(apart(t, s3, &()));
+            }
+        }
+
+        /// Where the test on the images in a coordinate plane says that two triangles sharing
+        /// two, one or no corners meet only there, the constructed intersection agrees; and
+        /// where the images are nondegenerate and the triangles coplanar, it always answers
+        /// (lattice points: coplanar, touching and crossing pairs all occur).
+        #[test]
+        fn images_meet_only_in_shared_is_the_constructed_contact(
+            q in proptest::array::uniform6((-4i64..=4, -4i64..=4, -4i64..=4)),
+            shared in 0usize..3,
+            flip in proptest::bool::ANY,
+            flat in proptest::bool::ANY,
+        ) {
+            // Flat: all six points in the plane z = 0.
+            let q = q.map(|(x, y, z)| p(x, y, if flat { 0 } else { z }));
+            let t = [0, 1, 2];
+            let mut s = [[0, 1, 3], [0, 3, 4], [3, 4, 5]][shared];
+            if flip {
+                s.swap(1, 2);
+            }
+            let (tp, sp) = (t.map(|v| &q[v]), s.map(|v| &q[v]));
+            proptest::prop_assume!(!collinear(tp[0], tp[1], tp[2]) && !collinear(sp[0], sp[1], sp[2]));
+            proptest::prop_assume!((0..6).all(|i| (0..i).all(|j| q[i] != q[j])));
+            let contact = intersect(tp, sp, &());
+            let corners: Vec<&Point3<Rational>> = s.iter().filter(|v| t.contains(v)).map(|&v| &q[v]).collect();
+            let only_shared = contact
+                .as_ref()
+                .is_none_or(|c| !c.interiors_meet && c.points.iter().all(|x| corners.contains(&x)));
+            let said = images_meet_only_in_shared(&q, t, s, &());
+            if said {
+                proptest::prop_assert!(only_shared, "said they meet only in shared corners: {:?}", contact);
+            }
+            if flat {
+                // Coplanar: both images are nondegenerate, and the test is complete.
+                proptest::prop_assert_eq!(said, only_shared);
             }
         }
 

@@ -9,7 +9,7 @@ use super::float::{exact_points, rounded_brep};
 use super::geom::{collinear, f64_box, normal, Chart};
 use super::locate::{winding, TriBoxes};
 use super::set::{Brep, YinSet3};
-use super::tri::{apart, intersect};
+use super::tri::{apart, images_meet_only_in_shared, intersect};
 use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, Num};
@@ -125,7 +125,9 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
             .map(|t| (t, b.corners(t))),
     );
     let meet_in_shared = |t: [usize; 3], s: [usize; 3]| {
-        if t.iter().any(|v| s.contains(v)) {
+        if images_meet_only_in_shared(&b.points, t, s, exact) {
+            true
+        } else if t.iter().any(|v| s.contains(v)) {
             shared_only(&b.points, t, s, exact).is_some()
         } else {
             let (t, s) = (t.map(|v| &b.points[v]), s.map(|v| &b.points[v]));
