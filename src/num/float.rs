@@ -180,8 +180,28 @@ fn exact_sign_f64<const K: usize>(
     rational(all.map(|v| Rational::from_f64(v).unwrap_or_else(|_| Rational::zero())))
 }
 
-/// The sign of (b − a) × (c − a) for `f64` points, exactly ([`exact_sign_f64`]).
+/// Sums of absolute products (Shewchuk's permanents) from which the static filters below are
+/// trusted: far above the subnormal range, where products lose relative precision.
+const FILTERED_FROM: f64 = 1e-250;
+
+/// The sign of `det` if Shewchuk's static error bound `bound · permanent` (his
+/// `ccwerrboundA`, `o3derrboundA`), doubled against products that underflow, decides it;
+/// `None` otherwise (also where anything overflowed).
+fn filtered(det: f64, permanent: f64, bound: f64) -> Option<Ordering> {
+    let sure =
+        permanent.is_finite() && permanent >= FILTERED_FROM && det.abs() > 2.0 * bound * permanent;
+    sure.then(|| det.partial_cmp(&0.0).unwrap_or(Ordering::Equal))
+}
+
+/// The sign of (b − a) × (c − a) for `f64` points, exactly: a static filter on the values
+/// ([`filtered`]), else [`exact_sign_f64`].
 pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
+    let left = (a[0] - c[0]) * (b[1] - c[1]);
+    let right = (a[1] - c[1]) * (b[0] - c[0]);
+    let bound = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
+    if let Some(sign) = filtered(left - right, left.abs() + right.abs(), bound) {
+        return sign;
+    }
     // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
     // product of two stays representable, and none overflows.
     let robust_sign = |p: [f64; 6]| {
@@ -197,9 +217,22 @@ pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orderin
     )
 }
 
-/// The sign of det[b − a, c − a, d − a] for `f64` points, exactly ([`exact_sign_f64`]), in
-/// the convention of [`Num::orient3d`].
+/// The sign of det[b − a, c − a, d − a] for `f64` points, exactly — a static filter on the
+/// values ([`filtered`]), else [`exact_sign_f64`] — in the convention of [`Num::orient3d`].
 pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
+    // det[b − a, c − a, d − a] = −det[a − d, b − d, c − d], Shewchuk's form.
+    let [u, v, w] = [a, b, c].map(|p| [p[0] - d[0], p[1] - d[1], p[2] - d[2]]);
+    let (vw, wv) = (v[0] * w[1], w[0] * v[1]);
+    let (wu, uw) = (w[0] * u[1], u[0] * w[1]);
+    let (uv, vu) = (u[0] * v[1], v[0] * u[1]);
+    let det = u[2] * (vw - wv) + v[2] * (wu - uw) + w[2] * (uv - vu);
+    let permanent = (vw.abs() + wv.abs()) * u[2].abs()
+        + (wu.abs() + uw.abs()) * v[2].abs()
+        + (uv.abs() + vu.abs()) * w[2].abs();
+    let bound = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
+    if let Some(sign) = filtered(-det, permanent, bound) {
+        return sign;
+    }
     // Coordinates of magnitude in [2^-300, 2^300] (or 0) are multiples of 2^-352: every
     // product of three stays representable, and none overflows.
     let robust_sign = |p: [f64; 12]| {
@@ -213,10 +246,8 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
         let det = robust::orient3d(q(0), q(3), q(6), q(9));
         0.0f64.partial_cmp(&det).unwrap_or(Ordering::Equal)
     };
-    let all = [a, b, c, d]
-        .concat()
-        .try_into()
-        .expect("twelve coordinates");
+    let all = [0, 1, 2, 3].map(|i| [a, b, c, d][i]);
+    let all: [f64; 12] = std::array::from_fn(|k| all[k / 3][k % 3]);
     exact_sign_f64(all, (-300, 300), robust_sign, |r| {
         let p = |i: usize| [&r[i], &r[i + 1], &r[i + 2]];
         super::exact_orient3d(p(0), p(3), p(6), p(9))
@@ -477,5 +508,53 @@ mod tests {
             Float::orient2d(a, b, near, &Tolerance::new(1e-12)),
             Ordering::Greater
         );
+    }
+
+    /// A coordinate near `k · 2^e`: `k` small, moved by `ulps` steps of its own spacing
+    /// (points on a line or plane of small integers, nudged off it or not, at any scale).
+    fn near(k: i64, e: i32, ulps: i32) -> f64 {
+        let mut v = ldexp(k as f64, e);
+        for _ in 0..ulps.abs() {
+            v = if ulps > 0 { v.next_up() } else { v.next_down() };
+        }
+        v
+    }
+
+    /// Mostly on the lattice (so that a quarter of the draws is exactly degenerate where the
+    /// lattice points are), else nudged.
+    fn coordinate() -> impl proptest::strategy::Strategy<Value = (i64, i32)> {
+        use proptest::prelude::*;
+        (-2i64..=2, prop_oneof![8 => Just(0), 1 => -2i32..=2])
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+
+        /// The filtered orientations equal the exact ones of the values read as rationals, on
+        /// points of small-integer lines and planes (degenerate or nudged by ulps off them) scaled
+        /// by 2^e for e from the subnormal range to near overflow, and on arbitrary finite
+        /// `f64`s.
+        #[test]
+        fn filtered_orientations_are_exact(
+            p in proptest::array::uniform12(coordinate()),
+            e in -1070i32..1000,
+            raw in proptest::array::uniform12(proptest::num::f64::NORMAL | proptest::num::f64::SUBNORMAL | proptest::num::f64::ZERO),
+            arbitrary in proptest::bool::ANY,
+        ) {
+            let v: [f64; 12] = if arbitrary { raw } else { p.map(|(k, u)| near(k, e, u)) };
+            let r = v.map(|x| Rational::from_f64(x).expect("finite"));
+            let two = |i: usize| [v[i], v[i + 1]];
+            let rtwo = |i: usize| [&r[i], &r[i + 1]];
+            proptest::prop_assert_eq!(
+                exact_orient_f64(two(0), two(2), two(4)),
+                super::super::exact_orient(rtwo(0), rtwo(2), rtwo(4))
+            );
+            let three = |i: usize| [v[i], v[i + 1], v[i + 2]];
+            let rthree = |i: usize| [&r[i], &r[i + 1], &r[i + 2]];
+            proptest::prop_assert_eq!(
+                exact_orient3d_f64(three(0), three(3), three(6), three(9)),
+                super::super::exact_orient3d(rthree(0), rthree(3), rthree(6), rthree(9))
+            );
+        }
     }
 }
