@@ -185,11 +185,12 @@ fn exact_sign_f64<const K: usize>(
 const FILTERED_FROM: f64 = 1e-250;
 
 /// The sign of `det` if Shewchuk's static error bound `bound · permanent` (his
-/// `ccwerrboundA`, `o3derrboundA`), doubled against products that underflow, decides it;
-/// `None` otherwise (also where anything overflowed).
-fn filtered(det: f64, permanent: f64, bound: f64) -> Option<Ordering> {
-    let sure =
-        permanent.is_finite() && permanent >= FILTERED_FROM && det.abs() > 2.0 * bound * permanent;
+/// `ccwerrboundA`, `o3derrboundA`), doubled, plus `slack` (what products that underflowed
+/// can add) decides it; `None` otherwise (also where anything overflowed).
+fn filtered(det: f64, permanent: f64, bound: f64, slack: f64) -> Option<Ordering> {
+    let sure = permanent.is_finite()
+        && permanent >= FILTERED_FROM
+        && det.abs() > 2.0 * bound * permanent + slack;
     sure.then(|| det.partial_cmp(&0.0).unwrap_or(Ordering::Equal))
 }
 
@@ -199,7 +200,8 @@ pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orderin
     let left = (a[0] - c[0]) * (b[1] - c[1]);
     let right = (a[1] - c[1]) * (b[0] - c[0]);
     let bound = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
-    if let Some(sign) = filtered(left - right, left.abs() + right.abs(), bound) {
+    // An underflowed product is off by at most 2^-1075, far below the bound.
+    if let Some(sign) = filtered(left - right, left.abs() + right.abs(), bound, 0.0) {
         return sign;
     }
     // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
@@ -230,7 +232,9 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
         + (wu.abs() + uw.abs()) * v[2].abs()
         + (uv.abs() + vu.abs()) * w[2].abs();
     let bound = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
-    if let Some(sign) = filtered(-det, permanent, bound) {
+    // A 2 × 2 minor whose products underflowed is off by up to 2^-1074, times its factor.
+    let slack = (u[2].abs() + v[2].abs() + w[2].abs()) * ldexp(1.0, -1070);
+    if let Some(sign) = filtered(-det, permanent, bound, slack) {
         return sign;
     }
     // Coordinates of magnitude in [2^-300, 2^300] (or 0) are multiples of 2^-352: every
