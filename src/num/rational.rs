@@ -109,6 +109,21 @@ fn lowest(n: i128, d: i128) -> Rational {
     }
 }
 
+/// gcd(|x|, d) for d > 0, by one remainder when x fits in 128 bits (the usual case), else
+/// by [`big::gcd`]; gcd(0, d) = d.
+fn small_gcd(x: &BigInt, d: &BigInt) -> BigInt {
+    match x.magnitude().to_u128() {
+        Some(0) => d.clone(),
+        Some(x) => {
+            let r = (d % BigInt::from(x))
+                .to_u128()
+                .expect("a remainder below x");
+            BigInt::from(x.gcd(&r))
+        }
+        None => big::gcd(x, d),
+    }
+}
+
 /// `n / d` for `d > 0`, reduced to lowest terms.
 fn reduce(n: i128, d: i128) -> Rational {
     if d == 1 {
@@ -130,6 +145,44 @@ impl Rational {
     /// `numer / denom` in lowest terms (panics if `denom` is zero, like `num-rational`).
     pub fn new(numer: BigInt, denom: BigInt) -> Rational {
         from_big(big::new(numer, denom))
+    }
+
+    /// The point (u·V − v·U) / (u − v) · 2^`scale` of the line through the integer points
+    /// `pu` = U and `pv` = V (u ≠ v), each coordinate in lowest terms after a single gcd of big
+    /// integers: with h = gcd(u, v), u = h·u′, v = h·v′ and d = u′ − v′, the numerator
+    /// u′·V − v′·U ≡ u′·(V − U) (mod d) and gcd(u′, d) = gcd(u′, v′) = 1, so it shares with d
+    /// exactly gcd(V − U, d), a gcd with the small V − U.
+    pub(crate) fn section_point(
+        u: &BigInt,
+        v: &BigInt,
+        [pu, pv]: [&[BigInt; 3]; 2],
+        scale: i32,
+    ) -> [Rational; 3] {
+        let h = big::gcd(u, v);
+        let (u, v) = (big::exact_div(u, &h), big::exact_div(v, &h));
+        let d = &u - &v;
+        let flip = d.is_negative();
+        let d = d.abs();
+        [0, 1, 2].map(|k| {
+            let numer: BigInt = &u * &pv[k] - &v * &pu[k];
+            let numer = if flip { -numer } else { numer };
+            if numer.is_zero() {
+                return Rational::zero();
+            }
+            let g = small_gcd(&(&pv[k] - &pu[k]), &d);
+            let (mut n, mut d) = (big::exact_div(&numer, &g), big::exact_div(&d, &g));
+            // Times 2^scale: only the factors of two of the other side can cancel.
+            if scale > 0 {
+                let t = (scale as u64).min(d.trailing_zeros().unwrap_or(0));
+                n <<= scale as u64 - t;
+                d >>= t;
+            } else {
+                let t = (-scale as u64).min(n.trailing_zeros().unwrap_or(0));
+                n >>= t;
+                d <<= -scale as u64 - t;
+            }
+            from_big(BigRational::new_raw(n, d))
+        })
     }
 
     /// The integer `n`.
@@ -526,6 +579,37 @@ impl Num for Rational {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        /// The section point of a line through integer points equals each coordinate's
+        /// quotient reduced by a full gcd, for u and v with common factors, equal coordinates
+        /// (V − U = 0), coordinates past 128 bits and scales both ways.
+        #[test]
+        fn section_point_is_the_reduced_quotient(
+            (u, v) in (-1i64 << 40..1i64 << 40, -1i64 << 40..1i64 << 40),
+            h in 1i64..1_000_000,
+            wide in proptest::array::uniform3(0u32..3),
+            pu in proptest::array::uniform3(-1000i64..1000),
+            step in proptest::array::uniform3(-3i64..3),
+            scale in -100i32..100,
+        ) {
+            proptest::prop_assume!(u != v);
+            let big = |x: i64| BigInt::from(x) * BigInt::from(h) * BigInt::from(h);
+            let (u, v) = (big(u), big(v));
+            // Coordinates times 2^0, 2^70 or 2^140 (the last past u128).
+            let at = |x: i64, k: usize| BigInt::from(x) << (70 * wide[k]);
+            let pu = [0, 1, 2].map(|k| at(pu[k], k));
+            let pv = [0, 1, 2].map(|k| &pu[k] + at(step[k] * 7, k));
+            let got = Rational::section_point(&u, &v, [&pu, &pv], scale);
+            for k in 0..3 {
+                let two = Rational::new(BigInt::from(1) << scale.unsigned_abs(), BigInt::from(1));
+                let q = Rational::new(&u * &pv[k] - &v * &pu[k], &u - &v);
+                let want = if scale >= 0 { q * two } else { q / two };
+                proptest::prop_assert_eq!(&got[k], &want);
+                proptest::prop_assert_eq!(got[k].denom().sign() == num_bigint::Sign::Plus, true);
+            }
+        }
+    }
 
     #[test]
     fn parses_without_rounding() {

@@ -36,6 +36,10 @@ type Pierce = ((usize, usize), usize);
 /// (one in unit tests, so that they take both ways).
 const SCANNED_RAYS: usize = if cfg!(test) { 1 } else { 8 };
 
+/// Triangles of the first operand from which its contact search runs on rayon's threads (16
+/// in unit tests, so that they take both ways).
+const PARALLEL_FROM: usize = if cfg!(test) { 16 } else { 4096 };
+
 /// Triangles over a table of exact points.
 type Complex = (Vec<Point3<Rational>>, Vec<[usize; 3]>);
 
@@ -112,25 +116,33 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             .map(|s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s))
             .collect(),
     );
-    // Every pair of boxes that meet, on rayon's threads; the first degenerate pair ends it.
-    let crossings: Vec<(usize, usize, [Pierce; 2])> = (0..first_b)
-        .into_par_iter()
-        .filter(|&t| boxes[t].intersects(&hull_b))
-        .map(|t| {
-            let mut mine = Vec::new();
-            for g in tree.locate_in_envelope_intersecting(&boxes[t]) {
-                match contact(&f64s, (t, tris[t]), (g.data, tris[g.data])) {
-                    Contact::Apart => {}
-                    Contact::Cross(ends) => mine.push((t, g.data, ends)),
-                    Contact::Degenerate => return None,
-                }
+    // Every pair of boxes that meet; the first degenerate pair ends it.
+    let search = |t: usize| {
+        let mut mine = Vec::new();
+        for g in tree.locate_in_envelope_intersecting(&boxes[t]) {
+            match contact(&f64s, (t, tris[t]), (g.data, tris[g.data])) {
+                Contact::Apart => {}
+                Contact::Cross(ends) => mine.push((t, g.data, ends)),
+                Contact::Degenerate => return None,
             }
-            Some(mine)
-        })
-        .collect::<Option<Vec<_>>>()?
-        .into_iter()
-        .flatten()
-        .collect();
+        }
+        Some(mine)
+    };
+    let near = |&t: &usize| boxes[t].intersects(&hull_b);
+    // On rayon's threads for large operands; handing small ones over costs more than it saves.
+    let found: Vec<Vec<_>> = if first_b < PARALLEL_FROM {
+        (0..first_b)
+            .filter(near)
+            .map(search)
+            .collect::<Option<_>>()?
+    } else {
+        (0..first_b)
+            .into_par_iter()
+            .filter(near)
+            .map(search)
+            .collect::<Option<_>>()?
+    };
+    let crossings: Vec<(usize, usize, [Pierce; 2])> = found.into_iter().flatten().collect();
     let rays = Rays::new([a, b]);
     if crossings.is_empty() {
         // Each glued surface lies wholly on one side of the other boundary.
@@ -281,8 +293,8 @@ fn straddling(tri: [usize; 3], sides: &[Ordering; 3]) -> [((usize, usize), Order
 
 /// The point where the edge `(u, v)` pierces the plane of the triangle `tri` (indices into the
 /// `f64` points `p`), exactly: (du·V − dv·U) / (du − dv), du and dv the plane's values at U and
-/// V, in integers after scaling every coordinate by one power of two; the same value whichever
-/// triangle of the edge asks.
+/// V, in integers after scaling every coordinate by one power of two
+/// ([`Rational::section_point`]); the same value whichever triangle of the edge asks.
 fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
     let parts = [u, v, tri[0], tri[1], tri[2]].map(|i| p[i].map(|x| x.integer_decode()));
     let low = parts
@@ -308,12 +320,8 @@ fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rat
         let d = sub(x, &a);
         &n[0] * &d[0] + &n[1] * &d[1] + &n[2] * &d[2]
     };
-    let (du, dv) = (value(&pu), value(&pv));
-    let den = &du - &dv;
-    // Scaled back by 2^low: into the numerator for low ≥ 0, the denominator otherwise.
-    let (up, down) = (low.max(0) as usize, (-low).max(0) as usize);
-    let coord = |k: usize| Rational::new((&du * &pv[k] - &dv * &pu[k]) << up, den.clone() << down);
-    Point3::new(coord(0), coord(1), coord(2))
+    let [x, y, z] = Rational::section_point(&value(&pu), &value(&pv), [&pu, &pv], low);
+    Point3::new(x, y, z)
 }
 
 /// The bits of each field of a packed fin ([`fin`]).
