@@ -36,9 +36,22 @@ type Pierce = ((usize, usize), usize);
 /// (one in unit tests, so that they take both ways).
 const SCANNED_RAYS: usize = if cfg!(test) { 1 } else { 8 };
 
-/// Triangles of the first operand from which its contact search runs on rayon's threads (16
-/// in unit tests, so that they take both ways).
-const PARALLEL_FROM: usize = if cfg!(test) { 16 } else { 4096 };
+/// Triangles of both operands from which the meet runs on rayon's threads (16 in unit tests,
+/// so that they take both ways): handing small work over costs more than it saves.
+const PARALLEL_FROM: usize = if cfg!(test) { 16 } else { 8192 };
+
+/// `f` on each of `items`, in order, on rayon's threads if `parallel`.
+fn map_all<T: Sync, R: Send>(
+    items: &[T],
+    parallel: bool,
+    f: impl Fn(&T) -> R + Sync + Send,
+) -> Vec<R> {
+    if parallel {
+        items.par_iter().map(f).collect()
+    } else {
+        items.iter().map(f).collect()
+    }
+}
 
 /// Triangles over a table of exact points.
 type Complex = (Vec<Point3<Rational>>, Vec<[usize; 3]>);
@@ -128,20 +141,13 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         }
         Some(mine)
     };
-    let near = |&t: &usize| boxes[t].intersects(&hull_b);
-    // On rayon's threads for large operands; handing small ones over costs more than it saves.
-    let found: Vec<Vec<_>> = if first_b < PARALLEL_FROM {
-        (0..first_b)
-            .filter(near)
-            .map(search)
-            .collect::<Option<_>>()?
-    } else {
-        (0..first_b)
-            .into_par_iter()
-            .filter(near)
-            .map(search)
-            .collect::<Option<_>>()?
-    };
+    let parallel = tris.len() >= PARALLEL_FROM;
+    let near: Vec<usize> = (0..first_b)
+        .filter(|&t| boxes[t].intersects(&hull_b))
+        .collect();
+    let found: Vec<Vec<_>> = map_all(&near, parallel, |&t| search(t))
+        .into_iter()
+        .collect::<Option<_>>()?;
     let crossings: Vec<(usize, usize, [Pierce; 2])> = found.into_iter().flatten().collect();
     let rays = Rays::new([a, b]);
     if crossings.is_empty() {
@@ -179,13 +185,11 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         cuts[s].push((p, q));
         crossing_edges.insert((p.min(q), p.max(q)));
     }
-    let made: Vec<Point3<Rational>> = pierces
-        .par_iter()
-        .map(|&(edge, tri)| pierce(&f64s, edge, tris[tri]))
-        .collect();
-    points.extend(made);
-    // Every triangle with points on it, re-triangulated (on rayon's threads): the pierce
-    // points of its edges lie inside those sides, the others inside it.
+    points.extend(map_all(&pierces, parallel, |&(edge, tri)| {
+        pierce(&f64s, edge, tris[tri])
+    }));
+    // Every triangle with points on it, re-triangulated: the pierce points of its edges lie
+    // inside those sides, the others inside it.
     let no_points = Vec::new();
     let sides = |t: usize| {
         let tri = tris[t];
@@ -199,14 +203,13 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     let cut: Vec<usize> = (0..tris.len())
         .filter(|&t| !extra[t].is_empty() || sides(t).iter().any(|side| !side.is_empty()))
         .collect();
-    let parts: Vec<Vec<[usize; 3]>> = cut
-        .par_iter()
-        .map(|&t| {
-            let chart = Chart::of_f64_triangle(tris[t].map(|v| f64s[v]))?;
-            let extra = extra[t].iter().copied();
-            retriangulate(&points, tris[t], chart, sides(t), extra, &cuts[t], &()).ok()
-        })
-        .collect::<Option<_>>()?;
+    let parts: Vec<Vec<[usize; 3]>> = map_all(&cut, parallel, |&t| {
+        let chart = Chart::of_f64_triangle(tris[t].map(|v| f64s[v]))?;
+        let extra = extra[t].iter().copied();
+        retriangulate(&points, tris[t], chart, sides(t), extra, &cuts[t], &()).ok()
+    })
+    .into_iter()
+    .collect::<Option<_>>()?;
     let mut parts: HashMap<usize, Vec<[usize; 3]>> = cut.into_iter().zip(parts).collect();
     let mut pieces: Vec<([usize; 3], usize)> = Vec::with_capacity(tris.len());
     for (t, &tri) in tris.iter().enumerate() {
@@ -215,7 +218,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             None => pieces.push((tri, t)),
         }
     }
-    let inside = inside(&pieces, &crossing_edges, &rays)?;
+    let inside = inside(&pieces, &crossing_edges, &rays, parallel)?;
     let kept: Vec<[usize; 3]> = pieces
         .iter()
         .zip(&inside)
@@ -346,6 +349,7 @@ fn inside<N: Num>(
     pieces: &[([usize; 3], usize)],
     crossing: &HashSet<(usize, usize)>,
     rays: &Rays<N>,
+    parallel: bool,
 ) -> Option<Vec<bool>> {
     let ops = rays.ops;
     let (points_a, first_b) = (ops[0].points.len(), ops[0].tris.len());
@@ -361,7 +365,11 @@ fn inside<N: Num>(
         .enumerate()
         .flat_map(|(i, (t, _))| (0..3).map(move |k| fin(key(t[k], t[(k + 1) % 3]), i)))
         .collect();
-    fins.par_sort_unstable();
+    if parallel {
+        fins.par_sort_unstable();
+    } else {
+        fins.sort_unstable();
+    }
     let edge = |f: &u128| ((f >> (2 * FIELD)) as usize, (f >> FIELD & MASK) as usize);
     let mut uf = UnionFind::new(pieces.len());
     let mut flips: Vec<(usize, usize)> = Vec::new();
