@@ -6,7 +6,7 @@
 //! conforming complex.
 
 use super::geom::{f64_box, in_triangle3, Chart};
-use super::tri::{apart_across, intersect, meet_only_at};
+use super::tri::{apart_across, corners_after, intersect, meet_only_at};
 use super::triangulate::{triangulate, TriangulateError};
 use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
@@ -227,14 +227,7 @@ pub(crate) fn shared_only<N: Num>(
     ctx: &N::Ctx,
 ) -> Option<Vec<usize>> {
     let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
-    // The two corners that follow the shared vertex `v` around a triangle.
-    let from = |tri: [usize; 3], v: usize| {
-        let k = tri
-            .iter()
-            .position(|&u| u == v)
-            .expect("v is a shared corner");
-        [1, 2].map(|d| &points[tri[(k + d) % 3]])
-    };
+    let from = |tri: [usize; 3], v: usize| corners_after(tri, v).map(|x| &points[x]);
     let alone = match shared[..] {
         [u, v] => {
             // The third corner of a triangle.

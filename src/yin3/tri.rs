@@ -200,9 +200,15 @@ pub(crate) fn meet_only_at<N: Num>(
     }
 }
 
+/// The two corners that follow `v` around the triangle `tri` (`v` one of its corners).
+pub(crate) fn corners_after(tri: [usize; 3], v: usize) -> [usize; 2] {
+    let k = tri.iter().position(|&x| x == v).expect("v is a corner");
+    [tri[(k + 1) % 3], tri[(k + 2) % 3]]
+}
+
 /// True if the triangles `t` and `s` (indices into `points`) meet only in their shared
-/// corners, decided on their images in the coordinate plane across which `t`'s normal (in
-/// `f64`, a hint only) is longest, where neither image degenerates: projecting is then
+/// corners, decided on their images in the coordinate plane onto which `t` projects largest
+/// (chosen in `f64`, a hint only), where neither image degenerates: projecting is then
 /// one-to-one on each triangle, so images that meet only in the images of shared corners mean
 /// triangles that meet only there. Shared edge: the third corners' images strictly on
 /// opposite sides of it; one shared corner: the images' closed corners at it disjoint; none:
@@ -215,33 +221,19 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
     ctx: &N::Ctx,
 ) -> bool {
     use Ordering::Equal;
-    let [p, q, r] = t.map(|v| points[v].to_f64());
-    let (u, w) = (
-        [0, 1, 2].map(|i| q[i] - p[i]),
-        [0, 1, 2].map(|i| r[i] - p[i]),
-    );
-    let n = [
-        u[1] * w[2] - u[2] * w[1],
-        u[2] * w[0] - u[0] * w[2],
-        u[0] * w[1] - u[1] * w[0],
-    ];
-    let k = (0..3).fold(0, |k, i| if n[i].abs() > n[k].abs() { i } else { k });
-    let image = |v: usize| [points[v].coord((k + 1) % 3), points[v].coord((k + 2) % 3)];
-    let o = |a: usize, b: usize, c: usize| N::orient2d(image(a), image(b), image(c), ctx);
+    let Some(chart) = Chart::of_f64_triangle(t.map(|v| points[v].to_f64())) else {
+        return false;
+    };
+    let o = |a: usize, b: usize, c: usize| {
+        let [a, b, c] = [a, b, c].map(|v| chart.project(&points[v]));
+        orient(&a, &b, &c, ctx)
+    };
     let (st, ss) = (o(t[0], t[1], t[2]), o(s[0], s[1], s[2]));
     if st == Equal || ss == Equal {
         return false;
     }
     let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
-    // The two corners that follow `v` around `tri`, and whether `x` lies in the closed
-    // corner they span at `v` (oriented `sign`).
-    let corner = |tri: [usize; 3], v: usize| {
-        let k = tri
-            .iter()
-            .position(|&x| x == v)
-            .expect("v is a shared corner");
-        [tri[(k + 1) % 3], tri[(k + 2) % 3]]
-    };
+    // Whether `x` lies in the closed corner spanned at `v` by `a` and `b` (oriented `sign`).
     let in_corner = |v: usize, [a, b]: [usize; 2], sign: Ordering, x: usize| {
         [o(v, a, x), o(v, x, b)]
             .iter()
@@ -258,7 +250,7 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
             sa != Equal && sw != Equal && sa != sw
         }
         [v] => {
-            let (ct, cs) = (corner(t, v), corner(s, v));
+            let (ct, cs) = (corners_after(t, v), corners_after(s, v));
             !cs.iter().any(|&x| in_corner(v, ct, st, x))
                 && !ct.iter().any(|&x| in_corner(v, cs, ss, x))
         }
