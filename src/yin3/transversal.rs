@@ -10,6 +10,9 @@
 //!   crossing segments) and flips across every crossing segment, so one ray per connected
 //!   surface decides every patch.
 //!
+//! Where no pair meets at all, each glued surface lies wholly inside or outside the other
+//! operand, and one ray per glued surface decides it ([`Transversal::Apart`]).
+//!
 //! If any pair is not generic the caller falls back to the general exact meet; the result is
 //! the exact meet either way.
 
