@@ -250,8 +250,8 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
         let det = robust::orient3d(q(0), q(3), q(6), q(9));
         0.0f64.partial_cmp(&det).unwrap_or(Ordering::Equal)
     };
-    let all = [0, 1, 2, 3].map(|i| [a, b, c, d][i]);
-    let all: [f64; 12] = std::array::from_fn(|k| all[k / 3][k % 3]);
+    let points = [a, b, c, d];
+    let all: [f64; 12] = std::array::from_fn(|k| points[k / 3][k % 3]);
     exact_sign_f64(all, (-300, 300), robust_sign, |r| {
         let p = |i: usize| [&r[i], &r[i + 1], &r[i + 2]];
         super::exact_orient3d(p(0), p(3), p(6), p(9))
