@@ -82,7 +82,7 @@ pub(crate) fn exact_brep<N: Num>(b: &Brep<N>) -> Brep<Rational> {
 }
 
 /// The exact set of a float set's values ([`exact_brep`]).
-fn exact_set<N: Num>(y: &YinSet3<N>) -> YinSet3<Rational> {
+pub(crate) fn exact_set<N: Num>(y: &YinSet3<N>) -> YinSet3<Rational> {
     match y.brep() {
         None if y.is_empty() => YinSet3::empty(),
         None => YinSet3::full(),

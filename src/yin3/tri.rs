@@ -241,12 +241,12 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
     };
     match shared[..] {
         [x, y] => {
-            let third = |tri: [usize; 3]| tri.into_iter().find(|v| !shared.contains(v));
+            // The side of the shared edge on which a triangle's third corner lies.
+            let third = |tri: [usize; 3]| {
+                let v = tri.into_iter().find(|v| !shared.contains(v));
+                o(x, y, v.expect("three distinct corners"))
+            };
             let (sa, sw) = (third(t), third(s));
-            let (sa, sw) = (
-                o(x, y, sa.expect("three corners")),
-                o(x, y, sw.expect("three corners")),
-            );
             sa != Equal && sw != Equal && sa != sw
         }
         [v] => {
