@@ -224,6 +224,10 @@ pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orderin
 pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
     // det[b − a, c − a, d − a] = −det[a − d, b − d, c − d], Shewchuk's form.
     let [u, v, w] = [a, b, c].map(|p| [p[0] - d[0], p[1] - d[1], p[2] - d[2]]);
+    if d == a || d == b || d == c {
+        // A repeated point (the common case of triangles sharing a corner): no volume.
+        return Ordering::Equal;
+    }
     let (vw, wv) = (v[0] * w[1], w[0] * v[1]);
     let (wu, uw) = (w[0] * u[1], u[0] * w[1]);
     let (uv, vu) = (u[0] * v[1], v[0] * u[1]);
@@ -256,6 +260,53 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
         let p = |i: usize| [&r[i], &r[i + 1], &r[i + 2]];
         super::exact_orient3d(p(0), p(3), p(6), p(9))
     })
+}
+
+/// The plane through three `f64` points, prepared so that [`exact_orient3d_f64`] of many
+/// points against it costs a dot product each: det[b − a, c − a, d − a] = (d − a) · n with
+/// n = (b − a) × (c − a), the same tree of rounded operations as Shewchuk's orient3d (three
+/// rounded differences times a difference of products of rounded differences, summed), so his
+/// static bound holds with the permanent Σ |dᵢ − aᵢ| · (|product| + |product|) of n's minors.
+pub(crate) struct PlaneF64 {
+    corners: [[f64; 3]; 3],
+    normal: [f64; 3],
+    minor_permanents: [f64; 3],
+}
+
+impl PlaneF64 {
+    /// The plane through `a`, `b`, `c`.
+    pub(crate) fn new(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> PlaneF64 {
+        let (u, v) = (
+            [0, 1, 2].map(|k| b[k] - a[k]),
+            [0, 1, 2].map(|k| c[k] - a[k]),
+        );
+        let products = [0, 1, 2].map(|k| {
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            (u[i] * v[j], u[j] * v[i])
+        });
+        PlaneF64 {
+            corners: [a, b, c],
+            normal: products.map(|(p, q)| p - q),
+            minor_permanents: products.map(|(p, q)| p.abs() + q.abs()),
+        }
+    }
+
+    /// [`exact_orient3d_f64`] of the plane's corners and `d`.
+    pub(crate) fn side(&self, d: [f64; 3]) -> Ordering {
+        let [a, b, c] = self.corners;
+        if d == a || d == b || d == c {
+            return Ordering::Equal;
+        }
+        let w = [0, 1, 2].map(|k| d[k] - a[k]);
+        let det = w[0] * self.normal[0] + w[1] * self.normal[1] + w[2] * self.normal[2];
+        let permanent = w[0].abs() * self.minor_permanents[0]
+            + w[1].abs() * self.minor_permanents[1]
+            + w[2].abs() * self.minor_permanents[2];
+        let bound = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
+        // As in exact_orient3d_f64: what minors whose products underflowed can lose.
+        let slack = (w[0].abs() + w[1].abs() + w[2].abs()) * ldexp(1.0, -1070);
+        filtered(det, permanent, bound, slack).unwrap_or_else(|| exact_orient3d_f64(a, b, c, d))
+    }
 }
 
 /// True if `d` is within distance `eps` of the plane through `a`, `b`, `c` (not collinear),
@@ -531,6 +582,27 @@ mod tests {
         (-2i64..=2, prop_oneof![8 => Just(0), 1 => -2i32..=2])
     }
 
+    /// A plane whose x-y minor's products underflow, against a point far off it that nearly
+    /// cancels the other term (found by a search for where the bound without the underflow
+    /// slack accepts the wrong sign): the prepared plane still gives the exact side.
+    #[test]
+    fn plane_side_counts_what_underflowed_minors_lose() {
+        let (a, b, c) = (
+            [0.0; 3],
+            [5.4708779169162457e-163, 4.79519246273353e-163, 0.0],
+            [4.244439558430982e-163, 4.9003522730050704e-163, 4.1110291312702665e-151],
+        );
+        let d = [-2.0411489561093225e+256, 0.0, 6.603681639195816e+268];
+        let r = |p: [f64; 3]| p.map(|x| Rational::from_f64(x).expect("finite"));
+        let (ra, rb, rc, rd) = (r(a), r(b), r(c), r(d));
+        fn refs(p: &[Rational; 3]) -> [&Rational; 3] {
+            [&p[0], &p[1], &p[2]]
+        }
+        let exact = super::super::exact_orient3d(refs(&ra), refs(&rb), refs(&rc), refs(&rd));
+        assert_eq!(exact, Ordering::Greater);
+        assert_eq!(PlaneF64::new(a, b, c).side(d), exact);
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
 
@@ -555,10 +627,9 @@ mod tests {
             );
             let three = |i: usize| [v[i], v[i + 1], v[i + 2]];
             let rthree = |i: usize| [&r[i], &r[i + 1], &r[i + 2]];
-            proptest::prop_assert_eq!(
-                exact_orient3d_f64(three(0), three(3), three(6), three(9)),
-                super::super::exact_orient3d(rthree(0), rthree(3), rthree(6), rthree(9))
-            );
+            let exact = super::super::exact_orient3d(rthree(0), rthree(3), rthree(6), rthree(9));
+            proptest::prop_assert_eq!(exact_orient3d_f64(three(0), three(3), three(6), three(9)), exact);
+            proptest::prop_assert_eq!(PlaneF64::new(three(0), three(3), three(6)).side(three(9)), exact);
         }
     }
 }

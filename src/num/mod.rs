@@ -15,7 +15,7 @@ mod interval;
 mod literal;
 mod rational;
 
-pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance};
+pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance, PlaneF64};
 pub use float::{Float, Tolerance, TooFine};
 #[cfg(feature = "gmp")]
 pub use gmp::GmpRational;

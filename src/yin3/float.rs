@@ -24,19 +24,8 @@ pub(crate) fn float_meet<N: Num>(
 ) -> Result<YinSet3<N>, Yin3Error> {
     if let (Some(x), Some(y)) = (a.brep(), b.brep()) {
         if let Some(meet) = transversal_meet(x, y) {
-            if let Transversal::Apart([in_b, in_a]) = &meet {
-                // An operand whose boundary lies wholly inside the other, and not the
-                // other's in it, is the meet.
-                let (all, none) = (
-                    |v: &[bool]| !v.contains(&false),
-                    |v: &[bool]| !v.contains(&true),
-                );
-                if all(in_b) && none(in_a) {
-                    return Ok(a.clone().with_ctx(ctx));
-                }
-                if none(in_b) && all(in_a) {
-                    return Ok(b.clone().with_ctx(ctx));
-                }
+            if let Transversal::Operand(o) = meet {
+                return Ok([a, b][o].clone().with_ctx(ctx));
             }
             let (points, kept) = meet.complex(x, y);
             if kept.is_empty() {

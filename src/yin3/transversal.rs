@@ -13,6 +13,12 @@
 //! Where no pair meets at all, each glued surface lies wholly inside or outside the other
 //! operand, and one ray per glued surface decides it ([`Transversal::Apart`]).
 //!
+//! Where no pair crosses and pairs meet at most in shared corners or a shared edge, with
+//! nothing else in common (the boundaries touch, as an inner ball touching a torus along a
+//! loop of edges), the operands' triangles are the pieces: patches joined across edges that
+//! only one operand has lie off the other boundary but for their touching corners, so one ray
+//! per patch, from a corner that does not touch, decides each.
+//!
 //! If any pair is not generic the caller falls back to the general exact meet; the result is
 //! the exact meet either way.
 
@@ -21,8 +27,9 @@ use super::float::exact_points;
 use super::geom::Chart;
 use super::locate::{winding, TriBoxes};
 use super::set::Brep;
+use super::tri::{self, apart_across, corners_after, meet_only_at};
 use crate::kernel::Point3;
-use crate::num::{exact_orient3d_f64, Num, Rational};
+use crate::num::{exact_orient3d_f64, Num, PlaneF64, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use num_bigint::BigInt;
@@ -65,12 +72,18 @@ enum Contact {
     Apart,
     /// Crossing properly along the segment between two pierce points.
     Cross([Pierce; 2]),
+    /// Meeting only in a shared corner or a shared edge: the pairs of equal corners (t's, s's;
+    /// one pair twice for a corner).
+    Touch([[usize; 2]; 2]),
     /// Touching, coplanar, or crossing through an edge or a vertex: not generic.
     Degenerate,
 }
 
-/// The meet of two float boundaries that cross transversally or not at all.
+/// The meet of two float boundaries that cross transversally, touch, or do not meet.
 pub(crate) enum Transversal {
+    /// The meet is this operand (0 or 1) as it is: its boundary lies inside the other but
+    /// where the two touch, and none of the other's lies inside it.
+    Operand(usize),
     /// The boundaries do not meet: for each operand, whether each of its glued surfaces lies
     /// inside the other operand (one ray per surface).
     Apart([Vec<bool>; 2]),
@@ -87,6 +100,13 @@ impl Transversal {
         let inside = match self {
             Transversal::Crossing(complex) => return complex,
             Transversal::Apart(inside) => inside,
+            Transversal::Operand(o) => {
+                let sides = [
+                    vec![o == 0; a.surfaces.len()],
+                    vec![o == 1; b.surfaces.len()],
+                ];
+                return Transversal::Apart(sides).complex(a, b);
+            }
         };
         let mut points = exact_points(&a.points);
         points.extend(exact_points(&b.points));
@@ -107,7 +127,8 @@ impl Transversal {
 }
 
 /// The exact meet of the float boundaries `a` and `b` (bounded or not) if they cross
-/// transversally or not at all (module docs), `None` otherwise.
+/// transversally, touch in shared corners and edges only, or do not meet (module docs); `None`
+/// otherwise.
 pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Transversal> {
     let na = a.points.len();
     let f64s: Vec<[f64; 3]> = a
@@ -119,12 +140,25 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     let mut tris: Vec<[usize; 3]> = a.tris.clone();
     tris.extend(b.tris.iter().map(|t| t.map(|v| v + na)));
     let first_b = a.tris.len();
+    let corners: Vec<&Point3<N>> = a.points.iter().chain(&b.points).collect();
     let boxes: Vec<AABB<[f64; 3]>> = tris
         .iter()
         .map(|t| AABB::from_points(t.map(|v| &f64s[v])))
         .collect();
     let hull = |of: &[AABB<[f64; 3]>]| of.iter().fold(AABB::new_empty(), |h, b| h.merged(b));
     let (hull_a, hull_b) = (hull(&boxes[..first_b]), hull(&boxes[first_b..]));
+    // The planes of the triangles that may meet the other operand (the others never asked).
+    let planes: Vec<PlaneF64> = tris
+        .iter()
+        .zip(&boxes)
+        .enumerate()
+        .map(|(t, (&[u, v, w], bx))| {
+            match bx.intersects(if t < first_b { &hull_b } else { &hull_a }) {
+                true => PlaneF64::new(f64s[u], f64s[v], f64s[w]),
+                false => PlaneF64::new([0.0; 3], [0.0; 3], [0.0; 3]),
+            }
+        })
+        .collect();
     // Only triangles whose boxes meet the other operand's box can meet it.
     let tree = RTree::bulk_load(
         (first_b..tris.len())
@@ -134,35 +168,54 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     );
     // Every pair of boxes that meet; the first degenerate pair ends it.
     let search = |t: usize| {
-        let mut mine = Vec::new();
+        let (mut crossing, mut touching) = (Vec::new(), Vec::new());
         for g in tree.locate_in_envelope_intersecting(&boxes[t]) {
-            match contact(&f64s, (t, tris[t]), (g.data, tris[g.data])) {
+            match contact(
+                &f64s,
+                &planes,
+                &corners,
+                (t, tris[t]),
+                (g.data, tris[g.data]),
+            ) {
                 Contact::Apart => {}
-                Contact::Cross(ends) => mine.push((t, g.data, ends)),
+                Contact::Cross(ends) => crossing.push((t, g.data, ends)),
+                Contact::Touch(at) => touching.push(at),
                 Contact::Degenerate => return None,
             }
         }
-        Some(mine)
+        Some((crossing, touching))
     };
     let parallel = tris.len() >= PARALLEL_FROM;
     let near: Vec<usize> = (0..first_b)
         .filter(|&t| boxes[t].intersects(&hull_b))
         .collect();
-    let found: Vec<Vec<_>> = map_all(&near, parallel, |&t| search(t))
+    let found: Vec<(Vec<_>, Vec<_>)> = map_all(&near, parallel, |&t| search(t))
         .into_iter()
         .collect::<Option<_>>()?;
-    let crossings: Vec<(usize, usize, [Pierce; 2])> = found.into_iter().flatten().collect();
+    let (crossings, touching): (Vec<_>, Vec<_>) = found.into_iter().unzip();
+    let crossings: Vec<(usize, usize, [Pierce; 2])> = crossings.into_iter().flatten().collect();
+    let touching: Vec<[[usize; 2]; 2]> = touching.into_iter().flatten().collect();
     let rays = Rays::new([a, b]);
+    if !touching.is_empty() {
+        return match crossings.is_empty() {
+            true => touching_meet(&touching, &rays),
+            false => None,
+        };
+    }
     if crossings.is_empty() {
         // Each glued surface lies wholly on one side of the other boundary.
-        let inside = |o: usize| {
+        let inside = |o: usize| -> Vec<bool> {
             let op = [a, b][o];
             op.surfaces
                 .iter()
                 .map(|s| rays.inside_other(o, &op.points[op.tris[s.triangles[0]][0]]))
                 .collect()
         };
-        return Some(Transversal::Apart([inside(0), inside(1)]));
+        let inside = [inside(0), inside(1)];
+        return Some(match whole_operand([&inside[0], &inside[1]]) {
+            Some(o) => Transversal::Operand(o),
+            None => Transversal::Apart(inside),
+        });
     }
     let mut points = exact_points(&a.points);
     points.extend(exact_points(&b.points));
@@ -222,13 +275,93 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         }
     }
     let inside = inside(&pieces, &crossing_edges, &rays, parallel)?;
-    let kept: Vec<[usize; 3]> = pieces
+    Some(Transversal::Crossing((points, kept(&pieces, &inside))))
+}
+
+/// The operand whose parts (glued surfaces or patches, by operand) all lie inside the other,
+/// none of the other's inside it: the meet is that operand as it is.
+fn whole_operand(inside: [&[bool]; 2]) -> Option<usize> {
+    let (all, none) = (
+        |v: &[bool]| !v.contains(&false),
+        |v: &[bool]| !v.contains(&true),
+    );
+    (0..2).find(|&o| all(inside[o]) && none(inside[1 - o]))
+}
+
+/// The pieces that lie inside the other operand.
+fn kept(pieces: &[([usize; 3], usize)], inside: &[bool]) -> Vec<[usize; 3]> {
+    pieces
         .iter()
-        .zip(&inside)
+        .zip(inside)
         .filter(|(_, &inside)| inside)
         .map(|((piece, _), _)| *piece)
+        .collect()
+}
+
+/// The meet of boundaries that touch only in shared corners and edges (module docs), from
+/// the pairs of equal corners of the touching contacts (global indices, operand 0's first):
+/// each operand's triangles joined across its own edges that do not touch, each patch inside
+/// the other operand or not by a ray from one of its corners that does not touch. `None` if a
+/// patch has no such corner.
+fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option<Transversal> {
+    let ops = rays.ops;
+    let na = ops[0].points.len();
+    // Touching corners and edges of each operand, in its own numbering.
+    let mut corners: [HashSet<usize>; 2] = Default::default();
+    let mut edges: [HashSet<(usize, usize)>; 2] = Default::default();
+    for &[e0, e1] in touching {
+        for o in 0..2 {
+            let (x, y) = (e0[o] - o * na, e1[o] - o * na);
+            corners[o].extend([x, y]);
+            if x != y {
+                edges[o].insert(key(x, y));
+            }
+        }
+    }
+    let inside = [0, 1].map(|o| {
+        let op = ops[o];
+        let mut uf = UnionFind::new(op.tris.len());
+        for (e, fins) in op.table.edges.iter().zip(&op.table.fins) {
+            if !edges[o].contains(e) {
+                for f in &fins[1..] {
+                    uf.union(fins[0].tri, f.tri);
+                }
+            }
+        }
+        let mut side: Vec<Option<bool>> = vec![None; op.tris.len()];
+        for (t, tri) in op.tris.iter().enumerate() {
+            let root = uf.find(t);
+            if side[root].is_none() {
+                if let Some(&v) = tri.iter().find(|v| !corners[o].contains(v)) {
+                    side[root] = Some(rays.inside_other(o, &op.points[v]));
+                }
+            }
+        }
+        (0..op.tris.len())
+            .map(|t| side[uf.find(t)])
+            .collect::<Option<Vec<bool>>>()
+    });
+    let [Some(in_b), Some(in_a)] = inside else {
+        return None;
+    };
+    if let Some(o) = whole_operand([&in_b, &in_a]) {
+        return Some(Transversal::Operand(o));
+    }
+    // Operand 1's touching corners become operand 0's equal ones: no point occurs twice.
+    let same: HashMap<usize, usize> = touching.iter().flatten().map(|&[x, y]| (y, x)).collect();
+    let rename = |v: usize| *same.get(&(v + na)).unwrap_or(&(v + na));
+    let mut points = exact_points(&ops[0].points);
+    points.extend(exact_points(&ops[1].points));
+    let mut tris: Vec<[usize; 3]> = (0..ops[0].tris.len())
+        .filter(|&t| in_b[t])
+        .map(|t| ops[0].tris[t])
         .collect();
-    Some(Transversal::Crossing((points, kept)))
+    tris.extend(
+        (0..ops[1].tris.len())
+            .filter(|&t| in_a[t])
+            .map(|t| ops[1].tris[t].map(rename)),
+    );
+    Some(Transversal::Crossing((points, tris)))
 }
 
 /// The edge `uv` as a key (smaller index first).
@@ -236,21 +369,34 @@ fn key(u: usize, v: usize) -> (usize, usize) {
     (u.min(v), u.max(v))
 }
 
-/// How triangles `t` and `s` (indices into `p`) meet, from orientations of their vertices.
-/// Each plane must separate the other's vertices strictly; the line of the planes then meets
+/// How triangles `t` and `s` (indices into `p`, the `f64` values of `corners`; their planes
+/// in `planes`) meet, from orientations of their vertices. Triangles with a vertex on the
+/// other's plane are apart if they share no corner and [`tri::apart`] shows it, touch if they
+/// meet only in one shared corner ([`meet_only_at`]) or only in a shared edge (not coplanar,
+/// or coplanar on opposite sides of it: [`apart_across`]), and are degenerate otherwise. Else
+/// each plane must separate the other's vertices strictly; the line of the planes then meets
 /// each triangle in a segment from one straddling edge to the other, and the ends of the
 /// intersection are the pierce points of either triangle's straddling edges that lie strictly
 /// inside the other's segment — left of both of its straddling edges, a sign that
 /// orient3d(e₀, e₁, f₀, f₁) gives up to the side of f₁.
-fn contact(p: &[[f64; 3]], (ti, t): (usize, [usize; 3]), (si, s): (usize, [usize; 3])) -> Contact {
+fn contact<N: Num>(
+    p: &[[f64; 3]],
+    planes: &[PlaneF64],
+    corners: &[&Point3<N>],
+    (ti, t): (usize, [usize; 3]),
+    (si, s): (usize, [usize; 3]),
+) -> Contact {
     let o = |a: usize, b: usize, c: usize, d: usize| exact_orient3d_f64(p[a], p[b], p[c], p[d]);
-    let s_sides = s.map(|v| o(t[0], t[1], t[2], v));
-    let t_sides = t.map(|v| o(s[0], s[1], s[2], v));
-    if one_side(&s_sides) || one_side(&t_sides) {
+    let s_sides = s.map(|v| planes[ti].side(p[v]));
+    if one_side(&s_sides) {
+        return Contact::Apart;
+    }
+    let t_sides = t.map(|v| planes[si].side(p[v]));
+    if one_side(&t_sides) {
         return Contact::Apart;
     }
     if s_sides.contains(&Equal) || t_sides.contains(&Equal) {
-        return Contact::Degenerate;
+        return touch(p, corners, t, s, &s_sides);
     }
     let mut ends = Vec::with_capacity(2);
     for (host, hi, host_sides, guest, guest_sides) in
@@ -275,6 +421,53 @@ fn contact(p: &[[f64; 3]], (ti, t): (usize, [usize; 3]), (si, s): (usize, [usize
         [x, y] => Contact::Cross([x, y]),
         _ => Contact::Degenerate,
     }
+}
+
+/// [`contact`] of triangles `t` and `s` with a vertex on the other's plane (`s_sides`: s's
+/// vertices against t's plane): apart if [`tri::apart`] shows it where they share no corner,
+/// a touch in one shared corner or one shared edge, else degenerate.
+fn touch<N: Num>(
+    p: &[[f64; 3]],
+    corners: &[&Point3<N>],
+    t: [usize; 3],
+    s: [usize; 3],
+    s_sides: &[Ordering; 3],
+) -> Contact {
+    let ctx = N::exact_ctx();
+    let mut shared = t.iter().flat_map(|&x| {
+        s.iter()
+            .filter(move |&&y| p[x] == p[y])
+            .map(move |&y| [x, y])
+    });
+    let after = |tri: [usize; 3], v: usize| corners_after(tri, v).map(|w| corners[w]);
+    let touches = match (shared.next(), shared.next(), shared.next()) {
+        (None, _, _) => {
+            let apart = tri::apart(t.map(|v| corners[v]), s.map(|v| corners[v]), &ctx);
+            return if apart {
+                Contact::Apart
+            } else {
+                Contact::Degenerate
+            };
+        }
+        (Some([x, y]), None, _) => {
+            meet_only_at(corners[x], after(t, x), after(s, y), &ctx).then_some([[x, y]; 2])
+        }
+        (Some(e0), Some(e1), None) => {
+            // s's third corner off t's plane, or on it across the shared edge.
+            let third = |tri: [usize; 3], k: usize| {
+                (0..3)
+                    .find(|&i| tri[i] != e0[k] && tri[i] != e1[k])
+                    .expect("a triangle has three distinct corners")
+            };
+            let (a, w) = (t[third(t, 0)], third(s, 1));
+            let edge = [corners[e0[0]], corners[e1[0]]];
+            let meets_only_in_edge =
+                s_sides[w] != Equal || apart_across(edge, corners[a], corners[s[w]], &ctx);
+            meets_only_in_edge.then_some([e0, e1])
+        }
+        _ => None,
+    };
+    touches.map_or(Contact::Degenerate, Contact::Touch)
 }
 
 /// True if no vertex lies on the plane and all lie on one side of it.
@@ -571,7 +764,7 @@ mod tests {
                 prop_assert!(fast.is_some(), "declined a generic pair");
                 let exact = ea.meet(&eb);
                 prop_assert_eq!(fast.unwrap(), exact.clone());
-                if let Some(Transversal::Apart(_)) = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap()) {
+                if let Some(Transversal::Apart(_) | Transversal::Operand(_)) = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap()) {
                     // Nothing is rounded where the boundaries are apart: the float meet is exact.
                     let float = fa.try_meet(&fb).expect("a float meet");
                     prop_assert_eq!(exact_set(&float), exact);
@@ -603,14 +796,18 @@ mod tests {
                 ),
             ] {
                 let meet = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap());
-                assert!(matches!(meet, Some(Transversal::Apart(_))));
+                assert!(matches!(
+                    meet,
+                    Some(Transversal::Apart(_) | Transversal::Operand(_))
+                ));
                 let float = fa.try_meet(&fb).expect("a float meet");
                 assert_eq!(exact_set(&float), ea.meet(&eb));
             }
         }
     }
 
-    /// Overlapping coplanar faces, a shared vertex and a vertex on a face are declined.
+    /// Overlapping coplanar faces, a shared face, a vertex on a face and a face through a
+    /// shared corner into the other are declined.
     #[test]
     fn declines_degenerate_pairs() {
         let still = [[0.0; 3]; 8];
@@ -619,11 +816,172 @@ mod tests {
         down[0] = [0.0, 0.0, -0.2];
         for (o, jitter) in [
             ([0.5, 0.5, 0.0], still),
-            ([1.0; 3], still),
+            ([1.0, 0.0, 0.0], still),
             ([0.3, 0.3, 1.2], down),
         ] {
             let b = solid::<Float>(&jittered_cube(o, 1.0, &jitter));
             assert!(transversal(&a, &b).is_none(), "offset {o:?}");
         }
+        // A tetrahedron at the cube's corner (1, 1, 1) with a face that enters the cube there.
+        let (v, f) = (
+            vec![[1.0; 3], [0.5, 1.2, 1.2], [2.0, 0.5, 0.5], [1.5, 1.5, 2.0]],
+            vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
+        );
+        assert!(transversal(&a, &solid::<Float>(&(v, f))).is_none());
+    }
+
+    /// The contact of two triangles given by their corners.
+    fn contact_of(t: [[f64; 3]; 3], s: [[f64; 3]; 3]) -> Contact {
+        let p = [t, s].concat();
+        let points: Vec<Point3<Float>> = p
+            .iter()
+            .map(|c| c.map(|x| Float::from_f64(x).expect("finite")))
+            .map(|[x, y, z]| Point3::new(x, y, z))
+            .collect();
+        let corners: Vec<&Point3<Float>> = points.iter().collect();
+        let planes = [
+            PlaneF64::new(t[0], t[1], t[2]),
+            PlaneF64::new(s[0], s[1], s[2]),
+        ];
+        contact(&p, &planes, &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
+    }
+
+    /// Triangles sharing a corner or an edge touch only where they meet in nothing else:
+    /// leaving the corner away from the other, across the edge in one plane or off it. Through
+    /// the corner into the other, or on the same side of the edge in one plane, they are
+    /// degenerate; with a vertex on the other's plane and nothing shared, apart where they
+    /// miss.
+    #[test]
+    fn shared_corners_and_edges_touch_only_where_nothing_else_meets() {
+        let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        let touch = |s| matches!(contact_of(t, s), Contact::Touch(_));
+        let degenerate = |s| matches!(contact_of(t, s), Contact::Degenerate);
+        assert!(touch([[0.0; 3], [-1.0, -1.0, 1.0], [-1.0, -1.0, -1.0]]));
+        assert!(degenerate([[0.0; 3], [1.0, 1.0, 1.0], [1.0, 1.0, -1.0]]));
+        assert!(touch([[1.0, 0.0, 0.0], [0.0; 3], [0.2, -0.3, 0.0]]));
+        assert!(touch([[1.0, 0.0, 0.0], [0.0; 3], [0.2, 0.3, 1.0]]));
+        assert!(degenerate([[1.0, 0.0, 0.0], [0.0; 3], [0.2, 0.2, 0.0]]));
+        assert!(matches!(
+            contact_of(t, [[2.0, 0.0, 0.0], [2.0, 1.0, 1.0], [3.0, 0.0, -1.0]]),
+            Contact::Apart
+        ));
+        assert!(degenerate([
+            [0.5, 0.2, 0.0],
+            [2.0, 1.0, 1.0],
+            [3.0, 0.0, -1.0]
+        ]));
+    }
+
+    /// A jitter that moves corners only into corner 0's octant (each coordinate by 1/32 or a
+    /// value in (0, 1/10), and by 0 too where `zero`), and corners `fixed` not at all.
+    fn outward(fixed: &'static [usize], zero: bool) -> impl Strategy<Value = Vec<[f64; 3]>> {
+        let off = prop_oneof![Just(1.0 / 32.0), 0.001..0.1];
+        let step = match zero {
+            true => prop_oneof![Just(0.0), off].boxed(),
+            false => off.boxed(),
+        };
+        prop::collection::vec([step.clone(), step.clone(), step], 8).prop_map(move |mut j| {
+            for &k in fixed {
+                j[k] = [0.0; 3];
+            }
+            j
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Cubes that touch the unit cube in a shared corner from outside or from inside, or
+        /// in a shared edge from outside (outside, where a jitter is 0: faces coplanar at the
+        /// touching corner or edge, and vertices on the unit cube's planes off its faces), each
+        /// operand also as its complement: the touching meet is taken and equals the general
+        /// exact meet; where it returns an operand, the float meet is that operand, exactly.
+        #[test]
+        fn touching_boundaries_meet_as_the_general_meet(
+            corner in outward(&[0], true), inner in outward(&[0], false),
+            edge in outward(&[0, 4], true),
+            size in 0.25..0.75f64,
+        ) {
+            let unit = jittered_cube([0.0; 3], 1.0, &[[0.0; 3]; 8]);
+            // Corner 0 of the second cube at the unit cube's corner (1, 1, 1), at its corner
+            // (0, 0, 0) from inside, and its edge from corner 0 to corner 4 (along z) on the
+            // unit cube's edge from (1, 1, 0) to (1, 1, 1), its bottom and top in the unit
+            // cube's (a side straddling the top's plane with a corner on it, apart from the
+            // top, is beyond the contact test: the general meet's case).
+            let flat: Vec<[f64; 3]> = edge.iter().map(|j| [j[0], j[1], 0.0]).collect();
+            let others = [
+                jittered_cube([1.0; 3], size, &corner),
+                jittered_cube([0.0; 3], size, &inner),
+                jittered_cube([1.0, 1.0, 0.0], 1.0, &flat),
+            ];
+            for other in &others {
+                let (fa, fb) = (solid::<Float>(&unit), solid::<Float>(other));
+                let (ea, eb) = (solid::<Rational>(&unit), solid::<Rational>(other));
+                for (fa, fb, ea, eb) in [
+                    (fa.clone(), fb.clone(), ea.clone(), eb.clone()),
+                    (fa.clone(), fb.complement(), ea.clone(), eb.complement()),
+                    (fa.complement(), fb.clone(), ea.complement(), eb.clone()),
+                ] {
+                    let fast = transversal(&fa, &fb);
+                    prop_assert!(fast.is_some(), "declined a touching pair");
+                    let exact = ea.meet(&eb);
+                    prop_assert_eq!(fast.unwrap(), exact.clone());
+                    if let Some(Transversal::Operand(_)) = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap()) {
+                        prop_assert_eq!(exact_set(&fa.try_meet(&fb).expect("a float meet")), exact);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Axis-aligned cubes sharing a corner (their faces at it coplanar) take the touching meet
+    /// and meet in nothing; one of them also as its complement, and the meet is the other.
+    #[test]
+    fn cubes_sharing_a_corner_touch() {
+        let still = [[0.0; 3]; 8];
+        let (a, b) = (
+            solid::<Float>(&jittered_cube([0.0; 3], 1.0, &still)),
+            solid::<Float>(&jittered_cube([1.0; 3], 1.0, &still)),
+        );
+        assert!(transversal(&a, &b).expect("touching").is_empty());
+        let not_b = b.complement();
+        assert!(matches!(
+            transversal_meet(a.brep().unwrap(), not_b.brep().unwrap()),
+            Some(Transversal::Operand(0))
+        ));
+    }
+
+    /// The bipyramid over the square with corners (±1, 0, 0), (0, ±1, 0), apexes at heights
+    /// `top` and −`bottom`, faces outward.
+    fn bipyramid(top: f64, bottom: f64) -> Raw {
+        let v = vec![
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [0.0, -1.0, 0.0],
+            [0.0, 0.0, top],
+            [0.0, 0.0, -bottom],
+        ];
+        let f = (0..4)
+            .flat_map(|k| [vec![k, (k + 1) % 4, 4], vec![(k + 1) % 4, k, 5]])
+            .collect();
+        (v, f)
+    }
+
+    /// Bipyramids on one square whose surfaces cross along it (apexes 1 and −1 against 2 and
+    /// −1/2): each surface is two patches on opposite sides of the other, and the touching meet
+    /// keeps one of each, as the general meet does; with equal bottoms (coplanar faces on both
+    /// sides of the square's edges, none shared) the touching meet declines.
+    #[test]
+    fn surfaces_crossing_along_shared_edges() {
+        let (a, b) = (bipyramid(1.0, 1.0), bipyramid(2.0, 0.5));
+        let (fa, fb) = (solid::<Float>(&a), solid::<Float>(&b));
+        let meet = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap());
+        assert!(matches!(meet, Some(Transversal::Crossing(_))));
+        let exact = solid::<Rational>(&a).meet(&solid::<Rational>(&b));
+        assert_eq!(transversal(&fa, &fb).unwrap(), exact);
+        assert_eq!(exact_set(&fa.try_meet(&fb).unwrap()), exact);
+        let same_bottom = solid::<Float>(&bipyramid(2.0, 1.0));
+        assert!(transversal(&fa, &same_bottom).is_none());
     }
 }
