@@ -3,8 +3,9 @@
 //! operation is computed exactly and the result's vertices are rounded to the nearest `f64`s;
 //! the rounded boundary is accepted only if it is valid exactly and has the exact result's
 //! topology ([`Topology`]), otherwise the operation fails with
-//! [`Yin3Error::Unrepresentable`]. Operands that cross transversally take the
-//! construction-light path of [`super::transversal`], others the general exact meet.
+//! [`Yin3Error::Unrepresentable`]. Operands that cross transversally, touch only in shared
+//! corners and edges, or do not meet take the construction-light path of
+//! [`super::transversal`], others the general exact meet.
 
 use super::error::Yin3Error;
 use super::kept::{provably_kept, Topology};

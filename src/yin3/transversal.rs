@@ -15,9 +15,10 @@
 //!
 //! Where no pair crosses and pairs meet at most in shared corners or a shared edge, with
 //! nothing else in common (the boundaries touch, as an inner ball touching a torus along a
-//! loop of edges), the operands' triangles are the pieces: patches joined across edges that
-//! only one operand has lie off the other boundary but for their touching corners, so one ray
-//! per patch, from a corner that does not touch, decides each.
+//! loop of edges), the operands' triangles are the pieces: a patch — triangles of one operand
+//! joined across its edges that do not touch — lies off the other boundary but for its
+//! touching corners and stays connected without them, so one ray per patch, from a corner that
+//! does not touch, decides it.
 //!
 //! If any pair is not generic the caller falls back to the general exact meet; the result is
 //! the exact meet either way.
