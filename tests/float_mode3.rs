@@ -469,8 +469,10 @@ fn data_pair(name: &str, eps: f64) -> (Y3, F3) {
     (exact_of(&f).expect("exactly valid"), f)
 }
 
-/// ballmid ∧ ballright (a ball 10⁻⁶ inside another, no contact) and torus ∧ innerball
-/// (touching along shared edges), every operation, against exact mode.
+/// ballmid ∧ ballright (a ball 10⁻⁶ inside another, no contact), torus ∧ innerball (touching
+/// along shared edges), ballahead and ballabehind (touching at one point from outside) and
+/// ballmid and ballleft (touching at one vertex from inside), every operation, against exact
+/// mode.
 #[test]
 fn shared_meshes_in_float_mode() {
     if !common::data_available() {
@@ -481,9 +483,11 @@ fn shared_meshes_in_float_mode() {
     for (a, b) in [
         ("ballmid.obj", "ballright.obj"),
         ("torus.obj", "innerball.obj"),
+        ("ballahead.obj", "ballabehind.obj"),
+        ("ballmid.obj", "ballleft.obj"),
     ] {
         compare(&mut t, &data_pair(a, eps), &data_pair(b, eps), eps);
     }
     eprintln!("3D float vs exact on shared meshes: {t:?}");
-    assert_eq!(t.comparisons, 10);
+    assert_eq!(t.comparisons, 20);
 }

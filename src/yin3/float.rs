@@ -114,7 +114,7 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 
 /// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
 /// and conforming, as the validator would rebuild it — with each point replaced by its
-/// rounding in `rounded`. If no two points round to one, only the triangles at moved points
+/// rounding in `rounded`. If none moved, it is the exact boundary. If no two points round to one, only the triangles at moved points
 /// are checked against their neighbours ([`conforming_after_moves`]), else the whole boundary
 /// is validated. Otherwise vertices that round to one point are merged, triangles that
 /// collapse to a segment or a point are dropped (each takes a pair of opposite fins off an
@@ -127,6 +127,10 @@ fn rounded_complex<N: Num>(
     tris: Vec<[usize; 3]>,
     keep: impl FnOnce() -> Result<Topology, Yin3Error>,
 ) -> Result<Brep<N>, Yin3Error> {
+    if rounded.iter().zip(exact).all(|(q, p)| exact_point(q) == *p) {
+        // Every point an `f64` already: the exact boundary itself, valid, with its topology.
+        return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
+    }
     let (brep, same_triangles) = rounded_boundary(exact, rounded, tris)?;
     if same_triangles && provably_kept(&brep) {
         return Ok(brep);
