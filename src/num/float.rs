@@ -222,12 +222,12 @@ pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orderin
 /// The sign of det[b − a, c − a, d − a] for `f64` points, exactly — a static filter on the
 /// values ([`filtered`]), else [`exact_sign_f64`] — in the convention of [`Num::orient3d`].
 pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
-    // det[b − a, c − a, d − a] = −det[a − d, b − d, c − d], Shewchuk's form.
-    let [u, v, w] = [a, b, c].map(|p| [p[0] - d[0], p[1] - d[1], p[2] - d[2]]);
     if d == a || d == b || d == c {
         // A repeated point (the common case of triangles sharing a corner): no volume.
         return Ordering::Equal;
     }
+    // det[b − a, c − a, d − a] = −det[a − d, b − d, c − d], Shewchuk's form.
+    let [u, v, w] = [a, b, c].map(|p| [p[0] - d[0], p[1] - d[1], p[2] - d[2]]);
     let (vw, wv) = (v[0] * w[1], w[0] * v[1]);
     let (wu, uw) = (w[0] * u[1], u[0] * w[1]);
     let (uv, vu) = (u[0] * v[1], v[0] * u[1]);
@@ -235,10 +235,8 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
     let permanent = (vw.abs() + wv.abs()) * u[2].abs()
         + (wu.abs() + uw.abs()) * v[2].abs()
         + (uv.abs() + vu.abs()) * w[2].abs();
-    let bound = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
-    // A 2 × 2 minor whose products underflowed is off by up to 2^-1074, times its factor.
-    let slack = (u[2].abs() + v[2].abs() + w[2].abs()) * ldexp(1.0, -1070);
-    if let Some(sign) = filtered(-det, permanent, bound, slack) {
+    let slack = underflow_slack([u[2], v[2], w[2]]);
+    if let Some(sign) = filtered(-det, permanent, ORIENT3D_BOUND, slack) {
         return sign;
     }
     // Coordinates of magnitude in [2^-300, 2^300] (or 0) are multiples of 2^-352: every
@@ -260,6 +258,15 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
         let p = |i: usize| [&r[i], &r[i + 1], &r[i + 2]];
         super::exact_orient3d(p(0), p(3), p(6), p(9))
     })
+}
+
+/// Shewchuk's `o3derrboundA`: the relative error bound of his orient3d's static filter.
+const ORIENT3D_BOUND: f64 = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
+
+/// What an orient3d sum can lose beyond [`ORIENT3D_BOUND`]: a 2 × 2 minor whose products
+/// underflowed is off by up to 2^-1074, times its factor in `factors`.
+fn underflow_slack(factors: [f64; 3]) -> f64 {
+    (factors[0].abs() + factors[1].abs() + factors[2].abs()) * ldexp(1.0, -1070)
 }
 
 /// The plane through three `f64` points, prepared so that [`exact_orient3d_f64`] of many
@@ -302,10 +309,8 @@ impl PlaneF64 {
         let permanent = w[0].abs() * self.minor_permanents[0]
             + w[1].abs() * self.minor_permanents[1]
             + w[2].abs() * self.minor_permanents[2];
-        let bound = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
-        // As in exact_orient3d_f64: what minors whose products underflowed can lose.
-        let slack = (w[0].abs() + w[1].abs() + w[2].abs()) * ldexp(1.0, -1070);
-        filtered(det, permanent, bound, slack).unwrap_or_else(|| exact_orient3d_f64(a, b, c, d))
+        filtered(det, permanent, ORIENT3D_BOUND, underflow_slack(w))
+            .unwrap_or_else(|| exact_orient3d_f64(a, b, c, d))
     }
 }
 
