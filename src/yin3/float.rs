@@ -34,9 +34,10 @@ pub(crate) fn float_meet<N: Num>(
             }
             let (points, kept) = compact(points, kept);
             let rounded = rounded_points(&points)?;
+            let moved = moved(&rounded, &points);
             let exact = || Ok(Topology::of(&Brep::assemble(points.clone(), kept.clone())?));
             return Ok(YinSet3::from_brep(
-                rounded_complex(&points, rounded, kept.clone(), exact)?,
+                rounded_complex(rounded, &moved, kept.clone(), exact)?,
                 ctx,
             ));
         }
@@ -89,18 +90,24 @@ fn unrepresentable(e: &dyn std::fmt::Display) -> Yin3Error {
 /// exact structure is kept as it is; otherwise as [`rounded_complex`].
 pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Error> {
     let rounded = rounded_points::<N>(&b.points)?;
-    if rounded
-        .iter()
-        .zip(&b.points)
-        .all(|(q, p)| exact_point(q) == *p)
-    {
+    let moved = moved(&rounded, &b.points);
+    if !moved.contains(&true) {
         // Distinct exact points, each an f64 already: the same boundary, no work to redo.
         let mut points = rounded.into_iter();
         return Ok(b
             .clone()
             .map_points(|_| points.next().expect("one rounded point per point")));
     }
-    rounded_complex(&b.points, rounded, b.tris.clone(), || Ok(Topology::of(b)))
+    rounded_complex(rounded, &moved, b.tris.clone(), || Ok(Topology::of(b)))
+}
+
+/// For each exact point, whether its rounding in `rounded` differs from it.
+fn moved<N: Num>(rounded: &[Point3<N>], exact: &[Point3<Rational>]) -> Vec<bool> {
+    rounded
+        .iter()
+        .zip(exact)
+        .map(|(q, p)| exact_point(q) != *p)
+        .collect()
 }
 
 /// The nearest `f64` points.
@@ -112,9 +119,9 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
         .collect()
 }
 
-/// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
-/// and conforming, as the validator would rebuild it — with each point replaced by its
-/// rounding in `rounded`. If none moved, it is the exact boundary. If no two points round to
+/// The boundary of a valid set — the triangles `tris` over exact points, compact and
+/// conforming, as the validator would rebuild it — with each point replaced by its rounding in
+/// `rounded` (`moved` where it differs). If none moved, it is the exact boundary. If no two points round to
 /// one, only the triangles at moved points are checked against their neighbours
 /// ([`conforming_after_moves`]), else the whole boundary is validated. Otherwise vertices that
 /// round to one point are merged, triangles that collapse to a segment or a point are dropped
@@ -123,16 +130,16 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 /// computed by `keep` unless [`provably_kept`] shows it. Any failure is
 /// [`Yin3Error::Unrepresentable`].
 fn rounded_complex<N: Num>(
-    exact: &[Point3<Rational>],
     rounded: Vec<Point3<N>>,
+    moved: &[bool],
     tris: Vec<[usize; 3]>,
     keep: impl FnOnce() -> Result<Topology, Yin3Error>,
 ) -> Result<Brep<N>, Yin3Error> {
-    if rounded.iter().zip(exact).all(|(q, p)| exact_point(q) == *p) {
+    if !moved.contains(&true) {
         // Every point an `f64` already: the exact boundary itself, valid, with its topology.
         return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
     }
-    let (brep, same_triangles) = rounded_boundary(exact, rounded, tris)?;
+    let (brep, same_triangles) = rounded_boundary(rounded, moved, tris)?;
     if same_triangles && provably_kept(&brep) {
         return Ok(brep);
     }
@@ -148,20 +155,15 @@ fn rounded_complex<N: Num>(
 /// The valid boundary of [`rounded_complex`], before its topology is compared, and whether it
 /// has the triangles `tris` (no point merged, the numbering kept).
 fn rounded_boundary<N: Num>(
-    exact: &[Point3<Rational>],
     rounded: Vec<Point3<N>>,
+    moved: &[bool],
     tris: Vec<[usize; 3]>,
 ) -> Result<(Brep<N>, bool), Yin3Error> {
     if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
-        let moved: Vec<bool> = rounded
-            .iter()
-            .zip(exact)
-            .map(|(q, p)| exact_point(q) != *p)
-            .collect();
         let brep = Brep::assemble(rounded, tris.clone()).map_err(|e| unrepresentable(&e))?;
         // Assembling a compact boundary keeps its numbering, so `moved` still applies.
         let same = brep.tris == tris;
-        if same && conforming_after_moves(&brep, &moved) {
+        if same && conforming_after_moves(&brep, moved) {
             check_windings(&exact_brep(&brep), &()).map_err(|e| unrepresentable(&e))?;
         } else {
             revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
