@@ -304,13 +304,20 @@ impl PlaneF64 {
         if d == a || d == b || d == c {
             return Ordering::Equal;
         }
+        self.certain_side(d)
+            .unwrap_or_else(|| exact_orient3d_f64(a, b, c, d))
+    }
+
+    /// [`PlaneF64::side`] where the static filter is certain of it (one dot product), `None`
+    /// where the exact sign would have to be computed — always for a point on the plane.
+    pub(crate) fn certain_side(&self, d: [f64; 3]) -> Option<Ordering> {
+        let a = self.corners[0];
         let w = [0, 1, 2].map(|k| d[k] - a[k]);
         let det = w[0] * self.normal[0] + w[1] * self.normal[1] + w[2] * self.normal[2];
         let permanent = w[0].abs() * self.minor_permanents[0]
             + w[1].abs() * self.minor_permanents[1]
             + w[2].abs() * self.minor_permanents[2];
         filtered(det, permanent, ORIENT3D_BOUND, underflow_slack(w))
-            .unwrap_or_else(|| exact_orient3d_f64(a, b, c, d))
     }
 }
 

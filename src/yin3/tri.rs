@@ -4,7 +4,7 @@
 
 use super::geom::{dominant_axis, in_triangle2, normal, Chart};
 use crate::kernel::{classify, orient, orient3d, Contact, Point, Point3};
-use crate::num::Num;
+use crate::num::{Num, PlaneF64};
 use std::cmp::Ordering;
 
 /// How two closed triangles `t` and `s` meet.
@@ -224,26 +224,34 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
     let Some(chart) = Chart::of_f64_triangle(t.map(|v| points[v].to_f64())) else {
         return false;
     };
-    let o = |a: usize, b: usize, c: usize| {
-        let [a, b, c] = [a, b, c].map(|v| chart.project(&points[v]));
-        orient(&a, &b, &c, ctx)
-    };
+    // The six corners' images, each projected once: t's are 0..3, s's 3..6, and a corner of
+    // s shared with t is named by t's.
+    let images = [t[0], t[1], t[2], s[0], s[1], s[2]].map(|v| chart.project(&points[v]));
+    let o = |a: usize, b: usize, c: usize| orient(&images[a], &images[b], &images[c], ctx);
+    let (t, s) = (
+        [0, 1, 2],
+        [0, 1, 2].map(|k| t.iter().position(|&v| v == s[k]).unwrap_or(3 + k)),
+    );
     let (st, ss) = (o(t[0], t[1], t[2]), o(s[0], s[1], s[2]));
     if st == Equal || ss == Equal {
         return false;
     }
-    let shared: Vec<usize> = t.iter().copied().filter(|v| s.contains(v)).collect();
+    let (mut shared, mut n) = ([0; 3], 0);
+    for &v in s.iter().filter(|&&v| v < 3) {
+        shared[n] = v;
+        n += 1;
+    }
     // Whether `x` lies in the closed corner spanned at `v` by `a` and `b` (oriented `sign`).
     let in_corner = |v: usize, [a, b]: [usize; 2], sign: Ordering, x: usize| {
         [o(v, a, x), o(v, x, b)]
             .iter()
             .all(|&o| o == sign || o == Equal)
     };
-    match shared[..] {
+    match shared[..n] {
         [x, y] => {
             // The side of the shared edge on which a triangle's third corner lies.
             let third = |tri: [usize; 3]| {
-                let v = tri.into_iter().find(|v| !shared.contains(v));
+                let v = tri.into_iter().find(|&v| v != x && v != y);
                 o(x, y, v.expect("three distinct corners"))
             };
             let (sa, sw) = (third(t), third(s));
@@ -262,6 +270,27 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
         }),
         _ => false,
     }
+}
+
+/// True if the triangle `s` meets the triangle `t` (corners in `points`, `f64`s exactly)
+/// only in their shared corners because its other corners lie strictly on one side of the
+/// plane of `t` (`plane`), where the static filter is certain of it
+/// ([`PlaneF64::certain_side`]): `s` then meets that plane only in the shared corners.
+/// False where it cannot tell, and for a triangle with all three corners shared.
+pub(crate) fn off_plane_but_shared(
+    plane: &PlaneF64,
+    points: &[[f64; 3]],
+    t: [usize; 3],
+    s: [usize; 3],
+) -> bool {
+    let mut side = None;
+    for v in s.into_iter().filter(|v| !t.contains(v)) {
+        match plane.certain_side(points[v]) {
+            Some(x) if side.is_none_or(|y| y == x) => side = Some(x),
+            _ => return false,
+        }
+    }
+    side.is_some()
 }
 
 /// True if no ray from `v` through a point of `rays` (points of the plane of the triangle
@@ -621,6 +650,39 @@ mod tests {
             if flat {
                 // Coplanar: both images are nondegenerate, and the test is complete.
                 proptest::prop_assert_eq!(said, only_shared);
+            }
+        }
+
+        /// The plane test says that two triangles sharing two, one or no corners (or all three: never) meet only
+        /// there exactly when the other corners of the second lie strictly on one side of the
+        /// first's plane (exact orientations of the lattice points, which the filter always
+        /// certifies), and then the constructed intersection agrees; coplanar pairs (`flat`)
+        /// and pairs straddling the plane are left to other tests.
+        #[test]
+        fn off_plane_but_shared_is_the_constructed_contact(
+            q in proptest::array::uniform6((-4i64..=4, -4i64..=4, -4i64..=4)),
+            shared in 0usize..4,
+            flat in proptest::bool::ANY,
+        ) {
+            let q = q.map(|(x, y, z)| p(x, y, if flat { 0 } else { z }));
+            let t = [0, 1, 2];
+            let s = [[0, 1, 3], [0, 3, 4], [3, 4, 5], [0, 2, 1]][shared];
+            let (tp, sp) = (t.map(|v| &q[v]), s.map(|v| &q[v]));
+            proptest::prop_assume!(!collinear(tp[0], tp[1], tp[2]) && !collinear(sp[0], sp[1], sp[2]));
+            proptest::prop_assume!((0..6).all(|i| (0..i).all(|j| q[i] != q[j])));
+            let f64s: Vec<[f64; 3]> = q.iter().map(|v| v.to_f64()).collect();
+            let plane = PlaneF64::new(f64s[0], f64s[1], f64s[2]);
+            let said = off_plane_but_shared(&plane, &f64s, t, s);
+            let sides: Vec<Ordering> = (3..6)
+                .filter(|v| s.contains(v))
+                .map(|v| orient3d(tp[0], tp[1], tp[2], &q[v], &()))
+                .collect();
+            let one_side = sides.first().is_some_and(|&x| x != Ordering::Equal && sides.iter().all(|&y| y == x));
+            proptest::prop_assert_eq!(said, one_side);
+            if said {
+                let contact = intersect(tp, sp, &());
+                let corners: Vec<&Point3<Rational>> = (0..3).filter(|v| s.contains(v)).map(|v| &q[v]).collect();
+                proptest::prop_assert!(contact.is_none_or(|c| !c.interiors_meet && c.points.iter().all(|x| corners.contains(&x))));
             }
         }
 

@@ -9,10 +9,10 @@ use super::float::{exact_points, rounded_brep};
 use super::geom::{collinear, f64_box, normal, Chart};
 use super::locate::{winding, TriBoxes};
 use super::set::{Brep, YinSet3};
-use super::tri::{apart, images_meet_only_in_shared, intersect};
+use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
 use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
-use crate::num::{Float, Num};
+use crate::num::{Float, Num, PlaneF64};
 use crate::union_find::UnionFind;
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -111,7 +111,8 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// did before the vertices `moved` moved, each to a distinct point (a rounded result): every
 /// triangle with a moved vertex meets every other triangle exactly in their shared vertices
 /// and edges (a degenerate one fails against its neighbours across its edges). Decided by
-/// exact orientations of the points' values; a pair without a shared vertex that they cannot
+/// exact orientations of the points' values — for float points first by either triangle's
+/// plane ([`off_plane_but_shared`]), then on images in a coordinate plane; a pair without a shared vertex that they cannot
 /// tell apart is intersected exactly, as the validator would; other pairs they cannot tell
 /// make it false, and then the caller validates in full. Every other pair meets as it did. On
 /// rayon's threads.
@@ -124,7 +125,24 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
             .filter(|&t| touched[t])
             .map(|t| (t, b.corners(t))),
     );
-    let meet_in_shared = |t: [usize; 3], s: [usize; 3]| {
+    // Float points are their `f64` values: the moved triangles' planes, prepared once, tell
+    // most pairs apart with a few dot products before anything is projected.
+    let f64s: Vec<[f64; 3]> = match N::EXACT {
+        true => Vec::new(),
+        false => b.points.iter().map(|p| p.to_f64()).collect(),
+    };
+    let plane = |t: [usize; 3]| PlaneF64::new(f64s[t[0]], f64s[t[1]], f64s[t[2]]);
+    let planes: Vec<Option<PlaneF64>> = (0..b.tris.len())
+        .map(|t| (!N::EXACT && touched[t]).then(|| plane(b.tris[t])))
+        .collect();
+    let meet_in_shared = |ti: usize, ui: usize| {
+        let (t, s) = (b.tris[ti], b.tris[ui]);
+        if let Some(pt) = &planes[ti] {
+            if off_plane_but_shared(pt, &f64s, t, s) || off_plane_but_shared(&plane(s), &f64s, s, t)
+            {
+                return true;
+            }
+        }
         if images_meet_only_in_shared(&b.points, t, s, exact) {
             true
         } else if t.iter().any(|v| s.contains(v)) {
@@ -138,7 +156,7 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
     (0..b.tris.len()).into_par_iter().all(|u| {
         boxes
             .meeting(&f64_box(b.corners(u)))
-            .all(|t| t == u || (touched[u] && t < u) || meet_in_shared(b.tris[t], b.tris[u]))
+            .all(|t| t == u || (touched[u] && t < u) || meet_in_shared(t, u))
     })
 }
 
@@ -331,15 +349,11 @@ mod tests {
     use crate::num::Rational;
     use crate::yin3::shapes::{concat, cuboid};
 
-    /// The cubes [0, 1]³ and [1.5, 2.5]³ (coordinates in tenths) with the corners `moves`
-    /// moved: the local check and the full validator.
-    fn after_moving(moves: &[([i64; 3], [i64; 3])]) -> (bool, bool) {
-        let ten = Rational::from_i64(10);
-        let p = |v: [i64; 3]| v.map(|x| Rational::from_i64(x) / ten.clone());
-        let p = |v: [i64; 3]| {
-            let [x, y, z] = p(v);
-            Point3::<Rational>::new(x, y, z)
-        };
+    /// The cubes [0, 10]³ and [15, 25]³ in backend `N` with the corners `moves` moved: the
+    /// local check and the full validator (on the exact values).
+    fn after_moving<N: Num>(moves: &[([i64; 3], [i64; 3])]) -> (bool, bool) {
+        let p =
+            |v: [i64; 3]| Point3::<N>::new(N::from_i64(v[0]), N::from_i64(v[1]), N::from_i64(v[2]));
         let (v, f) = concat(vec![
             cuboid(&p([0; 3]), &p([10; 3])),
             cuboid(&p([15; 3]), &p([25; 3])),
@@ -349,7 +363,7 @@ mod tests {
             .brep()
             .expect("bounded")
             .clone();
-        let to = |q: &Point3<Rational>| {
+        let to = |q: &Point3<N>| {
             moves
                 .iter()
                 .find(|(from, _)| *q == p(*from))
@@ -357,12 +371,19 @@ mod tests {
         };
         let moved: Vec<bool> = b.points.iter().map(|q| to(q).is_some()).collect();
         let after = b.map_points(|q| to(q).unwrap_or_else(|| q.clone()));
-        let full = revalidate(after.points.clone(), &after, ()).is_ok();
+        let full = revalidate(exact_points(&after.points), &after, ()).is_ok();
         (conforming_after_moves(&after, &moved), full)
     }
 
+    /// In both backends: float points take the plane test first.
     #[test]
     fn a_moved_vertex_is_checked_against_its_neighbours() {
+        moved_vertices_checked::<Rational>();
+        moved_vertices_checked::<Float>();
+    }
+
+    fn moved_vertices_checked<N: Num>() {
+        let after_moving = after_moving::<N>;
         let corner = [10; 3];
         // Pulled out a little: still valid.
         assert_eq!(after_moving(&[(corner, [11, 11, 11])]), (true, true));
