@@ -28,7 +28,7 @@ use super::float::exact_points;
 use super::geom::Chart;
 use super::locate::{winding, TriBoxes};
 use super::set::Brep;
-use super::tri::{self, apart_across, corners_after, meet_only_at};
+use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, PlaneF64, Rational};
 use crate::union_find::UnionFind;
@@ -390,7 +390,7 @@ fn contact<N: Num>(
         return Contact::Apart;
     }
     if s_sides.contains(&Equal) || t_sides.contains(&Equal) {
-        return touch(p, corners, t, s, &s_sides);
+        return touch(p, corners, t, s, [&s_sides, &t_sides]);
     }
     let mut ends = Vec::with_capacity(2);
     for (host, hi, host_sides, guest, guest_sides) in
@@ -418,14 +418,14 @@ fn contact<N: Num>(
 }
 
 /// [`contact`] of triangles `t` and `s` with a vertex on the other's plane (`s_sides`: s's
-/// vertices against t's plane): apart if [`tri::apart`] shows it where they share no corner,
+/// vertices against t's plane; `t_sides`: t's against s's): apart if [`tri::apart`] shows it where they share no corner,
 /// a touch in one shared corner or one shared edge, else degenerate.
 fn touch<N: Num>(
     p: &[[f64; 3]],
     corners: &[&Point3<N>],
     t: [usize; 3],
     s: [usize; 3],
-    s_sides: &[Ordering; 3],
+    [s_sides, t_sides]: [&[Ordering; 3]; 2],
 ) -> Contact {
     let ctx = N::exact_ctx();
     let mut shared = t.iter().flat_map(|&x| {
@@ -444,7 +444,14 @@ fn touch<N: Num>(
             };
         }
         (Some([x, y]), None, _) => {
-            meet_only_at(corners[x], after(t, x), after(s, y), &ctx).then_some([[x, y]; 2])
+            // The planes' sides of the corners after the shared one, as `contact` found them.
+            let sides_after = |tri: [usize; 3], v: usize, sides: &[Ordering; 3]| {
+                let k = tri.iter().position(|&w| w == v).expect("a shared corner");
+                [sides[(k + 1) % 3], sides[(k + 2) % 3]]
+            };
+            let sides = [sides_after(s, y, s_sides), sides_after(t, x, t_sides)];
+            meet_only_at_given(corners[x], after(t, x), after(s, y), sides, &ctx)
+                .then_some([[x, y]; 2])
         }
         (Some(e0), Some(e1), None) => {
             // s's third corner off t's plane, or on it across the shared edge.

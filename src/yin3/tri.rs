@@ -178,9 +178,23 @@ pub(crate) fn meet_only_at<N: Num>(
     [c, d]: [&Point3<N>; 2],
     ctx: &N::Ctx,
 ) -> bool {
+    let sides = [
+        [orient3d(v, a, b, c, ctx), orient3d(v, a, b, d, ctx)],
+        [orient3d(v, c, d, a, ctx), orient3d(v, c, d, b, ctx)],
+    ];
+    meet_only_at_given(v, [a, b], [c, d], sides, ctx)
+}
+
+/// [`meet_only_at`] with the sides of `c`, `d` against the plane of `vab` and of `a`, `b`
+/// against the plane of `vcd` known.
+pub(crate) fn meet_only_at_given<N: Num>(
+    v: &Point3<N>,
+    [a, b]: [&Point3<N>; 2],
+    [c, d]: [&Point3<N>; 2],
+    [[sc, sd], [sa, sb]]: [[Ordering; 2]; 2],
+    ctx: &N::Ctx,
+) -> bool {
     use Ordering::Equal;
-    let (sc, sd) = (orient3d(v, a, b, c, ctx), orient3d(v, a, b, d, ctx));
-    let (sa, sb) = (orient3d(v, c, d, a, ctx), orient3d(v, c, d, b, ctx));
     let one_side = |x: Ordering, y: Ordering| x == y && x != Equal;
     if one_side(sc, sd) || one_side(sa, sb) {
         return true;
