@@ -231,17 +231,18 @@ pub(crate) fn compact<N: Num>(
 /// ⊥-pairing restricted to its fins, GS.2), χ = V − E + F with V its corner cycles.
 fn genera(tris: &[[usize; 3]], table: &FinTable, label: &[usize], count: usize) -> Vec<usize> {
     let mut cycles = corner_cycles(table, tris, Some(label), Pairing::Outside);
-    let mut vertices = vec![std::collections::HashSet::new(); count];
+    // A cycle joins corners of one surface: counted once, at its root corner.
+    let mut vertices = vec![0i64; count];
     let mut faces = vec![0i64; count];
     for (t, &l) in label.iter().enumerate() {
         faces[l] += 1;
-        for k in 0..3 {
-            vertices[l].insert(cycles.find(3 * t + k));
+        for c in 3 * t..3 * t + 3 {
+            vertices[l] += i64::from(cycles.find(c) == c);
         }
     }
     (0..count)
         .map(|s| {
-            let chi = vertices[s].len() as i64 - faces[s] / 2;
+            let chi = vertices[s] - faces[s] / 2;
             ((2 - chi) / 2).max(0) as usize
         })
         .collect()
