@@ -45,16 +45,6 @@ impl<N: Num> YinSet3<N> {
     /// in 3D ([`super::float`]).
     pub fn try_meet(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
         let ctx = N::combine_ctx(self.ctx, other.ctx);
-        if N::EXACT {
-            self.meet_in(other, ctx)
-        } else {
-            float_meet(self, other, ctx)
-        }
-    }
-
-    /// The meet computed with the predicates of `ctx` (MRS-a..d in 3D); an error if the
-    /// arrangement or the kept pieces are inconsistent (never in exact mode).
-    pub(crate) fn meet_in(&self, other: &YinSet3<N>, ctx: N::Ctx) -> Result<YinSet3<N>, Yin3Error> {
         let (a, b) = match (self.brep(), other.brep()) {
             _ if self.is_empty() || other.is_empty() => return Ok(YinSet3::empty().with_ctx(ctx)),
             (None, _) => return Ok(other.clone().with_ctx(ctx)),
@@ -70,41 +60,52 @@ impl<N: Num> YinSet3<N> {
         {
             return Ok(YinSet3::empty().with_ctx(ctx));
         }
-        let mut soup = Soup::new();
-        for (operand, brep) in [a, b].into_iter().enumerate() {
-            for t in 0..brep.tris.len() {
-                soup.push(brep.corners(t), operand as u8);
-            }
+        if N::EXACT {
+            meet_in(a, b, ctx)
+        } else {
+            float_meet(self, other, ctx)
         }
-        let arrangement = arrange(&mut soup, Pairs::Across, &ctx).map_err(|e| {
-            Yin3Error::Internal(format!(
-                "the arrangement of a meet's operands failed: {e:?}"
-            ))
-        })?;
-        let bounded = [a.bounded, b.bounded];
-        let sides = classify(&soup, &arrangement, bounded, &ctx);
-        let pieces = arrangement.pieces;
-        let kept: Vec<[usize; 3]> = pieces
-            .iter()
-            .zip(&sides)
-            .filter(|((_, parent), side)| {
-                matches!(
-                    (soup.operand[*parent], side),
-                    (0, Side::Same) | (_, Side::Inside)
-                )
-            })
-            .map(|((t, _), _)| *t)
-            .collect();
-        if kept.is_empty() {
-            return Ok(YinSet3::empty().with_ctx(ctx));
-        }
-        let brep = Brep::assemble(soup.points, kept).map_err(|e| {
-            Yin3Error::Internal(format!(
-                "the kept pieces of a meet do not bound a Yin set: {e}"
-            ))
-        })?;
-        Ok(YinSet3::from_brep(brep, ctx))
     }
+}
+
+/// The meet of two sets with the boundaries `a` and `b` whose boxes meet where both are
+/// bounded, computed with the predicates of `ctx` (MRS-a..d in 3D); an error if the
+/// arrangement or the kept pieces are inconsistent (never in exact mode).
+fn meet_in<N: Num>(a: &Brep<N>, b: &Brep<N>, ctx: N::Ctx) -> Result<YinSet3<N>, Yin3Error> {
+    let mut soup = Soup::new();
+    for (operand, brep) in [a, b].into_iter().enumerate() {
+        for t in 0..brep.tris.len() {
+            soup.push(brep.corners(t), operand as u8);
+        }
+    }
+    let arrangement = arrange(&mut soup, Pairs::Across, &ctx).map_err(|e| {
+        Yin3Error::Internal(format!(
+            "the arrangement of a meet's operands failed: {e:?}"
+        ))
+    })?;
+    let bounded = [a.bounded, b.bounded];
+    let sides = classify(&soup, &arrangement, bounded, &ctx);
+    let pieces = arrangement.pieces;
+    let kept: Vec<[usize; 3]> = pieces
+        .iter()
+        .zip(&sides)
+        .filter(|((_, parent), side)| {
+            matches!(
+                (soup.operand[*parent], side),
+                (0, Side::Same) | (_, Side::Inside)
+            )
+        })
+        .map(|((t, _), _)| *t)
+        .collect();
+    if kept.is_empty() {
+        return Ok(YinSet3::empty().with_ctx(ctx));
+    }
+    let brep = Brep::assemble(soup.points, kept).map_err(|e| {
+        Yin3Error::Internal(format!(
+            "the kept pieces of a meet do not bound a Yin set: {e}"
+        ))
+    })?;
+    Ok(YinSet3::from_brep(brep, ctx))
 }
 
 /// The side of every piece relative to the other operand. Membership is constant on patches
