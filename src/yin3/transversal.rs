@@ -418,8 +418,9 @@ fn contact<N: Num>(
 }
 
 /// [`contact`] of triangles `t` and `s` with a vertex on the other's plane (`s_sides`: s's
-/// vertices against t's plane; `t_sides`: t's against s's): apart if [`tri::apart`] shows it where they share no corner,
-/// a touch in one shared corner or one shared edge, else degenerate.
+/// vertices against t's plane; `t_sides`: t's against s's): apart if [`tri::apart`] shows it
+/// where they share no corner, a touch in one shared corner or one shared edge, else
+/// degenerate.
 fn touch<N: Num>(
     p: &[[f64; 3]],
     corners: &[&Point3<N>],

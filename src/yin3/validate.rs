@@ -112,10 +112,10 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// triangle with a moved vertex meets every other triangle exactly in their shared vertices
 /// and edges (a degenerate one fails against its neighbours across its edges). Decided by
 /// exact orientations of the points' values — for float points first by either triangle's
-/// plane ([`off_plane_but_shared`]), then on images in a coordinate plane; a pair without a shared vertex that they cannot
-/// tell apart is intersected exactly, as the validator would; other pairs they cannot tell
-/// make it false, and then the caller validates in full. Every other pair meets as it did. On
-/// rayon's threads.
+/// plane ([`off_plane_but_shared`]), then on images in a coordinate plane; a pair without a
+/// shared vertex that they cannot tell apart is intersected exactly, as the validator would;
+/// other pairs they cannot tell make it false, and then the caller validates in full. Every
+/// other pair meets as it did. On rayon's threads.
 pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
     let exact = &N::exact_ctx();
     let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
