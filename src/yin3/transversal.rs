@@ -27,7 +27,7 @@ use super::arrange::retriangulate;
 use super::float::exact_points;
 use super::geom::Chart;
 use super::locate::{winding, TriBoxes};
-use super::set::Brep;
+use super::set::{compact, Brep};
 use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, PlaneF64, Rational};
@@ -89,15 +89,15 @@ pub(crate) enum Transversal {
     /// The boundaries do not meet: for each operand, whether each of its glued surfaces lies
     /// inside the other operand (one ray per surface).
     Apart([Vec<bool>; 2]),
-    /// They cross: the meet's triangles (a conforming complex, as the validator would rebuild
-    /// it) over a table of exact points, some of which may be unused.
+    /// They cross or touch: the meet's triangles (a conforming complex, as the validator
+    /// would rebuild it) over a table of exact points, some of which may be unused.
     Crossing(Complex),
 }
 
 impl Transversal {
-    /// The meet's triangles over a table of exact points: operand `a`'s, then `b`'s, then the
-    /// pierce points; where the boundaries are apart, the triangles of the glued surfaces that
-    /// lie inside the other operand.
+    /// The meet's triangles over a table of exact points (some may be unused); where the
+    /// boundaries are apart, the triangles of the glued surfaces that lie inside the other
+    /// operand, over the points they use.
     pub(crate) fn complex<N: Num>(self, a: &Brep<N>, b: &Brep<N>) -> Complex {
         let inside = match self {
             Transversal::Crossing(complex) => return complex,
@@ -110,8 +110,6 @@ impl Transversal {
                 return Transversal::Apart(sides).complex(a, b);
             }
         };
-        let mut points = exact_points(&a.points);
-        points.extend(exact_points(&b.points));
         let mut tris = Vec::new();
         for (o, (op, inside)) in [a, b].into_iter().zip(inside).enumerate() {
             let shift = o * a.points.len();
@@ -124,7 +122,7 @@ impl Transversal {
                 );
             }
         }
-        (points, tris)
+        exact_complex([a, b], tris)
     }
 }
 
@@ -153,26 +151,34 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         .iter()
         .map(|&[u, v, w]| PlaneF64::new(f64s[u], f64s[v], f64s[w]))
         .collect();
-    // Only triangles whose boxes meet the other operand's box can meet it.
+    // Only triangles whose boxes meet the other operand's box can meet it; the R-tree holds
+    // the operand with fewer such triangles, the other's query it.
+    let near_a: Vec<usize> = (0..first_b)
+        .filter(|&t| boxes[t].intersects(&hull_b))
+        .collect();
+    let near_b: Vec<usize> = (first_b..tris.len())
+        .filter(|&s| boxes[s].intersects(&hull_a))
+        .collect();
+    let flip = near_b.len() > near_a.len();
+    let (near, indexed) = match flip {
+        false => (near_a, near_b),
+        true => (near_b, near_a),
+    };
     let tree = RTree::bulk_load(
-        (first_b..tris.len())
-            .filter(|&s| boxes[s].intersects(&hull_a))
+        indexed
+            .into_iter()
             .map(|s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s))
             .collect(),
     );
-    // Every pair of boxes that meet; the first degenerate pair ends it.
-    let search = |t: usize| {
+    // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
+    // ends it.
+    let search = |q: usize| {
         let (mut crossing, mut touching) = (Vec::new(), Vec::new());
-        for g in tree.locate_in_envelope_intersecting(&boxes[t]) {
-            match contact(
-                &f64s,
-                &planes,
-                &corners,
-                (t, tris[t]),
-                (g.data, tris[g.data]),
-            ) {
+        for g in tree.locate_in_envelope_intersecting(&boxes[q]) {
+            let (t, s) = if flip { (g.data, q) } else { (q, g.data) };
+            match contact(&f64s, &planes, &corners, (t, tris[t]), (s, tris[s])) {
                 Contact::Apart => {}
-                Contact::Cross(ends) => crossing.push((t, g.data, ends)),
+                Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
                 Contact::Degenerate => return None,
             }
@@ -180,9 +186,6 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         Some((crossing, touching))
     };
     let parallel = tris.len() >= PARALLEL_FROM;
-    let near: Vec<usize> = (0..first_b)
-        .filter(|&t| boxes[t].intersects(&hull_b))
-        .collect();
     let found: Vec<(Vec<_>, Vec<_>)> = map_all(&near, parallel, |&t| search(t))
         .into_iter()
         .collect::<Option<_>>()?;
@@ -344,8 +347,6 @@ fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option
     // Operand 1's touching corners become operand 0's equal ones: no point occurs twice.
     let same: HashMap<usize, usize> = touching.iter().flatten().map(|&[x, y]| (y, x)).collect();
     let rename = |v: usize| *same.get(&(v + na)).unwrap_or(&(v + na));
-    let mut points = exact_points(&ops[0].points);
-    points.extend(exact_points(&ops[1].points));
     let mut tris: Vec<[usize; 3]> = (0..ops[0].tris.len())
         .filter(|&t| in_b[t])
         .map(|t| ops[0].tris[t])
@@ -355,7 +356,20 @@ fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option
             .filter(|&t| in_a[t])
             .map(|t| ops[1].tris[t].map(rename)),
     );
-    Some(Transversal::Crossing((points, tris)))
+    Some(Transversal::Crossing(exact_complex(ops, tris)))
+}
+
+/// The triangles `tris` over operand 0's points then operand 1's, on the points they use,
+/// made exact.
+fn exact_complex<N: Num>(ops: [&Brep<N>; 2], tris: Vec<[usize; 3]>) -> Complex {
+    let all: Vec<Point3<N>> = ops[0]
+        .points
+        .iter()
+        .chain(&ops[1].points)
+        .cloned()
+        .collect();
+    let (points, tris) = compact(all, tris);
+    (exact_points(&points), tris)
 }
 
 /// The edge `uv` as a key (smaller index first).
