@@ -700,8 +700,9 @@ mod tests {
                 let contact = intersect(tp, sp, &());
                 let shared: Vec<&Point3<Rational>> =
                     (0..3).filter(|v| s.contains(v)).map(|v| &q[v]).collect();
-                let only_shared = contact
-                    .is_none_or(|c| !c.interiors_meet && c.points.iter().all(|x| shared.contains(&x)));
+                let only_shared = contact.is_none_or(|c| {
+                    !c.interiors_meet && c.points.iter().all(|x| shared.contains(&x))
+                });
                 proptest::prop_assert!(only_shared);
             }
         }
