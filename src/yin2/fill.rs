@@ -21,12 +21,14 @@
 //! Cost: O((n + I) log n) for n ring edges with I contacts (one sweep: the arrangement with the
 //! winding numbers of its faces).
 
+use super::arrangement::Arrangement;
 use super::error::YinError;
-use super::intersect::{arrange, Arrangement, Edge};
+use super::intersect::{arrange, Edge};
 use super::paste::Segmented;
 use super::set::YinSet2;
 use super::snap::regularize;
 use super::validate::resolve_for;
+use super::vertex::Vertex;
 use crate::kernel::Point;
 use crate::num::Num;
 use std::ops::{Add, Sub};
@@ -127,22 +129,6 @@ where
     N: Num,
     W: Copy + Default + Add<Output = W> + Sub<Output = W>,
 {
-    fill_arranged(arrange(edges, &ctx), edges, mult, ctx, inside)
-}
-
-/// [`fill_exact`] on the arrangement `arr` of `edges`, made already (float mode's snap rounding
-/// makes it on grid fragments, with ε = 0, and checks that no two of them cross).
-pub(crate) fn fill_arranged<N, W>(
-    arr: Arrangement<'_, N>,
-    edges: &[Edge<N>],
-    mult: impl Fn(usize) -> W,
-    ctx: N::Ctx,
-    inside: impl Fn(W) -> bool,
-) -> Result<YinSet2<N>, YinError>
-where
-    N: Num,
-    W: Copy + Default + Add<Output = W> + Sub<Output = W>,
-{
     // The sweep orders each edge lo → hi; an edge given hi → lo counts negatively upwards.
     let upward = |e: usize| {
         let (a, b) = &edges[e];
@@ -152,6 +138,30 @@ where
             W::default() - mult(e)
         }
     };
+    fill_arranged(
+        arrange(edges, &ctx),
+        Vertex::into_point,
+        upward,
+        ctx,
+        inside,
+    )
+}
+
+/// [`fill_exact`] on an arrangement made already, whose edge `e` adds `upward(e)` to the
+/// winding number from below to above (its multiplicity, negated if it is given from its upper
+/// end to its lower), its points made exact by `point` (float mode's snap rounding makes the
+/// arrangement of its grid fragments and checks that no two of them cross).
+pub(crate) fn fill_arranged<P, N, W>(
+    arr: Arrangement<P>,
+    point: impl FnMut(P) -> Point<N>,
+    upward: impl Fn(usize) -> W,
+    ctx: N::Ctx,
+    inside: impl Fn(W) -> bool,
+) -> Result<YinSet2<N>, YinError>
+where
+    N: Num,
+    W: Copy + Default + Add<Output = W>,
+{
     let windings = arr.windings(upward);
     let mut pieces = Vec::new();
     for (g, (below, above)) in arr.groups.iter().zip(windings) {
@@ -164,7 +174,7 @@ where
     if pieces.is_empty() && inside(W::default()) {
         return Ok(YinSet2::full().with_ctx(ctx));
     }
-    let points = arr.into_points(&mut pieces);
+    let points = arr.into_points(&mut pieces, point);
     Segmented::numbered(points, pieces).paste_exact(ctx)
 }
 

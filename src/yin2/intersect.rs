@@ -8,9 +8,11 @@
 // of their directions after `p`; only the two new neighbour pairs are tested for a crossing
 // ahead. Every decision is `orient`, `classify` or the order of points.
 
+use super::arrangement::{Arrangement, Recorder};
+use super::status::{Status, NIL};
 use super::vertex::{Crossing, Vertex};
 use crate::kernel::{classify, crosses, Contact, Point};
-use crate::num::{Float, Num, Rational, Tolerance};
+use crate::num::{Num, Rational};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 
@@ -47,19 +49,6 @@ pub fn intersections<N: Num>(
             (c != Contact::Disjoint).then_some((i, j, c))
         })
         .collect()
-}
-
-/// The pairs `i < j` of `edges` whose interiors cross (the `Crossing` contacts of
-/// [`intersections`]), without constructing the crossing points, for edges whose `f64`
-/// coordinates are read as the exact values they are (float mode's grid fragments): the
-/// candidates of [`float_candidates`], each decided by exact `f64` orientations.
-pub(crate) fn crossing_pairs(edges: &[Edge<Float>]) -> Vec<(usize, usize)> {
-    let exact = Tolerance::default();
-    let mut pairs = float_candidates(edges);
-    pairs.sort_unstable();
-    pairs.dedup();
-    pairs.retain(|&(i, j)| crosses(&edges[i].0, &edges[i].1, &edges[j].0, &edges[j].1, &exact));
-    pairs
 }
 
 /// Float mode's candidate pairs of edges: the pairs whose boxes meet ([`by_extents`]), or,
@@ -113,7 +102,7 @@ fn by_extents<N: Num>(edges: &[Edge<N>], budget: usize) -> Option<Vec<(usize, us
 
 /// The meeting pairs of the edges' exact images (their `f64` coordinates read as the rationals
 /// they are), by Bentley–Ottmann in O((n + I) log n).
-fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
+pub(crate) fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
     let q = |v: &N| Rational::from_f64(v.to_f64()).unwrap_or_else(|_| Rational::zero());
     let image: Vec<Edge<Rational>> = edges
         .iter()
@@ -132,313 +121,14 @@ fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)> {
 /// cross (snapped fragments on grid integers, where no point is constructed); float mode's
 /// crossings are reported instead ([`Arrangement::crossed`]). The sweep finds a crossing if
 /// there is one: up to the first, its status is exact.
-pub(crate) fn arrange<'a, N: Num>(edges: &'a [Edge<N>], ctx: &'a N::Ctx) -> Arrangement<'a, N> {
+pub(crate) fn arrange<'a, N: Num>(
+    edges: &'a [Edge<N>],
+    ctx: &'a N::Ctx,
+) -> Arrangement<Vertex<'a, N>> {
     let mut sweep = Sweep::new(edges, ctx);
     sweep.record = Some(Recorder::new(edges.len()));
     sweep.drive();
-    let r = sweep.record.expect("set above");
-    Arrangement {
-        points: r.points,
-        groups: r.groups,
-        members: r.members,
-        crossed: r.crossed,
-    }
-}
-
-/// The pieces of an arrangement of closed edges: each group is one piece of the plane's
-/// subdivision, carried by one or more collinear edges (a shared stretch), from event `from`
-/// to event `to` (`from < to` in sweep order), with the group directly below it in the sweep.
-pub(crate) struct Arrangement<'a, N: Num> {
-    /// The events in sweep order: every vertex of the subdivision, once (crossings implicit).
-    pub points: Vec<Vertex<'a, N>>,
-    /// The pieces, in the order the sweep opened them.
-    pub groups: Vec<Group>,
-    /// The edges of every group, `Group::members` indexes into it.
-    pub members: Vec<usize>,
-    /// Float mode: pairs of edges found crossing (no crossing point is constructed from rounded
-    /// coordinates); if there is any, the rest of the arrangement is not valid.
-    pub crossed: Vec<(usize, usize)>,
-}
-
-/// One piece of an [`Arrangement`].
-pub(crate) struct Group {
-    /// Its lower end (an index of [`Arrangement::points`]).
-    pub from: usize,
-    /// Its upper end.
-    pub to: usize,
-    /// The group directly below it in the sweep (opened earlier), `None` for the far face.
-    pub below: Option<usize>,
-    /// The range of [`Arrangement::members`] holding its edges.
-    pub members: std::ops::Range<usize>,
-}
-
-impl<'a, N: Num> Arrangement<'a, N> {
-    /// The exact points that the `pieces` (pairs of indices of [`Arrangement::points`]) end at,
-    /// in sweep order, with the pieces renumbered into them: the crossings among them are made
-    /// exact here, the others never.
-    pub fn into_points(self, pieces: &mut [(usize, usize)]) -> Vec<Point<N>> {
-        let mut index = vec![NIL; self.points.len()];
-        for &(a, b) in pieces.iter() {
-            index[a] = 0;
-            index[b] = 0;
-        }
-        let mut out = Vec::new();
-        for (k, v) in self.points.into_iter().enumerate() {
-            if index[k] != NIL {
-                index[k] = out.len();
-                out.push(v.into_point());
-            }
-        }
-        for p in pieces.iter_mut() {
-            *p = (index[p.0], index[p.1]);
-        }
-        out
-    }
-
-    /// The winding numbers `(below, above)` of the faces beside each group, edge `e` adding
-    /// `mult(e)` from below to above (a directed edge adds its multiplicity from its right to
-    /// its left, and `lo → hi` has its left above); the far face below all has `W::default()`.
-    /// Along a piece they are constant when the edges are closed (as many enter as leave every
-    /// vertex), as in every fill and Boolean operation.
-    pub fn windings<W>(&self, mult: impl Fn(usize) -> W) -> Vec<(W, W)>
-    where
-        W: Copy + Default + std::ops::Add<Output = W>,
-    {
-        let mut out: Vec<(W, W)> = Vec::with_capacity(self.groups.len());
-        for g in &self.groups {
-            let below = g.below.map_or_else(W::default, |b| out[b].1);
-            let above = self.members[g.members.clone()]
-                .iter()
-                .fold(below, |w, &e| w + mult(e));
-            out.push((below, above));
-        }
-        out
-    }
-}
-
-/// What [`arrange`]'s sweep records at each event.
-struct Recorder<'a, N: Num> {
-    points: Vec<Vertex<'a, N>>,
-    groups: Vec<Group>,
-    members: Vec<usize>,
-    /// The open group of each edge in the status.
-    open: Vec<usize>,
-    /// See [`Arrangement::crossed`].
-    crossed: Vec<(usize, usize)>,
-}
-
-impl<'a, N: Num> Recorder<'a, N> {
-    fn new(n: usize) -> Self {
-        Recorder {
-            points: Vec::new(),
-            groups: Vec::new(),
-            members: Vec::new(),
-            open: vec![NIL; n],
-            crossed: Vec::new(),
-        }
-    }
-
-    /// The edges `old` leave the status at the event numbered `stamp`: their pieces end there.
-    fn close(&mut self, old: &[usize], stamp: usize) {
-        for &e in old {
-            let g = std::mem::replace(&mut self.open[e], NIL);
-            if g != NIL {
-                self.groups[g].to = stamp;
-            }
-        }
-    }
-
-    /// Event `p`: the edges `next` (bottom to top) enter the status above `lower`; runs of
-    /// edges leaving `p` in the same direction (`same[k − 1]` for `next[k]` after `next[k − 1]`)
-    /// form one group.
-    fn open(&mut self, p: Vertex<'a, N>, next: &[usize], lower: usize, same: &[bool]) {
-        let stamp = self.points.len();
-        self.points.push(p);
-        let mut below = (lower != NIL).then(|| self.open[lower]);
-        for (k, &e) in next.iter().enumerate() {
-            if k == 0 || !same[k - 1] {
-                let start = self.members.len();
-                self.groups.push(Group {
-                    from: stamp,
-                    to: NIL,
-                    below,
-                    members: start..start,
-                });
-                below = Some(self.groups.len() - 1);
-            }
-            let g = self.groups.len() - 1;
-            self.members.push(e);
-            self.groups[g].members.end = self.members.len();
-            self.open[e] = g;
-        }
-    }
-}
-
-/// No node (the empty treap).
-const NIL: usize = usize::MAX;
-
-/// The sweep status of seed 002 §1.3: a treap over the edges cut by the sweep line, bottom to top.
-// The order is implicit (held by the tree's shape): it is searched with monotone predicates at
-// the current event, and an edge is removed through its node (parent links), so two stored edges
-// are never compared.
-struct Status {
-    left: Vec<usize>,
-    right: Vec<usize>,
-    up: Vec<usize>,
-    prio: Vec<u64>,
-    live: Vec<bool>,
-    root: usize,
-}
-
-impl Status {
-    /// An empty status for the edges `0..n` (priorities from a fixed hash: deterministic output).
-    fn new(n: usize) -> Status {
-        let prio = (0..n as u64)
-            .map(|i| {
-                let mut z = i.wrapping_add(0x9e37_79b9_7f4a_7c15);
-                z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-                z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-                z ^ (z >> 31)
-            })
-            .collect();
-        Status {
-            left: vec![NIL; n],
-            right: vec![NIL; n],
-            up: vec![NIL; n],
-            prio,
-            live: vec![false; n],
-            root: NIL,
-        }
-    }
-
-    /// Detach node `x` from every link (before it is re-inserted or dropped).
-    fn reset(&mut self, x: usize) {
-        self.left[x] = NIL;
-        self.right[x] = NIL;
-        self.up[x] = NIL;
-    }
-
-    /// Split treap `t` into the nodes where the monotone predicate `goes_right` is false, then true.
-    fn split(&mut self, mut t: usize, mut goes_right: impl FnMut(usize) -> bool) -> (usize, usize) {
-        let (mut lroot, mut rroot, mut lhook, mut rhook) = (NIL, NIL, NIL, NIL);
-        while t != NIL {
-            if goes_right(t) {
-                if rhook == NIL {
-                    rroot = t;
-                    self.up[t] = NIL;
-                } else {
-                    self.left[rhook] = t;
-                    self.up[t] = rhook;
-                }
-                rhook = t;
-                t = self.left[t];
-            } else {
-                if lhook == NIL {
-                    lroot = t;
-                    self.up[t] = NIL;
-                } else {
-                    self.right[lhook] = t;
-                    self.up[t] = lhook;
-                }
-                lhook = t;
-                t = self.right[t];
-            }
-        }
-        if lhook != NIL {
-            self.right[lhook] = NIL;
-        }
-        if rhook != NIL {
-            self.left[rhook] = NIL;
-        }
-        (lroot, rroot)
-    }
-
-    /// The treap holding all of `a` followed by all of `b`.
-    fn merge(&mut self, mut a: usize, mut b: usize) -> usize {
-        let (mut root, mut hook, mut hook_right) = (NIL, NIL, false);
-        loop {
-            let (x, done) = if a == NIL {
-                (b, true)
-            } else if b == NIL {
-                (a, true)
-            } else if self.prio[a] >= self.prio[b] {
-                (a, false)
-            } else {
-                (b, false)
-            };
-            if hook == NIL {
-                root = x;
-            } else if hook_right {
-                self.right[hook] = x;
-            } else {
-                self.left[hook] = x;
-            }
-            if x != NIL {
-                self.up[x] = hook;
-            }
-            if done {
-                return root;
-            }
-            hook = x;
-            if x == a {
-                hook_right = true;
-                a = self.right[a];
-            } else {
-                hook_right = false;
-                b = self.left[b];
-            }
-        }
-    }
-
-    /// Remove node `x` from the main tree through its parent link.
-    fn remove(&mut self, x: usize) {
-        let m = self.merge(self.left[x], self.right[x]);
-        let par = self.up[x];
-        if m != NIL {
-            self.up[m] = par;
-        }
-        if par == NIL {
-            self.root = m;
-        } else if self.left[par] == x {
-            self.left[par] = m;
-        } else {
-            self.right[par] = m;
-        }
-        self.reset(x);
-        self.live[x] = false;
-    }
-
-    /// The first node of treap `t` (`NIL` if empty).
-    fn first(&self, mut t: usize) -> usize {
-        while t != NIL && self.left[t] != NIL {
-            t = self.left[t];
-        }
-        t
-    }
-
-    /// The last node of treap `t` (`NIL` if empty).
-    fn last(&self, mut t: usize) -> usize {
-        while t != NIL && self.right[t] != NIL {
-            t = self.right[t];
-        }
-        t
-    }
-
-    /// Append the nodes of treap `t` to `out`, in order.
-    fn collect(&self, t: usize, out: &mut Vec<usize>) {
-        let mut stack = Vec::new();
-        let mut x = t;
-        while x != NIL || !stack.is_empty() {
-            while x != NIL {
-                stack.push(x);
-                x = self.left[x];
-            }
-            if let Some(y) = stack.pop() {
-                out.push(y);
-                x = self.right[y];
-            }
-        }
-    }
+    sweep.record.expect("set above").finish()
 }
 
 /// Merge sort for the orders around an event (seed 002 §1.3), safe if `cmp` is not total (ε).
@@ -521,7 +211,7 @@ struct Sweep<'a, N: Num> {
     /// Candidate pairs `(i, j)`, `i < j`.
     pairs: Vec<(usize, usize)>,
     /// The arrangement's faces and pieces, when the sweep records them ([`arrange`]).
-    record: Option<Recorder<'a, N>>,
+    record: Option<Recorder<Vertex<'a, N>>>,
 }
 
 impl<'a, N: Num> Sweep<'a, N> {
@@ -660,7 +350,7 @@ impl<'a, N: Num> Sweep<'a, N> {
             _ => self.check(lower, upper, &p),
         }
         if let Some(r) = &mut self.record {
-            r.open(p, &next, lower, &same);
+            r.open(p, &next, lower, |k| same[k - 1]);
         }
     }
 
@@ -678,7 +368,7 @@ impl<'a, N: Num> Sweep<'a, N> {
         }
         if crosses(a.0, a.1, b.0, b.1, self.ctx) {
             if let (false, Some(r)) = (N::EXACT, &mut self.record) {
-                r.crossed.push((i, j));
+                r.cross(i, j);
                 return;
             }
             let q = Crossing::new((i, j), a, b);
@@ -697,6 +387,7 @@ mod tests {
     use super::*;
     use crate::kernel::orient;
     use crate::num::{Float, Rational, Tolerance};
+    use crate::yin2::arrangement::Group;
     use proptest::prelude::*;
 
     type Seg = ((i64, i64), (i64, i64));

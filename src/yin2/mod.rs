@@ -1,10 +1,13 @@
 //! The 2D Yin space (seed 000): Jordan curves, spadjors, and the Boolean algebra on them.
 
+mod arrangement;
 mod complement;
 mod convert;
 mod curve;
 mod error;
 mod fill;
+mod grid_arrange;
+mod grid_pairs;
 mod hasse;
 mod homology;
 pub mod intersect;
@@ -15,6 +18,7 @@ mod ops;
 mod paste;
 mod set;
 mod snap;
+mod status;
 mod validate;
 mod vertex;
 mod winding;

@@ -4,20 +4,16 @@
 
 use super::error::YinError;
 use super::fill::fill_arranged;
-use super::intersect::{arrange, crossing_pairs, Edge};
+use super::grid_arrange::{arrange_grid, crossing_pixel, G};
+use super::grid_pairs::grid_crossing_pairs;
+use super::intersect::Edge;
 use super::set::YinSet2;
 use super::winding::{Pair, Winding};
 use crate::kernel::Point;
 use crate::num::{Float, Num, Tolerance};
-use num_bigint::BigInt;
-use num_integer::Integer;
-use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
 use rstar::{RTree, SelectionFunction, AABB};
 use std::cell::{Cell, OnceCell};
 use std::collections::BTreeSet;
-
-/// A grid point: integer multiples of the grid spacing, relative to the local origin.
-type G = (i64, i64);
 
 /// A grid segment with the operand (`0` or `1`) its piece came from.
 type Labelled = ((G, G), usize);
@@ -40,21 +36,28 @@ pub(crate) fn regularize<N: Num>(
         .map(|((a, b), l)| ((frame.to_grid(a), frame.to_grid(b)), *l))
         .filter(|((a, b), _)| a != b)
         .collect();
-    // Snapped fragments do not cross: their arrangement constructs no point, and the `f64`
-    // predicates on grid integers below 2⁵² (ε = 0) are exact. Where two still cross (the
-    // arrangement reports them), their crossing pixel is added and the segments rerouted.
-    let (mut snap, exact) = (Snap::new(segments), Tolerance::default());
+    // Snapped fragments do not cross: their arrangement is swept on the grid integers with
+    // exact integer orientations. Where two still cross (the arrangement reports them), their
+    // crossing pixel is added and the segments rerouted.
+    let mut snap = Snap::new(segments);
     loop {
         let (fragments, owner) = snap.fragments();
-        let edges = unit_edges(&fragments);
-        let arr = arrange(&edges, &exact);
+        let arr = arrange_grid(fragments.iter().map(|f| f.0));
         if !arr.crossed.is_empty() {
             snap.force(&fragments, &owner, &arr.crossed)?;
             continue;
         }
-        let label = |e: usize| Pair::unit(fragments[e].1);
+        let upward = |e: usize| {
+            let ((a, b), label) = fragments[e];
+            let w = Pair::unit(label);
+            if a < b {
+                w
+            } else {
+                Pair::default() - w
+            }
+        };
         let inside = |w: Pair| inside(w.0);
-        let unit_set = fill_arranged(arr, &edges, label, exact, inside)?;
+        let unit_set = fill_arranged(arr, unit, upward, Tolerance::default(), inside)?;
         return Ok(unit_set.map_points(|p| frame.to_point(p), ctx));
     }
 }
@@ -131,17 +134,9 @@ fn unit(k: G) -> Point<Float> {
     Point::new(Float::new(k.0 as f64), Float::new(k.1 as f64))
 }
 
-/// The fragments as edges in grid units.
-fn unit_edges(fragments: &[Labelled]) -> Vec<Edge<Float>> {
-    fragments
-        .iter()
-        .map(|&((a, b), _)| (unit(a), unit(b)))
-        .collect()
-}
-
 /// Snap rounding (Hobby 1999; Guibas and Marimont 1998) of grid segments: each segment is
 /// rerouted, in order along it, through the centres of the hot pixels it meets — the pixels of
-/// the segments' endpoints and of their crossings ([`crossing_pairs`]) — which leaves no
+/// the segments' endpoints and of their crossings ([`grid_crossing_pairs`]) — which leaves no
 /// two fragments crossing. Where two fragments still cross (half-open pixels, see
 /// [`meets_pixel`]), [`Snap::force`] adds the pixel of their crossing and forces it into both
 /// paths where their segments do not meet it; paths stay monotone along their segments and
@@ -157,10 +152,11 @@ impl Snap {
     /// The hot pixels of `segments`: endpoints and the pixels of crossings.
     fn new(segments: Vec<Labelled>) -> Snap {
         let mut hot: Vec<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
+        let grid: Vec<(G, G)> = segments.iter().map(|s| s.0).collect();
         hot.extend(
-            crossing_pairs(&unit_edges(&segments))
+            grid_crossing_pairs(&grid)
                 .into_iter()
-                .map(|(i, j)| crossing_pixel(segments[i].0, segments[j].0)),
+                .map(|(i, j)| crossing_pixel(grid[i], grid[j])),
         );
         hot.sort_unstable();
         hot.dedup();
@@ -365,44 +361,6 @@ fn meets_pixel(a: G, b: G, c: G) -> bool {
     !(s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0))
 }
 
-/// The pixel (nearest grid point, ties up) of the crossing of the lines `ab` and `cd`, exactly:
-/// in `i128` when it cannot overflow, else in big integers (coordinates below 2⁵² need up to
-/// 160 bits).
-fn crossing_pixel(s: (G, G), t: (G, G)) -> G {
-    pixel_in::<i128>(s, t)
-        .or_else(|| pixel_in::<BigInt>(s, t))
-        .expect("the pixel of a crossing of two grid segments is a grid point")
-}
-
-/// [`crossing_pixel`] in the integer type `T`, `None` on overflow.
-fn pixel_in<T>(s: (G, G), t: (G, G)) -> Option<G>
-where
-    T: Integer + Signed + Clone + From<i64> + CheckedMul + CheckedAdd + CheckedSub + ToPrimitive,
-{
-    let ((a, b), (c, d)) = (s, t);
-    let w = |p: G| (T::from(p.0), T::from(p.1));
-    let (a, b, c, d) = (w(a), w(b), w(c), w(d));
-    let sub = |x: &T, y: &T| x.checked_sub(y);
-    let cross = |u: (T, T), v: (T, T)| u.0.checked_mul(&v.1)?.checked_sub(&u.1.checked_mul(&v.0)?);
-    let ab = (sub(&b.0, &a.0)?, sub(&b.1, &a.1)?);
-    let cd = (sub(&d.0, &c.0)?, sub(&d.1, &c.1)?);
-    let ca = (sub(&c.0, &a.0)?, sub(&c.1, &a.1)?);
-    let mut den = cross(ab.clone(), cd.clone())?;
-    let mut num = cross(ca, cd)?;
-    if den.is_negative() {
-        den = -den;
-        num = -num;
-    }
-    // coordinate = a + num/den · ab; pixel = floor(coordinate + 1/2) = floor((2(a·den + num·ab) + den) / 2den).
-    let two = T::from(2);
-    let round = |a0: &T, ab0: &T| -> Option<i64> {
-        let top = a0.checked_mul(&den)?.checked_add(&num.checked_mul(ab0)?)?;
-        let top = top.checked_mul(&two)?.checked_add(&den)?;
-        top.div_floor(&den.checked_mul(&two)?).to_i64()
-    };
-    Some((round(&a.0, &ab.0)?, round(&a.1, &ab.1)?))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -411,7 +369,7 @@ mod tests {
     /// The fragments of `snap` and the pairs of them that its arrangement reports crossing.
     fn crossed(snap: &Snap) -> (Vec<Labelled>, Vec<usize>, Vec<(usize, usize)>) {
         let (fragments, owner) = snap.fragments();
-        let crossed = arrange(&unit_edges(&fragments), &Tolerance::default()).crossed;
+        let crossed = arrange_grid(fragments.iter().map(|f| f.0)).crossed;
         (fragments, owner, crossed)
     }
 
