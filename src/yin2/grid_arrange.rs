@@ -67,34 +67,61 @@ where
     Some((round(&a.0, &ab.0)?, round(&a.1, &ab.1)?))
 }
 
-/// The arrangement of the grid `segments` (each of positive length; seed 002 §1.3): every
-/// segment cut at every segment end inside it, collinear stretches grouped, and for each piece
-/// the piece directly below it, as [`super::intersect::arrange`] records them. Segments whose
-/// interiors cross are reported in [`Arrangement::crossed`] (the sweep finds one if there is
-/// any; past the first, the rest of the arrangement is not valid). O(n log n) for n segments.
-pub(crate) fn arrange_grid(segments: impl Iterator<Item = (G, G)>) -> Arrangement<G> {
+/// The arrangement of the grid `segments` (each of positive length, its ends among `points`,
+/// which are sorted and distinct; seed 002 §1.3): every segment cut at every segment end inside
+/// it, collinear stretches grouped, and for each piece the piece directly below it, as
+/// [`super::intersect::arrange`] records them. Segments whose interiors cross are reported in
+/// [`Arrangement::crossed`] (the sweep finds one if there is any; past the first, the rest of
+/// the arrangement is not valid). O(n log n + m) for n segments and m points.
+pub(crate) fn arrange_grid(points: &[G], segments: impl Iterator<Item = (G, G)>) -> Arrangement<G> {
+    let index = |g: G| {
+        points
+            .binary_search(&g)
+            .expect("the ends of grid segments are among the given points")
+    };
     // Each segment lo → hi in the sweep order (lexicographic: the sweep line is tilted
-    // infinitesimally, and a vertical segment runs from its lower end to its upper one).
-    let seg: Vec<(G, G)> = segments
-        .map(|(a, b)| if a <= b { (a, b) } else { (b, a) })
+    // infinitesimally, and a vertical segment runs from its lower end to its upper one), as
+    // indices of `points`, whose order is the sweep's.
+    let span: Vec<(usize, usize)> = segments
+        .map(|(a, b)| {
+            let (i, j) = (index(a), index(b));
+            (i.min(j), i.max(j))
+        })
         .collect();
-    // Segment ends in sweep order: (point, 2·segment + 1 if it is the upper end).
-    let mut ends: Vec<(G, usize)> = Vec::with_capacity(2 * seg.len());
-    for (i, &(lo, hi)) in seg.iter().enumerate() {
-        ends.extend([(lo, 2 * i), (hi, 2 * i + 1)]);
+    // The segment ends at each point, by counting: 2·segment + 1 for an upper end.
+    let mut start = vec![0; points.len() + 1];
+    for &(i, j) in &span {
+        start[i + 1] += 1;
+        start[j + 1] += 1;
     }
-    ends.sort_unstable();
+    for k in 1..start.len() {
+        start[k] += start[k - 1];
+    }
+    let mut at = vec![0; 2 * span.len()];
+    let mut next_slot = start.clone();
+    for (e, &(i, j)) in span.iter().enumerate() {
+        for (k, code) in [(i, 2 * e), (j, 2 * e + 1)] {
+            at[next_slot[k]] = code;
+            next_slot[k] += 1;
+        }
+    }
+    let seg: Vec<(G, G)> = span.iter().map(|&(i, j)| (points[i], points[j])).collect();
     let mut sweep = GridSweep {
         seg: &seg,
-        ends: &ends,
+        points,
+        start: &start,
         status: Status::new(seg.len()),
         record: Recorder::new(seg.len()),
     };
-    let (mut old, mut next) = (Vec::new(), Vec::new());
-    for (stamp, at_p) in ends.chunk_by(|x, y| x.0 == y.0).enumerate() {
+    let (mut old, mut next, mut stamp) = (Vec::new(), Vec::new(), 0);
+    for (k, &p) in points.iter().enumerate() {
+        let codes = &at[start[k]..start[k + 1]];
+        if codes.is_empty() {
+            continue;
+        }
         old.clear();
         next.clear();
-        for &(_, code) in at_p {
+        for &code in codes {
             if code % 2 == 1 {
                 sweep.status.remove(code / 2);
                 old.push(code / 2);
@@ -102,7 +129,8 @@ pub(crate) fn arrange_grid(segments: impl Iterator<Item = (G, G)>) -> Arrangemen
                 next.push(code / 2);
             }
         }
-        sweep.event(at_p[0].0, stamp, &mut old, &mut next);
+        sweep.event(p, stamp, &mut old, &mut next);
+        stamp += 1;
     }
     sweep.record.finish()
 }
@@ -110,8 +138,9 @@ pub(crate) fn arrange_grid(segments: impl Iterator<Item = (G, G)>) -> Arrangemen
 /// The state of [`arrange_grid`]'s sweep.
 struct GridSweep<'a> {
     seg: &'a [(G, G)],
-    /// The events: segment ends in sweep order.
-    ends: &'a [(G, usize)],
+    points: &'a [G],
+    /// The segment ends at `points[k]` are `start[k]..start[k + 1]` (in a list of all ends).
+    start: &'a [usize],
     status: Status,
     record: Recorder<G>,
 }
@@ -167,8 +196,10 @@ impl GridSweep<'_> {
         // The crossing is a grid point exactly when its pixel's centre lies on both segments.
         let c = crossing_pixel(self.seg[s], self.seg[t]);
         let on = |(a, b): (G, G)| orient_g(a, b, c) == Ordering::Equal;
-        let at = self.ends.partition_point(|e| e.0 < c);
-        let event = self.ends.get(at).is_some_and(|e| e.0 == c);
+        let event = self
+            .points
+            .binary_search(&c)
+            .is_ok_and(|k| self.start[k] < self.start[k + 1]);
         if !(event && on(self.seg[s]) && on(self.seg[t])) {
             self.record.cross(s.min(t), s.max(t));
         }
@@ -221,11 +252,13 @@ mod tests {
         /// them at their crossings, all at segment ends here): the same events,
         /// pieces, pieces below and edges of every piece. Half the cases keep only segments
         /// that cross none kept before them (touching, overlapping, T-junctions and repeats
-        /// stay).
+        /// stay); the points given hold some that no segment ends at, where a crossing is
+        /// still one.
         #[test]
         fn grid_sweep_records_the_exact_sweeps_arrangement(
             drawn in proptest::collection::vec(segment(), 0..30),
             uncrossed in any::<bool>(),
+            unused in proptest::collection::vec((0..=6i64, 0..=6i64), 0..6),
         ) {
             let mut segs: Vec<(G, G)> = Vec::new();
             for s in drawn.into_iter().filter(|s| s.0 != s.1) {
@@ -236,7 +269,11 @@ mod tests {
             let ends: Vec<G> = segs.iter().flat_map(|&(a, b)| [a, b]).collect();
             let any_crossing = (0..segs.len())
                 .any(|i| (0..i).any(|j| crossing(segs[i], segs[j], &ends)));
-            let got = arrange_grid(segs.iter().copied());
+            let mut points = ends.clone();
+            points.extend(unused);
+            points.sort_unstable();
+            points.dedup();
+            let got = arrange_grid(&points, segs.iter().copied());
             prop_assert_eq!(!got.crossed.is_empty(), any_crossing);
             for &(i, j) in &got.crossed {
                 prop_assert!(i < j && crossing(segs[i], segs[j], &ends));

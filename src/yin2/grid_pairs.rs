@@ -39,7 +39,7 @@ fn box_pairs(segments: &[(G, G)], budget: usize) -> Option<Vec<(usize, usize)>> 
         .enumerate()
         .map(|(i, &(a, b))| (a.0.min(b.0), a.0.max(b.0), a.1.min(b.1), a.1.max(b.1), i))
         .collect();
-    boxes.sort_unstable();
+    boxes.sort_unstable_by_key(|b| b.0);
     let (mut open, mut out, mut work) = (Vec::<(i64, i64, i64, i64, usize)>::new(), Vec::new(), 0);
     for &b in &boxes {
         open.retain(|c| c.1 >= b.0);

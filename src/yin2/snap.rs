@@ -42,7 +42,7 @@ pub(crate) fn regularize<N: Num>(
     let mut snap = Snap::new(segments);
     loop {
         let (fragments, owner) = snap.fragments();
-        let arr = arrange_grid(fragments.iter().map(|f| f.0));
+        let arr = arrange_grid(&snap.hot, fragments.iter().map(|f| f.0));
         if !arr.crossed.is_empty() {
             snap.force(&fragments, &owner, &arr.crossed)?;
             continue;
@@ -369,7 +369,7 @@ mod tests {
     /// The fragments of `snap` and the pairs of them that its arrangement reports crossing.
     fn crossed(snap: &Snap) -> (Vec<Labelled>, Vec<usize>, Vec<(usize, usize)>) {
         let (fragments, owner) = snap.fragments();
-        let crossed = arrange_grid(fragments.iter().map(|f| f.0)).crossed;
+        let crossed = arrange_grid(&snap.hot, fragments.iter().map(|f| f.0)).crossed;
         (fragments, owner, crossed)
     }
 
