@@ -119,6 +119,13 @@ pub(crate) fn arrange_grid(points: &[G], segments: impl Iterator<Item = (G, G)>)
         if codes.is_empty() {
             continue;
         }
+        if let &[x, y] = codes {
+            let (ended, started) = if x % 2 == 1 { (x, y) } else { (y, x) };
+            if ended % 2 == 1 && started % 2 == 0 && sweep.pass(p, stamp, ended / 2, started / 2) {
+                stamp += 1;
+                continue;
+            }
+        }
         old.clear();
         next.clear();
         for &code in codes {
@@ -185,6 +192,26 @@ impl GridSweep<'_> {
         }
         let same = |k: usize| turn(next[k - 1], next[k]) == Ordering::Equal;
         self.record.open(p, next, lower, same);
+    }
+
+    /// Event `p`, numbered `stamp`, where only segment `ended` ends and only `started` starts
+    /// (a vertex of one curve, the common case): if no other segment passes through `p`,
+    /// `started` takes `ended`'s place in the status (the order of [`GridSweep::event`], without
+    /// searching it) and true; else nothing is done and false.
+    fn pass(&mut self, p: G, stamp: usize, ended: usize, started: usize) -> bool {
+        let seg = self.seg;
+        let (lower, upper) = (self.status.before(ended), self.status.after(ended));
+        // The segments through p are neighbours in the status, and `ended` is one of them.
+        let through = |t: usize| t != NIL && orient_g(seg[t].0, seg[t].1, p) == Ordering::Equal;
+        if through(lower) || through(upper) {
+            return false;
+        }
+        self.status.replace(ended, started);
+        self.record.close(&[ended], stamp);
+        self.check(lower, started);
+        self.check(started, upper);
+        self.record.open(p, &[started], lower, |_| false);
+        true
     }
 
     /// Report neighbours `s` and `t` if their interiors cross away from every event (at an

@@ -141,6 +141,52 @@ impl Status {
         self.live[x] = false;
     }
 
+    /// Put node `new` (not in the tree) in the place of node `x` of the main tree, which
+    /// leaves it: the order of the others is kept, and `new` takes `x`'s priority, so the
+    /// heap order holds.
+    pub fn replace(&mut self, x: usize, new: usize) {
+        let (l, r, par) = (self.left[x], self.right[x], self.up[x]);
+        (self.left[new], self.right[new], self.up[new]) = (l, r, par);
+        self.prio.swap(x, new);
+        for child in [l, r] {
+            if child != NIL {
+                self.up[child] = new;
+            }
+        }
+        if par == NIL {
+            self.root = new;
+        } else if self.left[par] == x {
+            self.left[par] = new;
+        } else {
+            self.right[par] = new;
+        }
+        self.reset(x);
+        self.live[x] = false;
+        self.live[new] = true;
+    }
+
+    /// The node before `x` in the main tree (`NIL` if it is the first).
+    pub fn before(&self, mut x: usize) -> usize {
+        if self.left[x] != NIL {
+            return self.last(self.left[x]);
+        }
+        while self.up[x] != NIL && self.left[self.up[x]] == x {
+            x = self.up[x];
+        }
+        self.up[x]
+    }
+
+    /// The node after `x` in the main tree (`NIL` if it is the last).
+    pub fn after(&self, mut x: usize) -> usize {
+        if self.right[x] != NIL {
+            return self.first(self.right[x]);
+        }
+        while self.up[x] != NIL && self.right[self.up[x]] == x {
+            x = self.up[x];
+        }
+        self.up[x]
+    }
+
     /// The first node of treap `t` (`NIL` if empty).
     pub fn first(&self, mut t: usize) -> usize {
         while t != NIL && self.left[t] != NIL {
