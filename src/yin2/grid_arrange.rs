@@ -175,14 +175,7 @@ impl GridSweep<'_> {
         // p in sweep order, where orientation orders them), ties by index.
         let turn = |a: usize, b: usize| orient_g(p, seg[a].1, seg[b].1);
         next.sort_unstable_by(|&a, &b| turn(a, b).reverse().then(a.cmp(&b)));
-        let (lower, upper) = (status.last(below), status.first(above));
-        let mut middle = NIL;
-        for &s in next.iter() {
-            status.live[s] = true;
-            middle = status.merge(middle, s);
-        }
-        let joined = status.merge(below, middle);
-        status.root = status.merge(joined, above);
+        let (lower, upper) = status.rejoin(below, next, above);
         match (next.first(), next.last()) {
             (Some(&f), Some(&l)) => {
                 self.check(lower, f);

@@ -334,14 +334,7 @@ impl<'a, N: Num> Sweep<'a, N> {
                 .collect(),
             None => Vec::new(),
         };
-        let (lower, upper) = (status.last(below), status.first(above));
-        let mut middle = NIL;
-        for &s in &next {
-            status.live[s] = true;
-            middle = status.merge(middle, s);
-        }
-        let joined = status.merge(below, middle);
-        status.root = status.merge(joined, above);
+        let (lower, upper) = status.rejoin(below, &next, above);
         match (next.first(), next.last()) {
             (Some(&f), Some(&l)) => {
                 self.check(lower, f, &p);

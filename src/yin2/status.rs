@@ -123,6 +123,21 @@ impl Status {
         }
     }
 
+    /// Make the main tree the treap `below`, then the nodes `next` in order, then the treap
+    /// `above` (split off it at one event), with `next` live; returns the last node of `below`
+    /// and the first of `above`, the new neighbours of `next` (`NIL` where there is none).
+    pub fn rejoin(&mut self, below: usize, next: &[usize], above: usize) -> (usize, usize) {
+        let (lower, upper) = (self.last(below), self.first(above));
+        let mut middle = NIL;
+        for &s in next {
+            self.live[s] = true;
+            middle = self.merge(middle, s);
+        }
+        let joined = self.merge(below, middle);
+        self.root = self.merge(joined, above);
+        (lower, upper)
+    }
+
     /// Remove node `x` from the main tree through its parent link.
     pub fn remove(&mut self, x: usize) {
         let m = self.merge(self.left[x], self.right[x]);
