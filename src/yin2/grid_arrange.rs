@@ -57,7 +57,8 @@ where
         den = -den;
         num = -num;
     }
-    // coordinate = a + num/den · ab; pixel = floor(coordinate + 1/2) = floor((2(a·den + num·ab) + den) / 2den).
+    // coordinate = a + num/den · ab;
+    // pixel = floor(coordinate + 1/2) = floor((2(a·den + num·ab) + den) / 2den).
     let two = T::from(2);
     let round = |a0: &T, ab0: &T| -> Option<i64> {
         let top = a0.checked_mul(&den)?.checked_add(&num.checked_mul(ab0)?)?;
@@ -267,13 +268,13 @@ mod tests {
         #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
 
         /// The grid sweep reports a crossing exactly when two segments cross away from every
-        /// segment end (the exact kernel's classification of every pair), and otherwise records the arrangement that
-        /// the exact sweep of `arrange` records on the same segments as rationals (which cuts
-        /// them at their crossings, all at segment ends here): the same events,
-        /// pieces, pieces below and edges of every piece. Half the cases keep only segments
-        /// that cross none kept before them (touching, overlapping, T-junctions and repeats
-        /// stay); the points given hold some that no segment ends at, where a crossing is
-        /// still one.
+        /// segment end (the exact kernel's classification of every pair), and otherwise
+        /// records the arrangement that the exact sweep of `arrange` records on the same
+        /// segments as rationals (which cuts them at their crossings, all at segment ends
+        /// here): the same events, pieces, pieces below and edges of every piece. Half the
+        /// cases keep only segments that cross none kept before them (touching, overlapping,
+        /// T-junctions and repeats stay); the points given hold some that no segment ends at,
+        /// where a crossing is still one.
         #[test]
         fn grid_sweep_records_the_exact_sweeps_arrangement(
             drawn in proptest::collection::vec(segment(), 0..30),
@@ -301,10 +302,11 @@ mod tests {
             if any_crossing {
                 return Ok(());
             }
-            let edges: Vec<_> = segs.iter().map(|&(a, b)| (point::<Rational>(a), point(b))).collect();
+            let q = point::<Rational>;
+            let edges: Vec<_> = segs.iter().map(|&(a, b)| (q(a), q(b))).collect();
             let want = arrange(&edges, &());
-            let points: Vec<Point<Rational>> = got.points.iter().map(|&g| point(g)).collect();
-            let want_points: Vec<Point<Rational>> = want.points.iter().map(|v| v.point().clone()).collect();
+            let points: Vec<Point<Rational>> = got.points.iter().map(|&g| q(g)).collect();
+            let want_points: Vec<_> = want.points.iter().map(|v| v.point().clone()).collect();
             prop_assert_eq!(points, want_points);
             prop_assert_eq!(groups(&got), groups(&want));
         }

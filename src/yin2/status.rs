@@ -47,7 +47,8 @@ impl Status {
         self.up[x] = NIL;
     }
 
-    /// Split treap `t` into the nodes where the monotone predicate `goes_right` is false, then true.
+    /// Split treap `t` into the nodes where the monotone predicate `goes_right` is false, then
+    /// true.
     pub fn split(
         &mut self,
         mut t: usize,
