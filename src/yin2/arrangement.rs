@@ -15,8 +15,9 @@ pub(crate) struct Arrangement<P> {
     pub groups: Vec<Group>,
     /// The edges of every group, `Group::members` indexes into it.
     pub members: Vec<usize>,
-    /// Float mode: pairs of edges found crossing (no crossing point is constructed from rounded
-    /// coordinates); if there is any, the rest of the arrangement is not valid.
+    /// Float mode's grid sweep: pairs of edges found crossing (no crossing point is made); if
+    /// there is any, the rest of the arrangement is not valid. Empty in exact mode, whose sweep
+    /// cuts edges at their crossings.
     pub crossed: Vec<(usize, usize)>,
 }
 
@@ -137,7 +138,7 @@ impl<P> Recorder<P> {
         }
     }
 
-    /// Edges `i < j` were found crossing (float mode: see [`Arrangement::crossed`]).
+    /// Edges `i < j` were found crossing (see [`Arrangement::crossed`]).
     pub fn cross(&mut self, i: usize, j: usize) {
         self.arr.crossed.push((i, j));
     }

@@ -117,10 +117,8 @@ pub(crate) fn exact_image_pairs<N: Num>(edges: &[Edge<N>]) -> Vec<(usize, usize)
 /// ([`Arrangement::windings`]) — no crossing pair is classified twice, no piece needs a
 /// midpoint to be located, and points are numbered by their event instead of hashed.
 ///
-/// The sweep order needs exact crossing points: exact mode, or in float mode edges that do not
-/// cross (snapped fragments on grid integers, where no point is constructed); float mode's
-/// crossings are reported instead ([`Arrangement::crossed`]). The sweep finds a crossing if
-/// there is one: up to the first, its status is exact.
+/// The sweep order needs exact crossing points: exact mode (float mode's snapped fragments
+/// have a sweep of their own on grid integers, [`super::grid_arrange::arrange_grid`]).
 pub(crate) fn arrange<'a, N: Num>(
     edges: &'a [Edge<N>],
     ctx: &'a N::Ctx,
@@ -360,10 +358,6 @@ impl<'a, N: Num> Sweep<'a, N> {
             return;
         }
         if crosses(a.0, a.1, b.0, b.1, self.ctx) {
-            if let (false, Some(r)) = (N::EXACT, &mut self.record) {
-                r.cross(i, j);
-                return;
-            }
             let q = Crossing::new((i, j), a, b);
             if p.cmp_crossing(&q) == Ordering::Less {
                 self.crossings.entry(q).or_default().extend([i, j]);
