@@ -123,10 +123,10 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 /// conforming, as the validator would rebuild it — with each point replaced by its rounding in
 /// `rounded` (`moved` where it differs). If none moved, it is the exact boundary. If no two
 /// points round to one, only the triangles at moved points are checked against their
-/// neighbours ([`conforming_after_moves`]), else the whole boundary is validated. Otherwise vertices that
-/// round to one point are merged, triangles that collapse to a segment or a point are dropped
-/// (each takes a pair of opposite fins off an edge, so closed surfaces stay closed), and the
-/// rounded boundary is validated exactly. The result must have the exact one's topology,
+/// neighbours ([`conforming_after_moves`]), else the whole boundary is validated. Otherwise
+/// vertices that round to one point are merged, triangles that collapse to a segment or a
+/// point are dropped (each takes a pair of opposite fins off an edge, so closed surfaces stay
+/// closed), and the rounded boundary is validated exactly. The result must have the exact one's topology,
 /// computed by `keep` unless [`provably_kept`] shows it. Any failure is
 /// [`Yin3Error::Unrepresentable`].
 fn rounded_complex<N: Num>(
