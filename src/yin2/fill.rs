@@ -129,39 +129,35 @@ where
     N: Num,
     W: Copy + Default + Add<Output = W> + Sub<Output = W>,
 {
-    // The sweep orders each edge lo → hi; an edge given hi → lo counts negatively upwards.
-    let upward = |e: usize| {
-        let (a, b) = &edges[e];
-        if a < b {
-            mult(e)
-        } else {
-            W::default() - mult(e)
-        }
-    };
-    fill_arranged(
-        arrange(edges, &ctx),
-        Vertex::into_point,
-        upward,
-        ctx,
-        inside,
-    )
+    let arr = arrange(edges, &ctx);
+    let ascending = |e: usize| edges[e].0 < edges[e].1;
+    fill_arranged(arr, Vertex::into_point, mult, ascending, ctx, inside)
 }
 
-/// [`fill_exact`] on an arrangement made already, whose edge `e` adds `upward(e)` to the
-/// winding number from below to above (its multiplicity, negated if it is given from its upper
-/// end to its lower), its points made exact by `point` (float mode's snap rounding makes the
-/// arrangement of its grid fragments and checks that no two of them cross).
+/// [`fill_exact`] on an arrangement made already, whose edge `e` counts `mult(e)` times and
+/// is given from its lower end to its upper one (in sweep order) where `ascending(e)`, its
+/// points made exact by `point` (float mode's snap rounding makes the arrangement of its grid
+/// fragments and checks that no two of them cross).
 pub(crate) fn fill_arranged<P, N, W>(
     arr: Arrangement<P>,
     point: impl FnMut(P) -> Point<N>,
-    upward: impl Fn(usize) -> W,
+    mult: impl Fn(usize) -> W,
+    ascending: impl Fn(usize) -> bool,
     ctx: N::Ctx,
     inside: impl Fn(W) -> bool,
 ) -> Result<YinSet2<N>, YinError>
 where
     N: Num,
-    W: Copy + Default + Add<Output = W>,
+    W: Copy + Default + Add<Output = W> + Sub<Output = W>,
 {
+    // The sweep orders each edge lo → hi; an edge given hi → lo counts negatively upwards.
+    let upward = |e: usize| {
+        if ascending(e) {
+            mult(e)
+        } else {
+            W::default() - mult(e)
+        }
+    };
     let windings = arr.windings(upward);
     let mut pieces = Vec::new();
     for (g, (below, above)) in arr.groups.iter().zip(windings) {

@@ -6,6 +6,8 @@
 
 use super::arrangement::{Arrangement, Recorder};
 use super::status::{Status, NIL};
+use crate::kernel::Point;
+use crate::num::Float;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{CheckedAdd, CheckedMul, CheckedSub, Signed, ToPrimitive};
@@ -14,6 +16,12 @@ use std::cmp::Ordering;
 /// A grid point: integer multiples of the grid spacing, relative to the local origin (below
 /// 2⁵² in magnitude, so that every orientation below is exact in `i128`).
 pub(crate) type G = (i64, i64);
+
+/// The point of grid coordinates `k` in grid units: integers below 2⁵², exact `f64`s, on which
+/// the `f64` predicates are exact.
+pub(crate) fn unit(k: G) -> Point<Float> {
+    Point::new(Float::new(k.0 as f64), Float::new(k.1 as f64))
+}
 
 /// The sign of (b − a) × (c − a), exactly (coordinates below 2⁶² in magnitude).
 pub(crate) fn orient_g(a: G, b: G, c: G) -> Ordering {
@@ -232,22 +240,8 @@ mod tests {
     use super::*;
     use crate::kernel::{classify, Contact, Point};
     use crate::num::Rational;
-    use crate::yin2::intersect::arrange;
+    use crate::yin2::intersect::{arrange, lattice_segment};
     use proptest::prelude::*;
-
-    /// Segments on the 7×7 lattice, many of them sharing ends, lines and directions: any,
-    /// horizontal, vertical, diagonal, through (3, 3), and along the line y = x/2.
-    fn segment() -> impl Strategy<Value = (G, G)> {
-        let c = || 0..=6i64;
-        prop_oneof![
-            3 => ((c(), c()), (c(), c())),
-            2 => (c(), c(), c()).prop_map(|(y, a, b)| ((a, y), (b, y))),
-            2 => (c(), c(), c()).prop_map(|(x, a, b)| ((x, a), (x, b))),
-            2 => (c(), c()).prop_map(|(a, b)| ((a, a), (b, b))),
-            2 => (c(), c()).prop_map(|q| ((3, 3), q)),
-            1 => (0..=3i64, 0..=3i64).prop_map(|(a, b)| ((2 * a, a), (2 * b, b))),
-        ]
-    }
 
     fn point<N: crate::num::Num>(g: G) -> Point<N> {
         Point::int(g.0, g.1)
@@ -277,7 +271,7 @@ mod tests {
         /// where a crossing is still one.
         #[test]
         fn grid_sweep_records_the_exact_sweeps_arrangement(
-            drawn in proptest::collection::vec(segment(), 0..30),
+            drawn in proptest::collection::vec(lattice_segment(6), 0..30),
             uncrossed in any::<bool>(),
             unused in proptest::collection::vec((0..=6i64, 0..=6i64), 0..6),
         ) {

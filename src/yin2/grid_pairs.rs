@@ -3,10 +3,8 @@
 //! decided by exact integer orientations; past a budget of box pairs, the Bentley–Ottmann sweep
 //! of the segments as exact points (seed 002 §1.3).
 
-use super::grid_arrange::{cross_properly, G};
+use super::grid_arrange::{cross_properly, unit, G};
 use super::intersect::exact_image_pairs;
-use crate::kernel::Point;
-use crate::num::Float;
 
 /// The pairs `i < j` of `segments` whose interiors cross at one point: O(n log n + X) for X
 /// pairs of boxes whose x-ranges overlap, or, once X passes [`SCANS_PER_SEGMENT`] per segment
@@ -20,7 +18,6 @@ pub(crate) fn grid_crossing_pairs(segments: &[(G, G)]) -> Vec<(usize, usize)> {
 /// The crossing pairs among the meeting pairs that the Bentley–Ottmann sweep finds (a pair
 /// meeting at several events is found at each).
 fn swept_pairs(segments: &[(G, G)]) -> Vec<(usize, usize)> {
-    let unit = |g: G| Point::new(Float::new(g.0 as f64), Float::new(g.1 as f64));
     let edges: Vec<_> = segments.iter().map(|&(a, b)| (unit(a), unit(b))).collect();
     let mut pairs = exact_image_pairs(&edges);
     pairs.sort_unstable();
@@ -67,7 +64,7 @@ fn box_pairs(segments: &[(G, G)], budget: usize) -> Option<Vec<(usize, usize)>> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kernel::{classify, Contact};
+    use crate::kernel::{classify, Contact, Point};
     use crate::num::Rational;
     use proptest::prelude::*;
 

@@ -369,6 +369,26 @@ impl<'a, N: Num> Sweep<'a, N> {
     }
 }
 
+/// Segments on the lattice 0..=n × 0..=n (n even), many of them sharing ends, lines and
+/// directions: any, horizontal, vertical, diagonal, antidiagonal, through the centre, and along
+/// the line y = x/2 (the sweeps' property tests).
+#[cfg(test)]
+pub(crate) fn lattice_segment(
+    n: i64,
+) -> impl proptest::strategy::Strategy<Value = ((i64, i64), (i64, i64))> {
+    use proptest::prelude::*;
+    let c = move || 0..=n;
+    prop_oneof![
+        3 => ((c(), c()), (c(), c())),
+        2 => (c(), c(), c()).prop_map(|(y, a, b)| ((a, y), (b, y))),
+        2 => (c(), c(), c()).prop_map(|(x, a, b)| ((x, a), (x, b))),
+        2 => (c(), c()).prop_map(|(a, b)| ((a, a), (b, b))),
+        1 => (c(), c()).prop_map(move |(a, b)| ((a, n - a), (b, n - b))),
+        2 => (c(), c()).prop_map(move |q| ((n / 2, n / 2), q)),
+        1 => (0..=n / 2, 0..=n / 2).prop_map(|(a, b)| ((2 * a, a), (2 * b, b))),
+    ]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -423,19 +443,6 @@ mod tests {
         assert!(got.iter().all(|x| want.contains(x)), "segments: {segs:?}");
         assert_eq!(got.len(), want.len(), "segments: {segs:?}");
         got.len()
-    }
-
-    fn seg() -> impl Strategy<Value = Seg> {
-        let c = || 0..=4i64;
-        prop_oneof![
-            3 => ((c(), c()), (c(), c())),
-            2 => (c(), c(), c()).prop_map(|(y, a, b)| ((a, y), (b, y))),
-            2 => (c(), c(), c()).prop_map(|(x, a, b)| ((x, a), (x, b))),
-            2 => (c(), c()).prop_map(|(a, b)| ((a, a), (b, b))),
-            1 => (c(), c()).prop_map(|(a, b)| ((a, 4 - a), (b, 4 - b))),
-            2 => (c(), c()).prop_map(|q| ((2, 2), q)),
-            1 => (0..=2i64, 0..=2i64).prop_map(|(a, b)| ((2 * a, a), (2 * b, b))),
-        ]
     }
 
     /// The arrangement of a closed edge set against brute force: every edge is the chain of its
@@ -505,7 +512,7 @@ mod tests {
     }
 
     fn segs(zero_length: bool) -> impl Strategy<Value = Vec<Seg>> {
-        proptest::collection::vec(seg(), 0..40).prop_map(move |v| {
+        proptest::collection::vec(lattice_segment(4), 0..40).prop_map(move |v| {
             v.into_iter()
                 .filter(|s| zero_length || s.0 != s.1)
                 .collect()

@@ -4,7 +4,7 @@
 
 use super::error::YinError;
 use super::fill::fill_arranged;
-use super::grid_arrange::{arrange_grid, crossing_pixel, G};
+use super::grid_arrange::{arrange_grid, crossing_pixel, unit, G};
 use super::grid_pairs::grid_crossing_pairs;
 use super::intersect::Edge;
 use super::set::YinSet2;
@@ -47,17 +47,14 @@ pub(crate) fn regularize<N: Num>(
             snap.force(&fragments, &owner, &arr.crossed)?;
             continue;
         }
-        let upward = |e: usize| {
-            let ((a, b), label) = fragments[e];
-            let w = Pair::unit(label);
-            if a < b {
-                w
-            } else {
-                Pair::default() - w
-            }
+        let label = |e: usize| Pair::unit(fragments[e].1);
+        let ascending = |e: usize| {
+            let (a, b) = fragments[e].0;
+            a < b
         };
         let inside = |w: Pair| inside(w.0);
-        let unit_set = fill_arranged(arr, unit, upward, Tolerance::default(), inside)?;
+        let exact = Tolerance::default();
+        let unit_set = fill_arranged(arr, unit, label, ascending, exact, inside)?;
         return Ok(unit_set.map_points(|p| frame.to_point(p), ctx));
     }
 }
@@ -126,12 +123,6 @@ impl<N: Num> Frame<N> {
 /// or non-negative if the set is unbounded (its far face, of winding 0, is inside).
 pub(crate) fn inside_set(w: i64, unbounded: bool) -> bool {
     w + i64::from(unbounded) > 0
-}
-
-/// The point of grid coordinates `k` in grid units: integers below 2⁵², exact `f64`s, on which
-/// the `f64` predicates are exact.
-fn unit(k: G) -> Point<Float> {
-    Point::new(Float::new(k.0 as f64), Float::new(k.1 as f64))
 }
 
 /// Snap rounding (Hobby 1999; Guibas and Marimont 1998) of grid segments: each segment is
