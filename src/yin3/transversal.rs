@@ -36,9 +36,11 @@ use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use num_bigint::BigInt;
 use num_traits::Float as _;
 use rayon::prelude::*;
-use rstar::{primitives::GeomWithData, primitives::Rectangle, Envelope, RTree, AABB};
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
 use std::cell::{Cell, OnceCell};
 use std::cmp::Ordering::{self, Equal};
+use std::sync::OnceLock;
 
 /// Where an edge `(u, v)` (global point indices, u < v) pierces triangle `tri` (global index).
 type Pierce = ((usize, usize), usize);
@@ -145,20 +147,10 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         .iter()
         .map(|t| AABB::from_points(t.map(|v| &f64s[v])))
         .collect();
-    let hull = |of: &[AABB<[f64; 3]>]| of.iter().fold(AABB::new_empty(), |h, b| h.merged(b));
-    let (hull_a, hull_b) = (hull(&boxes[..first_b]), hull(&boxes[first_b..]));
-    let planes: Vec<PlaneF64> = tris
-        .iter()
-        .map(|&[u, v, w]| PlaneF64::new(f64s[u], f64s[v], f64s[w]))
-        .collect();
-    // Only triangles whose boxes meet the other operand's box can meet it; the R-tree holds
-    // the operand with fewer such triangles, the other's query it.
-    let near_a: Vec<usize> = (0..first_b)
-        .filter(|&t| boxes[t].intersects(&hull_b))
-        .collect();
-    let near_b: Vec<usize> = (first_b..tris.len())
-        .filter(|&s| boxes[s].intersects(&hull_a))
-        .collect();
+    let (near_a, near_b) = near(&boxes, first_b);
+    // Each triangle's plane, prepared when a pair of boxes first needs it.
+    let planes: Vec<OnceLock<PlaneF64>> = (0..tris.len()).map(|_| OnceLock::new()).collect();
+    // The R-tree holds the operand with fewer near triangles, the other's query it.
     let flip = near_b.len() > near_a.len();
     let (near, indexed) = match flip {
         false => (near_a, near_b),
@@ -174,16 +166,17 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     // ends it.
     let search = |q: usize| {
         let (mut crossing, mut touching) = (Vec::new(), Vec::new());
-        for g in tree.locate_in_envelope_intersecting(&boxes[q]) {
-            let (t, s) = if flip { (g.data, q) } else { (q, g.data) };
+        let generic = meeting_boxes(tree.root(), &boxes[q], &mut |g| {
+            let (t, s) = if flip { (g, q) } else { (q, g) };
             match contact(&f64s, &planes, &corners, (t, tris[t]), (s, tris[s])) {
                 Contact::Apart => {}
                 Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
-                Contact::Degenerate => return None,
+                Contact::Degenerate => return false,
             }
-        }
-        Some((crossing, touching))
+            true
+        });
+        generic.then_some((crossing, touching))
     };
     let parallel = tris.len() >= PARALLEL_FROM;
     let found: Vec<(Vec<_>, Vec<_>)> = map_all(&near, parallel, |&t| search(t))
@@ -273,6 +266,37 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     }
     let inside = inside(&pieces, &crossing_edges, &rays, parallel)?;
     Some(Transversal::Crossing((points, kept(&pieces, &inside))))
+}
+
+/// The triangles of each operand (0 below `first_b`, 1 from it) whose boxes meet the box of
+/// the other operand's triangles that can still meet them, narrowed in three turns (operand
+/// 0, 1, 0): only these can meet a triangle of the other operand.
+fn near(boxes: &[AABB<[f64; 3]>], first_b: usize) -> (Vec<usize>, Vec<usize>) {
+    let hull = |of: &[usize]| {
+        of.iter()
+            .fold(AABB::new_empty(), |h, &t| h.merged(&boxes[t]))
+    };
+    let mut near: [Vec<usize>; 2] = [(0..first_b).collect(), (first_b..boxes.len()).collect()];
+    for o in [0, 1, 0] {
+        let other = hull(&near[1 - o]);
+        near[o].retain(|&t| boxes[t].intersects(&other));
+    }
+    let [a, b] = near;
+    (a, b)
+}
+
+/// Calls `f` on the data of each leaf under `node` whose box meets `query`, depth first,
+/// until `f` returns false; false if it did. (A walk of the nodes, with nothing to set up per
+/// query as rstar's iterators do: most queries of the contact search meet nothing.)
+fn meeting_boxes(
+    node: &ParentNode<GeomWithData<Rectangle<[f64; 3]>, usize>>,
+    query: &AABB<[f64; 3]>,
+    f: &mut impl FnMut(usize) -> bool,
+) -> bool {
+    node.children().iter().all(|child| match child {
+        RTreeNode::Leaf(g) => !g.envelope().intersects(query) || f(g.data),
+        RTreeNode::Parent(p) => !p.envelope().intersects(query) || meeting_boxes(p, query, f),
+    })
 }
 
 /// The operand whose parts (glued surfaces or patches, by operand) all lie inside the other,
@@ -389,17 +413,19 @@ fn key(u: usize, v: usize) -> (usize, usize) {
 /// orient3d(e₀, e₁, f₀, f₁) gives up to the side of f₁.
 fn contact<N: Num>(
     p: &[[f64; 3]],
-    planes: &[PlaneF64],
+    planes: &[OnceLock<PlaneF64>],
     corners: &[&Point3<N>],
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
 ) -> Contact {
     let o = |a: usize, b: usize, c: usize, d: usize| exact_orient3d_f64(p[a], p[b], p[c], p[d]);
-    let s_sides = s.map(|v| planes[ti].side(p[v]));
+    let plane =
+        |i: usize, [u, v, w]: [usize; 3]| planes[i].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]));
+    let s_sides = s.map(|v| plane(ti, t).side(p[v]));
     if one_side(&s_sides) {
         return Contact::Apart;
     }
-    let t_sides = t.map(|v| planes[si].side(p[v]));
+    let t_sides = t.map(|v| plane(si, s).side(p[v]));
     if one_side(&t_sides) {
         return Contact::Apart;
     }
@@ -749,6 +775,61 @@ mod tests {
         prop::collection::vec([-0.1..0.1, -0.1..0.1, -0.1..0.1], 8)
     }
 
+    /// A box from a corner and non-negative sides.
+    fn a_box(corner: [f64; 3], sides: [f64; 3]) -> AABB<[f64; 3]> {
+        AABB::from_corners(corner, [0, 1, 2].map(|k| corner[k] + sides[k]))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        /// The broad phase finds every pair of boxes that meet: the near triangles of each
+        /// side include every one whose box meets a box of the other side, and the walk of an
+        /// R-tree of one side's near boxes yields, for a query box of the other, exactly the
+        /// boxes it meets (boxes that touch in a face or corner included: sides may be 0).
+        #[test]
+        fn the_broad_phase_finds_every_meeting_pair(
+            boxes in prop::collection::vec(
+                ([0.0..8.0, 0.0..8.0, 0.0..8.0f64], [0.0..3.0, 0.0..3.0, 0.0..3.0f64]), 2..40),
+            split in 1usize..39,
+        ) {
+            let boxes: Vec<AABB<[f64; 3]>> = boxes
+                .into_iter()
+                .map(|(c, s)| a_box(c.map(f64::floor), s.map(f64::floor)))
+                .collect();
+            let first_b = split.min(boxes.len() - 1);
+            let (near_a, near_b) = near(&boxes, first_b);
+            let meets = |t: usize, s: usize| boxes[t].intersects(&boxes[s]);
+            let hull = |of: std::ops::Range<usize>| {
+                of.fold(AABB::new_empty(), |h, t| h.merged(&boxes[t]))
+            };
+            let (hull_a, hull_b) = (hull(0..first_b), hull(first_b..boxes.len()));
+            prop_assert!(near_a.iter().all(|&t| boxes[t].intersects(&hull_b)));
+            prop_assert!(near_b.iter().all(|&s| boxes[s].intersects(&hull_a)));
+            for t in 0..first_b {
+                for s in first_b..boxes.len() {
+                    if meets(t, s) {
+                        prop_assert!(near_a.contains(&t) && near_b.contains(&s));
+                    }
+                }
+            }
+            let tree = RTree::bulk_load(
+                near_b.iter().map(|&s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s)).collect(),
+            );
+            for &t in &near_a {
+                let mut found = Vec::new();
+                let whole = meeting_boxes(tree.root(), &boxes[t], &mut |s| {
+                    found.push(s);
+                    true
+                });
+                prop_assert!(whole);
+                found.sort_unstable();
+                let expected: Vec<usize> = near_b.iter().copied().filter(|&s| meets(t, s)).collect();
+                prop_assert_eq!(found, expected);
+            }
+        }
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
 
@@ -855,10 +936,7 @@ mod tests {
             .map(|[x, y, z]| Point3::new(x, y, z))
             .collect();
         let corners: Vec<&Point3<Float>> = points.iter().collect();
-        let planes = [
-            PlaneF64::new(t[0], t[1], t[2]),
-            PlaneF64::new(s[0], s[1], s[2]),
-        ];
+        let planes = [OnceLock::new(), OnceLock::new()];
         contact(&p, &planes, &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
     }
 
