@@ -326,36 +326,99 @@ fn meets_box(a: G, b: G, lo: G, hi: G) -> bool {
 /// each other. The square is the closed one shifted by (−δ, −δ²) for an infinitesimal δ > 0;
 /// endpoints (even) never tie with sides (odd), so only the corner side tests need it.
 fn meets_pixel(a: G, b: G, c: G) -> bool {
-    let (ax, ay, bx, by) = (
-        2 * a.0 as i128,
-        2 * a.1 as i128,
-        2 * b.0 as i128,
-        2 * b.1 as i128,
-    );
-    let (cx, cy) = (2 * c.0 as i128, 2 * c.1 as i128);
+    let sides = corner_sides(a, b, c);
+    if sides.is_some_and(|s| all_on_one_side(&s)) {
+        return false;
+    }
+    let w = |v: i64| 2 * v;
+    let ((ax, ay), (bx, by), (cx, cy)) = ((w(a.0), w(a.1)), (w(b.0), w(b.1)), (w(c.0), w(c.1)));
     if ax.max(bx) < cx - 1 || ax.min(bx) > cx + 1 || ay.max(by) < cy - 1 || ay.min(by) > cy + 1 {
         return false;
     }
+    !all_on_one_side(&sides.unwrap_or_else(|| exact_corner_sides(a, b, c)))
+}
+
+/// True if every side is strictly the same (a segment of one point has sides 0).
+fn all_on_one_side(sides: &[i8; 4]) -> bool {
+    sides.iter().all(|&v| v > 0) || sides.iter().all(|&v| v < 0)
+}
+
+/// The sides of the line through `a` and `b` on which the corners of the pixel square centred
+/// at `c` lie, by exact integer side tests in doubled coordinates, a corner on the line
+/// counted on the side of the square shifted by (−δ, −δ²) ([`meets_pixel`]).
+fn exact_corner_sides(a: G, b: G, c: G) -> [i8; 4] {
+    let w = |v: i64| 2 * v as i128;
+    let ((ax, ay), (bx, by), (cx, cy)) = ((w(a.0), w(a.1)), (w(b.0), w(b.1)), (w(c.0), w(c.1)));
     let (dx, dy) = (bx - ax, by - ay);
     // Sign of d × (p − (δ, δ²) − a) = d × (p − a) + δ·dy − δ²·dx.
     let side = |px: i128, py: i128| match (dx * (py - ay) - dy * (px - ax)).signum() {
-        0 if dy != 0 => dy.signum(),
-        0 => -dx.signum(),
-        s => s,
+        0 if dy != 0 => dy.signum() as i8,
+        0 => -dx.signum() as i8,
+        s => s as i8,
     };
-    let s = [
+    [
         side(cx - 1, cy - 1),
         side(cx + 1, cy - 1),
         side(cx + 1, cy + 1),
         side(cx - 1, cy + 1),
-    ];
-    !(s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0))
+    ]
+}
+
+/// The sides of the line through `a` and `b` on which the corners of the pixel square centred
+/// at `c` lie (as in [`meets_pixel`]), where `f64` arithmetic is certain of every one: none on
+/// the line, each side value d × (corner − a) farther from 0 than its rounding error. A filter
+/// in front of [`meets_pixel`]'s integer side tests; a centre far off the line settles all
+/// four corners at once.
+fn corner_sides(a: G, b: G, c: G) -> Option<[i8; 4]> {
+    let f = |v: i64| v as f64;
+    // Grid coordinates are at most 2⁵¹ from 0: these differences are exact.
+    let (dx, dy) = (f(b.0) - f(a.0), f(b.1) - f(a.1));
+    let (ex, ey) = (f(c.0) - f(a.0), f(c.1) - f(a.1));
+    // The centre's side value d × (c − a), and a corner's: that plus dx·oy − dy·ox for an
+    // offset o of (±½, ±½), at most `reach` away. Each product, difference and sum is within
+    // 2⁻⁵³ of its value, so either is within `error` of the exact value (with room to spare).
+    let (p, q) = (dx * ey, dy * ex);
+    let centre = p - q;
+    let reach = (dx.abs() + dy.abs()) * 0.5;
+    let error = (p.abs() + q.abs()) * (3.0 * f64::EPSILON) + reach * (2.0 * f64::EPSILON);
+    let sign = |v: f64| if v > 0.0 { 1 } else { -1 };
+    if centre.abs() > reach + error {
+        return Some([sign(centre); 4]);
+    }
+    let side = |ox: f64, oy: f64| {
+        let v = centre + (dx * oy - dy * ox);
+        (v.abs() > error).then(|| sign(v))
+    };
+    Some([
+        side(-0.5, -0.5)?,
+        side(0.5, -0.5)?,
+        side(0.5, 0.5)?,
+        side(-0.5, 0.5)?,
+    ])
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    /// [`meets_pixel`] by its integer side tests alone (no filter).
+    fn meets_pixel_exactly(a: G, b: G, c: G) -> bool {
+        let w = |p: G| (2 * p.0 as i128, 2 * p.1 as i128);
+        let ((ax, ay), (bx, by), (cx, cy)) = (w(a), w(b), w(c));
+        if ax.max(bx) < cx - 1 || ax.min(bx) > cx + 1 || ay.max(by) < cy - 1 || ay.min(by) > cy + 1
+        {
+            return false;
+        }
+        let (dx, dy) = (bx - ax, by - ay);
+        let side = |px: i128, py: i128| match (dx * (py - ay) - dy * (px - ax)).signum() {
+            0 if dy != 0 => dy.signum(),
+            0 => -dx.signum(),
+            s => s,
+        };
+        let s = [(-1, -1), (1, -1), (1, 1), (-1, 1)].map(|(x, y)| side(cx + x, cy + y));
+        !(s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0))
+    }
 
     /// The fragments of `snap` and the pairs of them that its arrangement reports crossing.
     fn crossed(snap: &Snap) -> (Vec<Labelled>, Vec<usize>, Vec<(usize, usize)>) {
@@ -413,6 +476,41 @@ mod tests {
     }
 
     proptest! {
+        /// The `f64` filter never decides against the exact side tests: segments between grid
+        /// points up to 2⁵¹ (small ones too), pixels at and around points of the segment, so
+        /// that lines through corners and along sides occur.
+        #[test]
+        fn the_filter_agrees_with_the_exact_pixel_test(
+            scale in prop_oneof![Just(4i64), Just(1 << 20), Just(1 << 51)],
+            a in (-1.0..1.0, -1.0..1.0f64), b in (-1.0..1.0, -1.0..1.0f64),
+            t in 0.0..1.0f64, offset in (-2i64..=2, -2i64..=2),
+        ) {
+            let grid = |p: (f64, f64)| ((p.0 * scale as f64) as i64, (p.1 * scale as f64) as i64);
+            let (a, b) = (grid(a), grid(b));
+            let on = |u: i64, v: i64| u + ((v - u) as f64 * t) as i64;
+            let c = (on(a.0, b.0) + offset.0, on(a.1, b.1) + offset.1);
+            prop_assert_eq!(meets_pixel(a, b, c), meets_pixel_exactly(a, b, c));
+        }
+
+        /// The same on lines through a corner of the pixel exactly (the tie the δ-shift
+        /// breaks), at coordinates up to 2⁵⁰, where rounding the side values in `f64` could give
+        /// the tie either sign: the segment from c + ((1 − dx)/2, (1 − dy)/2) along an odd
+        /// (dx, dy) passes through the corner c + (½, ½) halfway.
+        #[test]
+        fn the_filter_leaves_lines_through_corners_to_the_exact_test(
+            c in (-(1i64 << 50)..1 << 50, -(1i64 << 50)..1 << 50),
+            d in (-(1i64 << 49)..1 << 49, -(1i64 << 49)..1 << 49),
+            flip in any::<bool>(),
+        ) {
+            let (dx, dy) = (2 * d.0 + 1, 2 * d.1 + 1);
+            let a = (c.0 + (1 - dx) / 2, c.1 + (1 - dy) / 2);
+            let (a, b) = if flip { ((a.0 + dx, a.1 + dy), a) } else { (a, (a.0 + dx, a.1 + dy)) };
+            for k in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                let pixel = (c.0 + k.0, c.1 + k.1);
+                prop_assert_eq!(meets_pixel(a, b, pixel), meets_pixel_exactly(a, b, pixel));
+            }
+        }
+
         /// The hot pixels a segment meets, by the slab scan ([`HotPixels::met_by`] on one
         /// segment's slab of at most 80 pixels: never enough to build the tree) and by the
         /// R-tree search ([`HotPixels::along`]), are exactly the pixels that `meets_pixel`
