@@ -10,6 +10,7 @@ mod grid_arrange;
 mod grid_pairs;
 mod hasse;
 mod homology;
+mod hot_pixels;
 pub mod intersect;
 mod locate;
 mod meet;
