@@ -195,8 +195,9 @@ impl Rational {
         if v == 0.0 {
             return Some(Rational::from_i64(0));
         }
-        // v = ±m·2^e with m odd, m < 2^53: small as m·2^e for e ≤ 8 or as m / 2^−e for
-        // e ≥ −61 (both terms below 2^62).
+        // v = ±m·2^e with m odd, m < 2^53: small as m·2^e while that is below 2^62 (integers
+        // such as grid coordinates, however many trailing zeros) or as m / 2^−e for e ≥ −61
+        // (both terms below 2^62).
         let bits = v.to_bits();
         let raw_exp = ((bits >> 52) & 0x7ff) as i32;
         let frac = bits & ((1 << 52) - 1);
@@ -205,7 +206,7 @@ impl Rational {
             let tz = m.trailing_zeros();
             let (m, e) = ((m >> tz) as i128, raw_exp - 1075 + tz as i32);
             let m = if v < 0.0 { -m } else { m };
-            if (0..=8).contains(&e) {
+            if e >= 0 && 128 - m.unsigned_abs().leading_zeros() as i32 + e <= 62 {
                 return Some(lowest(m << e, 1));
             }
             if (-61..0).contains(&e) {
@@ -637,11 +638,16 @@ mod tests {
 
     proptest::proptest! {
         /// The exact value of an `f64` (small when it fits) is num-rational's, canonical form
-        /// included: on every bit pattern (subnormals and huge exponents) and on numbers of
-        /// moderate size, where the small path applies.
+        /// included: on every bit pattern (subnormals and huge exponents), on numbers of
+        /// moderate size, where the small path applies, and on integers and powers of two
+        /// around 2^62, where it ends.
         #[test]
-        fn from_float_is_the_exact_value(bits in proptest::num::u64::ANY, moderate in -1e6f64..1e6) {
-            for v in [f64::from_bits(bits), moderate, moderate.trunc() * 64.0] {
+        fn from_float_is_the_exact_value(
+            bits in proptest::num::u64::ANY, moderate in -1e6f64..1e6, shift in 0i32..70,
+        ) {
+            // Integers with up to 69 trailing zero bits: small up to 2^62, big from there.
+            let round = moderate.trunc() * 2f64.powi(shift);
+            for v in [f64::from_bits(bits), moderate, round, 2f64.powi(shift), -2f64.powi(shift)] {
                 proptest::prop_assert_eq!(
                     Rational::from_float(v),
                     BigRational::from_float(v).map(Rational::from)
