@@ -34,8 +34,10 @@ fn swept_pairs(segments: &[(G, G)]) -> Vec<(usize, usize)> {
 const SCANS_PER_SEGMENT: usize = 256;
 
 /// The crossing pairs among the pairs of segments whose boxes meet, by sweep and prune: the
-/// boxes sorted by their left side, each tested against the boxes still open at it; `None` once
-/// more than `budget` open boxes have been scanned.
+/// boxes sorted by their left side, each tested against the boxes still open at it that can
+/// meet it in y — the open boxes at most as high as nine in ten boxes kept sorted by their
+/// bottom (those that meet start at most that height below the new box's bottom), the taller
+/// ones all; `None` once more than `budget` open boxes have been scanned.
 fn box_pairs(segments: &[(G, G)], budget: usize) -> Option<Vec<(usize, usize)>> {
     // (x from, x to, y from, y to, segment), by x from.
     let mut boxes: Vec<(i64, i64, i64, i64, usize)> = segments
@@ -44,19 +46,42 @@ fn box_pairs(segments: &[(G, G)], budget: usize) -> Option<Vec<(usize, usize)>> 
         .map(|(i, &(a, b))| (a.0.min(b.0), a.0.max(b.0), a.1.min(b.1), a.1.max(b.1), i))
         .collect();
     boxes.sort_unstable_by_key(|b| b.0);
-    let (mut open, mut out, mut work) = (Vec::<(i64, i64, i64, i64, usize)>::new(), Vec::new(), 0);
-    for &b in &boxes {
-        open.retain(|c| c.1 >= b.0);
-        work += open.len();
+    let mut heights: Vec<i64> = boxes.iter().map(|b| b.3 - b.2).collect();
+    let low = match heights.len() {
+        0 => 0,
+        n => *heights.select_nth_unstable(n * 9 / 10).1,
+    };
+    // Open boxes: those at most `low` high by bottom, the others as they come; boxes closed
+    // before the current left side are dropped every fourth step and skipped until then.
+    let mut short: Vec<(i64, i64, i64, i64, usize)> = Vec::new();
+    let mut tall: Vec<(i64, i64, i64, i64, usize)> = Vec::new();
+    let (mut out, mut work) = (Vec::new(), 0);
+    for (step, &b) in boxes.iter().enumerate() {
+        if step % 4 == 0 {
+            short.retain(|c| c.1 >= b.0);
+            tall.retain(|c| c.1 >= b.0);
+        }
+        let from = short.partition_point(|c| c.2 < b.2.saturating_sub(low));
+        let to = short.partition_point(|c| c.2 <= b.3);
+        work += to - from + tall.len();
         if work > budget {
             return None;
         }
-        for c in &open {
-            if c.2 <= b.3 && b.2 <= c.3 && cross_properly(segments[b.4], segments[c.4]) {
+        for c in short[from..to].iter().chain(&tall) {
+            if c.1 >= b.0
+                && c.2 <= b.3
+                && b.2 <= c.3
+                && cross_properly(segments[b.4], segments[c.4])
+            {
                 out.push((b.4.min(c.4), b.4.max(c.4)));
             }
         }
-        open.push(b);
+        if b.3 - b.2 <= low {
+            let at = short.partition_point(|c| c.2 < b.2);
+            short.insert(at, b);
+        } else {
+            tall.push(b);
+        }
     }
     Some(out)
 }
