@@ -319,7 +319,8 @@ mod tests {
             let (a, b) = (far(a), far(b));
             let sorted: Vec<G> = pixels.iter().map(|&c| far(c)).collect();
             let hot = HotPixels::new(&sorted);
-            let mut want: Vec<G> = sorted.iter().copied().filter(|&c| meets_pixel(a, b, c)).collect();
+            let met = |c: &G| meets_pixel(a, b, *c);
+            let mut want: Vec<G> = sorted.iter().copied().filter(met).collect();
             want.sort();
             let mut found = Vec::new();
             hot.met_by(a, b, &mut found);

@@ -814,7 +814,10 @@ mod tests {
                 }
             }
             let tree = RTree::bulk_load(
-                near_b.iter().map(|&s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s)).collect(),
+                near_b
+                    .iter()
+                    .map(|&s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s))
+                    .collect(),
             );
             for &t in &near_a {
                 let mut found = Vec::new();
@@ -824,7 +827,8 @@ mod tests {
                 });
                 prop_assert!(whole);
                 found.sort_unstable();
-                let expected: Vec<usize> = near_b.iter().copied().filter(|&s| meets(t, s)).collect();
+                let expected: Vec<usize> =
+                    near_b.iter().copied().filter(|&s| meets(t, s)).collect();
                 prop_assert_eq!(found, expected);
             }
         }
