@@ -240,20 +240,9 @@ mod tests {
 
     /// [`meets_pixel`] by its integer side tests alone (no filter).
     fn meets_pixel_exactly(a: G, b: G, c: G) -> bool {
-        let w = |p: G| (2 * p.0 as i128, 2 * p.1 as i128);
-        let ((ax, ay), (bx, by), (cx, cy)) = (w(a), w(b), w(c));
-        if ax.max(bx) < cx - 1 || ax.min(bx) > cx + 1 || ay.max(by) < cy - 1 || ay.min(by) > cy + 1
-        {
-            return false;
-        }
-        let (dx, dy) = (bx - ax, by - ay);
-        let side = |px: i128, py: i128| match (dx * (py - ay) - dy * (px - ax)).signum() {
-            0 if dy != 0 => dy.signum(),
-            0 => -dx.signum(),
-            s => s,
-        };
-        let s = [(-1, -1), (1, -1), (1, 1), (-1, 1)].map(|(x, y)| side(cx + x, cy + y));
-        !(s.iter().all(|&v| v > 0) || s.iter().all(|&v| v < 0))
+        let (x0, x1, y0, y1) = (a.0.min(b.0), a.0.max(b.0), a.1.min(b.1), a.1.max(b.1));
+        let near = |v: i64, lo: i64, hi: i64| 2 * lo <= 2 * v + 1 && 2 * v - 1 <= 2 * hi;
+        near(c.0, x0, x1) && near(c.1, y0, y1) && !all_on_one_side(&exact_corner_sides(a, b, c))
     }
 
     #[test]

@@ -128,7 +128,7 @@ pub(crate) fn inside_set(w: i64, unbounded: bool) -> bool {
 /// rerouted, in order along it, through the centres of the hot pixels it meets — the pixels of
 /// the segments' endpoints and of their crossings ([`grid_crossing_pairs`]) — which leaves no
 /// two fragments crossing. Where two fragments still cross (half-open pixels, see
-/// [`meets_pixel`]), [`Snap::force`] adds the pixel of their crossing and forces it into both
+/// [`super::hot_pixels`]), [`Snap::force`] adds the pixel of their crossing and forces it into both
 /// paths where their segments do not meet it; paths stay monotone along their segments and
 /// every such round adds a new (segment, centre) stop, so the iteration ends.
 struct Snap {
