@@ -6,7 +6,7 @@
 //!
 //! * passes the exact validator (read as exact rationals), and `F.to_exact()` succeeds;
 //! * area(F △ E) ≤ C · ε · L, C = [`harness::AREA_C`] (documented on
-//!   `yinset::num::Tolerance`), L the boundary length of the operands plus E
+//!   `yinset::num::Tolerance`), L the boundary length of the operands plus E's and F's
 //!   ([`harness::scale_length`]);
 //! * has E's Betti numbers when the input has no feature smaller than ε (coarse-grid inputs);
 //!   on near-degenerate inputs the disagreements are counted and printed, not failures.

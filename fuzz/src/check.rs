@@ -285,10 +285,11 @@ fn measure(set: &YinSet2<Rational>) -> (bool, Rational) {
     }
 }
 
-/// The accuracy contract (area(F △ E) ≤ g·L, L the boundary length of the input and of E)
-/// in the form |area F − area E| ≤ g·2·`length`, `length` the input rings' L¹ length (which
-/// bounds both): a float set may lose or gain only what its grid allows, so a shape is never
-/// silently emptied; and F is bounded iff E is.
+/// The accuracy contract (area(F △ E) ≤ g·L, L the boundary length of the input, of E and
+/// of F) in the form |area F − area E| ≤ g·(2·`length` + L_F), `length` the input rings' L¹
+/// length (which bounds the input's and E's) and L_F F's: a float set may lose or gain only
+/// what its grid allows, so a shape is never silently emptied (a feature smaller than the grid
+/// may grow to a pixel, whose boundary only F has); and F is bounded iff E is.
 fn close_in_area<D: Debug>(
     what: &str,
     f: &YinSet2<Float>,
@@ -297,15 +298,18 @@ fn close_in_area<D: Debug>(
     length: &Rational,
     input: &D,
 ) {
-    let (fb, fa) = measure(&exact_of(what, f, input));
+    let fx = exact_of(what, f, input);
+    let (fb, fa) = measure(&fx);
     let (eb, ea) = measure(e);
-    let bound = grid_rational(g) * Rational::from_integer(2.into()) * length.clone();
+    let l = Rational::from_integer(2.into()) * length.clone() + l1_length(&curves_of(&fx));
+    let bound = grid_rational(g) * l;
     let diff = fa.clone() - ea.clone();
     if fb != eb || diff > bound || -diff > bound {
         fail!(
             input,
-            "{what}: float area {fa} (bounded: {fb}) is not within 2·g·L = {bound} of the exact \
-             area {ea} (bounded: {eb}) on the same coordinates (g = {g:e})\nfloat = {f:?}\nexact = {e:?}"
+            "{what}: float area {fa} (bounded: {fb}) is not within g·(2·L + L_F) = {bound} of \
+             the exact area {ea} (bounded: {eb}) on the same coordinates (g = {g:e})\n\
+             float = {f:?}\nexact = {e:?}"
         );
     }
 }
@@ -649,9 +653,9 @@ pub fn ops_float(input: &OpsInput) {
 }
 
 /// The area identities of bounded operands on the float results read exactly: each result F
-/// is within g·(L_A + L_B + L_E) ≤ 2·g·(L_A + L_B) of the exact result E on the same
-/// operands (the contract, lengths in L¹), so an identity with coefficients summing to k in
-/// absolute value holds within k·2·g·(L_A + L_B).
+/// is within g·(L_A + L_B + L_E + L_F) ≤ g·(2·(L_A + L_B) + L_F) of the exact result E on the
+/// same operands (the contract, lengths in L¹), so an identity Σ c·|F| = 0 holds within
+/// Σ |c|·g·(2·(L_A + L_B) + L_F) over its terms.
 fn area_identities<D: Debug>(
     a: &YinSet2<Rational>,
     b: &YinSet2<Rational>,
@@ -662,29 +666,41 @@ fn area_identities<D: Debug>(
     let (Some(x), Some(y), Some(g)) = (a.area(), b.area(), meet.grid()) else {
         return;
     };
-    let area = |k: usize| {
-        out[k]
-            .area()
-            .expect("a result of bounded operands is bounded")
-    };
-    let (m, j, d, s) = (area(0), area(1), area(4), area(5));
     let int = |v: i64| Rational::from_integer(v.into());
-    let unit = int(2) * grid_rational(g) * (l1_length(&curves_of(a)) + l1_length(&curves_of(b)));
+    let g = grid_rational(g);
+    let operands = int(2) * (l1_length(&curves_of(a)) + l1_length(&curves_of(b)));
+    // Each result's area and its share of the bound, per unit coefficient.
+    let term = |k: usize| {
+        let area = out[k]
+            .area()
+            .expect("a result of bounded operands is bounded");
+        let bound = g.clone() * (operands.clone() + l1_length(&curves_of(&out[k])));
+        (area, bound)
+    };
+    let ((m, bm), (j, bj), (d, bd), (s, bs)) = (term(0), term(1), term(4), term(5));
     let checks = [
         (
             "|A∧B| + |A∨B| − |A| − |B|",
             m.clone() + j - x.clone() - y.clone(),
-            2,
+            bm.clone() + bj,
         ),
-        ("|A∧B| + |A−B| − |A|", m.clone() + d - x.clone(), 2),
-        ("|A⊕B| + 2|A∧B| − |A| − |B|", s + int(2) * m - x - y, 3),
+        (
+            "|A∧B| + |A−B| − |A|",
+            m.clone() + d - x.clone(),
+            bm.clone() + bd,
+        ),
+        (
+            "|A⊕B| + 2|A∧B| − |A| − |B|",
+            s + int(2) * m - x - y,
+            bs + int(2) * bm,
+        ),
     ];
-    for (what, v, k) in checks {
-        let bound = int(k) * unit.clone();
+    for (what, v, bound) in checks {
         if v > bound || -v.clone() > bound {
             fail!(
                 input,
-                "area identity in float mode: {what} = {v}, beyond the contract's {bound} (g = {g:e})"
+                "area identity in float mode: {what} = {v}, beyond the contract's {bound} \
+                 (g = {g})"
             );
         }
     }
@@ -927,6 +943,23 @@ mod tests {
         assert_eq!(float_refusal_ok(&e, &edge, None), Some(false));
         let y = YinSet2::from_curves_with(square(1.0), Tolerance::new(2f64.powi(-51))).unwrap();
         float_accepted("square", &y, &edge, &"edge");
+    }
+
+    #[test]
+    fn a_feature_grown_to_a_pixel_is_within_the_bound_by_its_own_length() {
+        // A square of side 2⁻⁶ centred on the pixel (0, 1)²: its vertices round to the
+        // pixel's corners, so on the grid g = 1 it becomes the whole pixel.
+        let (lo, hi) = (0.5 - 2f64.powi(-7), 0.5 + 2f64.powi(-7));
+        let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+        let tiny = vec![vec![p(lo, lo), p(hi, lo), p(hi, hi), p(lo, hi)]];
+        let exact = YinSet2::from_curves(exact_curves(&tiny)).unwrap();
+        let length = l1_length(&exact_curves(&tiny));
+        let pixel = YinSet2::from_curves_with(square(1.0), Tolerance::new(1.0)).unwrap();
+        close_in_area("grown", &pixel, &exact, 1.0, &length, &"g = 1");
+        let finer = catch_unwind(AssertUnwindSafe(|| {
+            close_in_area("grown", &pixel, &exact, 0.1, &length, &"g = 0.1")
+        }));
+        assert!(finer.is_err(), "a pixel grown on a grid of 0.1 passed");
     }
 
     #[test]

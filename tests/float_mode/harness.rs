@@ -89,9 +89,14 @@ pub fn boundary_length<N: Num>(y: &YinSet2<N>) -> f64 {
 }
 
 /// The length scale L of the accuracy bound, defined here once: the total boundary length of
-/// the exact operands (one for the complement, two otherwise) plus that of the exact result.
-pub fn scale_length(a: &Exact, b: Option<&Exact>, exact_result: &Exact) -> f64 {
-    boundary_length(a) + b.map_or(0.0, boundary_length) + boundary_length(exact_result)
+/// the exact operands (one for the complement, two otherwise) plus those of the exact result
+/// and of the float result (a feature smaller than the grid may grow to a pixel, whose
+/// boundary only F has).
+pub fn scale_length(a: &Exact, b: Option<&Exact>, exact_result: &Exact, float: &Flt) -> f64 {
+    boundary_length(a)
+        + b.map_or(0.0, boundary_length)
+        + boundary_length(exact_result)
+        + boundary_length(float)
 }
 
 /// The exact area of the symmetric difference of `x` and `y`, by |x| + |y| − 2|x ∧ y| (for
@@ -153,7 +158,7 @@ pub fn compare(
             if exact.is_bounded() { "" } else { "un" }
         )
     })?;
-    let l = scale_length(a, op.binary().then_some(b), &exact);
+    let l = scale_length(a, op.binary().then_some(b), &exact, &float);
     // In rationals: ε · L under- or overflows f64 at extreme magnitudes.
     let bound =
         Rational::from_f64(eps).expect("finite ε") * Rational::from_f64(l).expect("finite L");
