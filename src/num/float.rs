@@ -1,5 +1,6 @@
 //! The float backend: `f64` coordinates with a run-time tolerance ε (seed 000 §5.2).
 
+use super::grid_orient::grid_orient3d;
 use super::{Literal, Num, NumError, Rational};
 use std::cmp::Ordering;
 use std::fmt;
@@ -222,7 +223,8 @@ pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orderin
 }
 
 /// The sign of det[b − a, c − a, d − a] for `f64` points, exactly — a static filter on the
-/// values ([`filtered`]), else [`exact_sign_f64`] — in the convention of [`Num::orient3d`].
+/// values ([`filtered`]), else in grid integers ([`grid_orient3d`]) where they fit, else
+/// [`exact_sign_f64`] — in the convention of [`Num::orient3d`].
 pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
     if d == a || d == b || d == c {
         // A repeated point (the common case of triangles sharing a corner): no volume.
@@ -239,6 +241,9 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
         + (uv.abs() + vu.abs()) * w[2].abs();
     let slack = underflow_slack([u[2], v[2], w[2]]);
     if let Some(sign) = filtered(-det, permanent, ORIENT3D_BOUND, slack) {
+        return sign;
+    }
+    if let Some(sign) = grid_orient3d(a, b, c, d) {
         return sign;
     }
     // Coordinates of magnitude in [2^-300, 2^300] (or 0) are multiples of 2^-352: every
@@ -266,9 +271,15 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
 const ORIENT3D_BOUND: f64 = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
 
 /// What an orient3d sum can lose beyond [`ORIENT3D_BOUND`]: a 2 × 2 minor whose products
-/// underflowed is off by up to 2^-1074, times its factor in `factors`.
+/// underflowed is off by up to 2^-1074, times its factor in `factors`. Taken as at least
+/// 2^-970: that much is under half an ulp of any bound [`filtered`] trusts (at least
+/// 2 · ORIENT3D_BOUND · FILTERED_FROM > 2^-880), so adding it changes nothing; and computed
+/// by two factors of 2^-535, so that no operand or result is subnormal (each a microcode
+/// assist on x86, which cost a quarter of a touching 3D meet's time).
 fn underflow_slack(factors: [f64; 3]) -> f64 {
-    (factors[0].abs() + factors[1].abs() + factors[2].abs()) * ldexp(1.0, -1070)
+    let sum = factors[0].abs() + factors[1].abs() + factors[2].abs();
+    let half = ldexp(1.0, -535);
+    sum.max(ldexp(1.0, 100)) * half * half
 }
 
 /// The plane through three `f64` points, prepared so that [`exact_orient3d_f64`] of many

@@ -11,6 +11,7 @@ mod big;
 mod float;
 #[cfg(feature = "gmp")]
 mod gmp;
+mod grid_orient;
 mod interval;
 mod literal;
 mod rational;
