@@ -240,9 +240,13 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
         + (wu.abs() + uw.abs()) * v[2].abs()
         + (uv.abs() + vu.abs()) * w[2].abs();
     let slack = underflow_slack([u[2], v[2], w[2]]);
-    if let Some(sign) = filtered(-det, permanent, ORIENT3D_BOUND, slack) {
-        return sign;
-    }
+    filtered(-det, permanent, ORIENT3D_BOUND, slack)
+        .unwrap_or_else(|| unfiltered_orient3d_f64(a, b, c, d))
+}
+
+/// [`exact_orient3d_f64`] without its static filter, for callers whose own filter failed:
+/// in grid integers where they fit, else [`exact_sign_f64`].
+fn unfiltered_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
     if let Some(sign) = grid_orient3d(a, b, c, d) {
         return sign;
     }
@@ -318,7 +322,7 @@ impl PlaneF64 {
             return Ordering::Equal;
         }
         self.certain_side(d)
-            .unwrap_or_else(|| exact_orient3d_f64(a, b, c, d))
+            .unwrap_or_else(|| unfiltered_orient3d_f64(a, b, c, d))
     }
 
     /// [`PlaneF64::side`] where the static filter is certain of it (one dot product), `None`
