@@ -460,6 +460,38 @@ fn locate_applies_eps_in_every_direction() {
     );
 }
 
+/// ops3_float found it (a tetrahedron's hole scaled by 2⁻⁹²⁶): at magnitudes where the
+/// `f64` products of a face's normal underflow or overflow, `locate` projected the face into a
+/// chart of the wrong orientation and missed a point lying on it. A tetrahedron with a slanted
+/// face, at magnitudes from the subnormals to 2¹⁰⁰⁰: float `locate` agrees with exact `locate`
+/// on the face, inside and outside.
+#[test]
+fn locate_on_a_slanted_face_at_every_magnitude() {
+    let tris = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]];
+    // Both orientations (a bounded set and its complement), so that one of them has a
+    // normal whose x is negative, which an underflowed normal (0, 0, 0) takes as positive.
+    let flipped = tris.map(|[a, b, c]| [a, c, b]);
+    let scales = [-1070, -1000, 0, 1000].map(|k| 2f64.powi(k));
+    for (s, tris) in scales.iter().flat_map(|&s| [(s, tris), (s, flipped)]) {
+        let v = [
+            [0.0, 0.0, 0.0],
+            [2.0, 2.0, 0.0],
+            [2.0, 0.0, 2.0],
+            [2.0, 0.0, 0.0],
+        ];
+        let (exact, float) = mesh(&v.map(|p| p.map(|x| x * s)), &tris);
+        // On the slanted face, the tetrahedron's centroid, and beyond the slanted face.
+        let probes = [[1.5, 1.0, 0.5], [1.5, 0.5, 0.5], [0.0, 1.0, 1.0]].map(|p| p.map(|x| x * s));
+        let f = |p: [f64; 3]| Point3::new(Float::new(p[0]), Float::new(p[1]), Float::new(p[2]));
+        let r = |x: f64| Rational::from_f64(x).expect("finite");
+        let e = |p: [f64; 3]| Point3::new(r(p[0]), r(p[1]), r(p[2]));
+        let want = exact.locate(&probes.map(e));
+        assert_eq!(want[0], Location::OnBoundary, "scale {s:e}");
+        assert_ne!(want[1], want[2], "scale {s:e}");
+        assert_eq!(float.locate(&probes.map(f)), want, "scale {s:e}");
+    }
+}
+
 /// The same mesh of ../shared/data/3d in both modes.
 fn data_pair(name: &str, eps: f64) -> (Y3, F3) {
     let text = std::fs::read_to_string(common::data_file_3d(name)).expect("readable");

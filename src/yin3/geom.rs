@@ -123,9 +123,16 @@ impl Chart {
         best.map(|(k, _, sign)| Chart::of_axis(k, sign))
     }
 
-    /// The chart of the plane of the triangle `abc`, in which it is counterclockwise.
+    /// The chart of the plane of the (non-degenerate) triangle `abc`, in which it is
+    /// counterclockwise: from its exact normal, or in float mode from the exact orientations
+    /// of its projections ([`Chart::of_f64_triangle`]), where the normal's `f64` products can
+    /// underflow or overflow to a wrong axis or sign.
     pub(crate) fn of_triangle<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Chart {
-        Chart::of_normal(&normal(a, b, c))
+        if N::EXACT {
+            return Chart::of_normal(&normal(a, b, c));
+        }
+        Chart::of_f64_triangle([a, b, c].map(|p| p.to_f64()))
+            .unwrap_or_else(|| Chart::of_normal(&normal(a, b, c)))
     }
 
     /// The image of `p`.
