@@ -25,11 +25,17 @@ fn odd_decode(v: f64) -> (i64, i32) {
 /// The coordinates as integers on the grid 2^low of their least odd-mantissa exponent
 /// (every coordinate is a multiple of it), if all lie below 2^[`BITS`] there.
 fn grid_integers<const K: usize>(values: [f64; K]) -> Option<[i64; K]> {
-    let decoded = values.map(|v| (v != 0.0).then(|| odd_decode(v)));
-    let low = decoded.iter().flatten().map(|&(_, e)| e).min().unwrap_or(0);
+    let mut decoded = [(0i64, 0i32); K];
+    let mut low = i32::MAX;
+    for (d, &v) in decoded.iter_mut().zip(&values) {
+        if v != 0.0 {
+            *d = odd_decode(v);
+            low = low.min(d.1);
+        }
+    }
     let mut out = [0i64; K];
-    for (o, d) in out.iter_mut().zip(decoded) {
-        if let Some((m, e)) = d {
+    for (o, &(m, e)) in out.iter_mut().zip(&decoded) {
+        if m != 0 {
             let shift = (e - low) as u32;
             let width = 64 - m.unsigned_abs().leading_zeros();
             if width + shift > BITS {
@@ -50,8 +56,11 @@ pub(crate) fn grid_orient3d(
     c: [f64; 3],
     d: [f64; 3],
 ) -> Option<Ordering> {
-    let all: [f64; 12] = std::array::from_fn(|k| [a, b, c, d][k / 3][k % 3]);
-    let n = grid_integers(all)?;
+    let [a0, a1, a2] = a;
+    let [b0, b1, b2] = b;
+    let [c0, c1, c2] = c;
+    let [d0, d1, d2] = d;
+    let n = grid_integers([a0, a1, a2, b0, b1, b2, c0, c1, c2, d0, d1, d2])?;
     let diff = |p: usize| [0, 1, 2].map(|k| n[3 * p + k] - n[k]);
     let (u, v, w) = (diff(1), diff(2), diff(3));
     let wide = |x: i64| i128::from(x);
