@@ -122,7 +122,7 @@ fn float_locate_far_from_a_sliver_hole() {
     );
 }
 
-/// ops_float, fuzz/seeds/ops/far_big_tiny_hole_grows_to_a_pixel: on a grid of g = 2.2·10¹²,
+/// ops_float, fuzz/seeds/ops/found_tiny_hole_grows_to_a_pixel: on a grid of g = 2.2·10¹²,
 /// an unbounded operand's hole of area 1505/46 centred near a pixel's corner rounds to a
 /// hole of one whole pixel (area g²), beyond g·L with L the input's and E's boundary length
 /// alone. Here the same in small numbers: the complement of a square of side 2⁻⁶ centred on
