@@ -518,10 +518,14 @@ impl Num for Rational {
     }
 
     fn to_f64(&self) -> f64 {
-        const EXACT: i64 = 1 << 53;
+        // At most 53 significant bits: exact as an f64 (every dyadic value read from an f64,
+        // whatever its power-of-two denominator, is such a pair).
+        let exact = |v: u64| v.leading_zeros() + v.trailing_zeros() >= 11;
         match &self.0 {
             // Both operands exact in f64: one correctly rounded division.
-            Repr::Small(n, d) if n.abs() <= EXACT && *d <= EXACT => *n as f64 / *d as f64,
+            Repr::Small(n, d) if exact(n.unsigned_abs()) && exact(d.unsigned_abs()) => {
+                *n as f64 / *d as f64
+            }
             _ => ToPrimitive::to_f64(self.big().as_ref()).unwrap_or(f64::NAN),
         }
     }
@@ -628,6 +632,14 @@ mod tests {
         );
     }
 
+    /// A numerator of 54 significant bits is not rounded before the division: (2⁵³ + 1) / 3 is
+    /// the integer 3002399751580331, which an f64 holds, while 2⁵³ / 3 rounds to …330.5.
+    #[test]
+    fn to_f64_rounds_once() {
+        let x = Rational::new(((1i64 << 53) + 1).into(), 3.into());
+        assert_eq!(Num::to_f64(&x), 3002399751580331.0);
+    }
+
     #[test]
     fn from_f64_is_lossless() {
         let x = Rational::from_f64(0.1).unwrap();
@@ -638,20 +650,22 @@ mod tests {
 
     proptest::proptest! {
         /// The exact value of an `f64` (small when it fits) is num-rational's, canonical form
-        /// included: on every bit pattern (subnormals and huge exponents), on numbers of
-        /// moderate size, where the small path applies, and on integers and powers of two
-        /// around 2^62, where it ends.
+        /// included, and converts back to the same `f64`: on every bit pattern (subnormals and
+        /// huge exponents), on numbers of moderate size and fractions with denominators up to
+        /// 2^70, where the small path applies and ends, and on integers and powers of two
+        /// around 2^62, where it ends for integers.
         #[test]
         fn from_float_is_the_exact_value(
             bits in proptest::num::u64::ANY, moderate in -1e6f64..1e6, shift in 0i32..70,
         ) {
             // Integers with up to 69 trailing zero bits: small up to 2^62, big from there.
             let round = moderate.trunc() * 2f64.powi(shift);
-            for v in [f64::from_bits(bits), moderate, round, 2f64.powi(shift), -2f64.powi(shift)] {
-                proptest::prop_assert_eq!(
-                    Rational::from_float(v),
-                    BigRational::from_float(v).map(Rational::from)
-                );
+            let fraction = moderate * 2f64.powi(-shift);
+            let values = [f64::from_bits(bits), moderate, round, fraction, 2f64.powi(shift)];
+            for v in values.into_iter().flat_map(|v| [v, -v]).filter(|v| v.is_finite()) {
+                let exact = Rational::from_float(v);
+                proptest::prop_assert_eq!(&exact, &BigRational::from_float(v).map(Rational::from));
+                proptest::prop_assert_eq!(exact.map(|r| Num::to_f64(&r)), Some(v));
             }
         }
     }
