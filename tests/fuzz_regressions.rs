@@ -122,15 +122,15 @@ fn float_locate_far_from_a_sliver_hole() {
     );
 }
 
-/// ops_float, fuzz/seeds/ops/found_tiny_hole_grows_to_a_pixel: on a grid of g = 2.2·10¹²,
-/// an unbounded operand's hole of area 1505/46 centred near a pixel's corner rounds to a
-/// hole of one whole pixel (area g²), beyond g·L with L the input's and E's boundary length
-/// alone. Here the same in small numbers: the complement of a square of side 2⁻⁶ centred on
-/// the pixel (0, 1)², on the grid g = 1. The hole is kept (never silently emptied) and
-/// area(F △ E) = 1 − 2⁻¹² is within g·L only with F's boundary length (4) in L — the
-/// README's contract.
+/// ops_float, fuzz/seeds/ops/found_tiny_hole_grows_to_a_grid_cell: on a grid of
+/// g = 2.2·10¹², an unbounded operand's hole of area 1505/46 centred near a pixel's corner
+/// rounds to a hole of one whole grid cell (area g²), beyond g·L with L the input's and E's
+/// boundary length alone. Here the same in small numbers: the complement of a square of side
+/// 2⁻⁶ centred on the cell (0, 1)² of the grid g = 1. The hole is kept (never silently
+/// emptied) and area(F △ E) = 1 − 2⁻¹² is within g·L only with F's boundary length (4) in
+/// L — the README's contract.
 #[test]
-fn float_tiny_hole_grows_to_a_pixel_within_the_contract() {
+fn float_tiny_hole_grows_to_a_grid_cell_within_the_contract() {
     let (lo, hi) = (0.5 - 2f64.powi(-7), 0.5 + 2f64.powi(-7));
     let tiny = vec![f(lo, lo), f(hi, lo), f(hi, hi), f(lo, hi)];
     let hole = YinSet2::from_curves_with(vec![tiny], Tolerance::new(1.0))
@@ -146,7 +146,7 @@ fn float_tiny_hole_grows_to_a_pixel_within_the_contract() {
         vec![Location::Outside],
         "{hole:?}"
     );
-    // F's hole is the pixel, which holds E's: area(F △ E) = 1 − (2⁻⁶)².
+    // F's hole is the cell, which holds E's: area(F △ E) = 1 − (2⁻⁶)².
     let grown = hole.complement().area().expect("bounded").get();
     assert_eq!(grown, 1.0, "{hole:?}");
     let sym_diff = grown - 2f64.powi(-12);

@@ -1002,15 +1002,16 @@ fn replay(corpus: &str, bytes: &[u8]) -> Result<(), String> {
 /// Inputs found by fuzzing, kept as seeds so that every run replays them first (each is also
 /// a regression test: tests/fuzz_regressions.rs, tests/float_mode3.rs).
 fn found(seeds: &mut Seeds) {
-    // ops_float, 2026-11-27: a tiny hole near a pixel corner on a grid of 2.2·10¹² grows to
-    // the whole pixel, within the accuracy bound only with the result's own length.
+    // ops_float, 2026-11-27: a tiny hole around a point halfway between grid points of
+    // 2.2·10¹² grows to the whole grid cell, within the accuracy bound only with the result's
+    // own length.
     let tiny_hole: &[u8] = &[
         0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0x01, 0x02, 0x12, 0x10, 0x04, 0x2d, 0x2f,
         0x3f, 0x41, 0x00, 0x01, 0x04, 0x40, 0xf8, 0xc9, 0xce, 0xf9, 0xff, 0xff, 0xff, 0x00, 0x00,
         0x00, 0x00, 0x00, 0x00, 0x00, 0x08, 0x02, 0xaa, 0xaa, 0xaa, 0xaa, 0xaa, 0x5d, 0xab, 0xff,
         0x3d, 0xa0, 0x92, 0xfc, 0x49, 0x68, 0xb1, 0x00, 0x00, 0x00, 0x00, 0x02, 0x12,
     ];
-    seeds.add("ops", "found_tiny_hole_grows_to_a_pixel", tiny_hole);
+    seeds.add("ops", "found_tiny_hole_grows_to_a_grid_cell", tiny_hole);
     // ops3_float, 2026-11-27: at a scale near 2⁻⁹²⁶, float locate missed a point lying on a
     // slanted face (its chart was taken from a normal whose f64 products underflowed).
     let slanted_face: &[u8] = &[

@@ -289,7 +289,7 @@ fn measure(set: &YinSet2<Rational>) -> (bool, Rational) {
 /// of F) in the form |area F − area E| ≤ g·(2·`length` + L_F), `length` the input rings' L¹
 /// length (which bounds the input's and E's) and L_F F's: a float set may lose or gain only
 /// what its grid allows, so a shape is never silently emptied (a feature smaller than the grid
-/// may grow to a pixel, whose boundary only F has); and F is bounded iff E is.
+/// may grow to a grid cell, whose boundary only F has); and F is bounded iff E is.
 fn close_in_area<D: Debug>(
     what: &str,
     f: &YinSet2<Float>,
@@ -946,20 +946,20 @@ mod tests {
     }
 
     #[test]
-    fn a_feature_grown_to_a_pixel_is_within_the_bound_by_its_own_length() {
-        // A square of side 2⁻⁶ centred on the pixel (0, 1)²: its vertices round to the
-        // pixel's corners, so on the grid g = 1 it becomes the whole pixel.
+    fn a_feature_grown_to_a_grid_cell_is_within_the_bound_by_its_own_length() {
+        // A square of side 2⁻⁶ centred on the cell (0, 1)² of the grid g = 1: its vertices
+        // round to the cell's corners, so it becomes the whole cell.
         let (lo, hi) = (0.5 - 2f64.powi(-7), 0.5 + 2f64.powi(-7));
         let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
         let tiny = vec![vec![p(lo, lo), p(hi, lo), p(hi, hi), p(lo, hi)]];
         let exact = YinSet2::from_curves(exact_curves(&tiny)).unwrap();
         let length = l1_length(&exact_curves(&tiny));
-        let pixel = YinSet2::from_curves_with(square(1.0), Tolerance::new(1.0)).unwrap();
-        close_in_area("grown", &pixel, &exact, 1.0, &length, &"g = 1");
+        let cell = YinSet2::from_curves_with(square(1.0), Tolerance::new(1.0)).unwrap();
+        close_in_area("grown", &cell, &exact, 1.0, &length, &"g = 1");
         let finer = catch_unwind(AssertUnwindSafe(|| {
-            close_in_area("grown", &pixel, &exact, 0.1, &length, &"g = 0.1")
+            close_in_area("grown", &cell, &exact, 0.1, &length, &"g = 0.1")
         }));
-        assert!(finer.is_err(), "a pixel grown on a grid of 0.1 passed");
+        assert!(finer.is_err(), "a cell grown on a grid of 0.1 passed");
     }
 
     #[test]

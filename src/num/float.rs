@@ -49,11 +49,12 @@ impl Float {
 ///   pass the exact validator). Against the exact result E of the same operation on the same
 ///   input values, area(F △ E) ≤ C · g · L ≤ C · ε · L with **C = 1**, L the total boundary
 ///   length of the operands plus those of E and of F (a feature much smaller than the grid
-///   around the centre of a pixel can round to the pixel's four corners and grow to the whole
-///   pixel, whose boundary only F has). C is measured, not proved: `tests/float_mode.rs`
-///   compares every operation with exact mode, and the largest area(F △ E) / (ε · L) over the
-///   11 135 comparisons of its default run is 0.22 (a complement of a jittered input). Betti
-///   numbers agree with exact mode when no feature of the input is thinner than g.
+///   around a point halfway between grid points can round to the four grid points around it
+///   and grow to a square of side g, whose boundary only F has). C is measured, not proved:
+///   `tests/float_mode.rs` compares every operation with exact mode, and the largest
+///   area(F △ E) / (ε · L) over the 11 135 comparisons of its default run is 0.22 (a
+///   complement of a jittered input). Betti numbers agree with exact mode when no feature of
+///   the input is thinner than g.
 /// * **Location.** [`crate::yin2::YinSet2::locate`] reports a point as on the boundary when
 ///   its distance to the boundary is at most ε, whatever the direction of the nearest edge;
 ///   otherwise inside or outside exactly.

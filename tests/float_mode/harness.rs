@@ -90,7 +90,7 @@ pub fn boundary_length<N: Num>(y: &YinSet2<N>) -> f64 {
 
 /// The length scale L of the accuracy bound, defined here once: the total boundary length of
 /// the exact operands (one for the complement, two otherwise) plus those of the exact result
-/// and of the float result (a feature smaller than the grid may grow to a pixel, whose
+/// and of the float result (a feature smaller than the grid may grow to a grid cell, whose
 /// boundary only F has).
 pub fn scale_length(a: &Exact, b: Option<&Exact>, exact_result: &Exact, float: &Flt) -> f64 {
     boundary_length(a)
