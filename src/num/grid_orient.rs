@@ -1,8 +1,9 @@
-//! The exact 3D orientation of `f64` points in fixed-width integers, where their coordinates
-//! are integers on one power-of-two grid: the fast exact stage behind the static filter of
-//! [`super::float::exact_orient3d_f64`] for the points a filter cannot decide — mostly points
-//! exactly on the plane, whose sign Shewchuk's adaptive predicate settles only at its last
-//! stage.
+//! `f64` values as integers on one power-of-two grid, and the exact 3D orientation of `f64`
+//! points computed on them in fixed-width integers: the fast exact stage behind the static
+//! filter of [`super::float::exact_orient3d_f64`] for the points a filter cannot decide —
+//! mostly points exactly on the plane, whose sign Shewchuk's adaptive predicate settles only
+//! at its last stage. The grid also serves exact rationals of `f64`s
+//! ([`super::Rational::from_float`]) and the 3D float meet's pierce points.
 
 use num_traits::Float as _;
 use std::cmp::Ordering;
@@ -13,7 +14,7 @@ use std::cmp::Ordering;
 const BITS: u32 = 60;
 
 /// The odd mantissa and exponent of a finite, nonzero `v`: v = m · 2^e with m odd.
-fn odd_decode(v: f64) -> (i64, i32) {
+pub(crate) fn odd_decode(v: f64) -> (i64, i32) {
     let (m, e, sign) = v.integer_decode();
     let zeros = m.trailing_zeros();
     (
@@ -22,21 +23,25 @@ fn odd_decode(v: f64) -> (i64, i32) {
     )
 }
 
-/// The coordinates as integers on the grid 2^low of their least odd-mantissa exponent
-/// (every coordinate is a multiple of it), if all lie below 2^[`BITS`] there.
+/// Finite `values` on their common power-of-two grid: each as its odd mantissa m (0 for 0)
+/// and a shift s, the value being m · 2^(low + s), with `low` the least exponent of the
+/// nonzero ones (0 if there are none).
+pub(crate) fn common_grid<const K: usize>(values: [f64; K]) -> ([(i64, u32); K], i32) {
+    let decoded = values.map(|v| if v == 0.0 { (0, 0) } else { odd_decode(v) });
+    let nonzero = decoded.iter().filter(|(m, _)| *m != 0);
+    let low = nonzero.map(|&(_, e)| e).min().unwrap_or(0);
+    (
+        decoded.map(|(m, e)| (m, if m == 0 { 0 } else { (e - low) as u32 })),
+        low,
+    )
+}
+
+/// The coordinates as integers on their [`common_grid`], if all lie below 2^[`BITS`] there.
 fn grid_integers<const K: usize>(values: [f64; K]) -> Option<[i64; K]> {
-    let mut decoded = [(0i64, 0i32); K];
-    let mut low = i32::MAX;
-    for (d, &v) in decoded.iter_mut().zip(&values) {
-        if v != 0.0 {
-            *d = odd_decode(v);
-            low = low.min(d.1);
-        }
-    }
+    let (parts, _) = common_grid(values);
     let mut out = [0i64; K];
-    for (o, &(m, e)) in out.iter_mut().zip(&decoded) {
+    for (o, (m, shift)) in out.iter_mut().zip(parts) {
         if m != 0 {
-            let shift = (e - low) as u32;
             let width = 64 - m.unsigned_abs().leading_zeros();
             if width + shift > BITS {
                 return None;

@@ -20,6 +20,7 @@ pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance, P
 pub use float::{Float, Tolerance, TooFine};
 #[cfg(feature = "gmp")]
 pub use gmp::GmpRational;
+pub(crate) use grid_orient::common_grid;
 pub(crate) use interval::Interval;
 pub use literal::Literal;
 pub use rational::Rational;

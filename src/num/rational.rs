@@ -1,6 +1,7 @@
 //! The default exact backend: rationals stored inline as two machine integers while they fit,
 //! as `num-rational`'s big rationals otherwise, compared through a floating-point filter.
 
+use super::grid_orient::odd_decode;
 use super::{
     big, exact_orient, exact_orient3d, exact_orient3d_f64, exact_orient_f64, filtered_orient,
     filtered_orient3d, Literal, Num, NumError,
@@ -198,14 +199,9 @@ impl Rational {
         // v = ±m·2^e with m odd, m < 2^53: small as m·2^e while that is below 2^62 (integers
         // such as grid coordinates, however many trailing zeros) or as m / 2^−e for e ≥ −61
         // (both terms below 2^62).
-        let bits = v.to_bits();
-        let raw_exp = ((bits >> 52) & 0x7ff) as i32;
-        let frac = bits & ((1 << 52) - 1);
-        if raw_exp != 0 && raw_exp != 0x7ff {
-            let m = frac | (1 << 52);
-            let tz = m.trailing_zeros();
-            let (m, e) = ((m >> tz) as i128, raw_exp - 1075 + tz as i32);
-            let m = if v < 0.0 { -m } else { m };
+        if v.is_finite() {
+            let (m, e) = odd_decode(v);
+            let m = i128::from(m);
             if e >= 0 && 128 - m.unsigned_abs().leading_zeros() as i32 + e <= 62 {
                 return Some(lowest(m << e, 1));
             }

@@ -30,11 +30,10 @@ use super::locate::{winding, TriBoxes};
 use super::set::{compact, Brep};
 use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
-use crate::num::{exact_orient3d_f64, Num, PlaneF64, Rational};
+use crate::num::{common_grid, exact_orient3d_f64, Num, PlaneF64, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use num_bigint::BigInt;
-use num_traits::Float as _;
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
@@ -537,19 +536,10 @@ fn straddling(tri: [usize; 3], sides: &[Ordering; 3]) -> [((usize, usize), Order
 /// V, in integers after scaling every coordinate by one power of two
 /// ([`Rational::section_point`]); the same value whichever triangle of the edge asks.
 fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
-    let parts = [u, v, tri[0], tri[1], tri[2]].map(|i| p[i].map(|x| x.integer_decode()));
-    let low = parts
-        .iter()
-        .flatten()
-        .filter(|(m, _, _)| *m != 0)
-        .map(|(_, e, _)| i32::from(*e))
-        .min()
-        .unwrap_or(0);
-    let int = |(m, e, sign): (u64, i16, i8)| match m {
-        0 => BigInt::ZERO,
-        _ => (BigInt::from(m) << (i32::from(e) - low)) * sign,
-    };
-    let [pu, pv, a, b, c] = parts.map(|q| q.map(int));
+    let corners = [u, v, tri[0], tri[1], tri[2]];
+    let (parts, low) = common_grid::<15>(std::array::from_fn(|k| p[corners[k / 3]][k % 3]));
+    let int = |(m, shift): (i64, u32)| BigInt::from(m) << shift;
+    let [pu, pv, a, b, c] = [0, 1, 2, 3, 4].map(|i| [0, 1, 2].map(|k| int(parts[3 * i + k])));
     let sub = |x: &[BigInt; 3], y: &[BigInt; 3]| [0, 1, 2].map(|k| &x[k] - &y[k]);
     let (ab, ac) = (sub(&b, &a), sub(&c, &a));
     let n = [
