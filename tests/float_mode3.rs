@@ -437,6 +437,84 @@ fn rounding_never_turns_a_sliver_inside_out() {
     }
 }
 
+/// The box [0,3]×[0,1]×[0,1] minus a prism across it whose edge dips `depth` below the box's
+/// floor, in exact and in float mode: two pieces, apart by about `depth`/2 along the floor.
+fn box_cut_by_a_prism(depth: f64) -> ((Y3, F3), (Y3, F3)) {
+    let (lo, hi) = ([0.0; 3], [3.0, 1.0, 1.0]);
+    let box_v = [
+        [lo[0], lo[1], lo[2]],
+        [hi[0], lo[1], lo[2]],
+        [hi[0], hi[1], lo[2]],
+        [lo[0], hi[1], lo[2]],
+        [lo[0], lo[1], hi[2]],
+        [hi[0], lo[1], hi[2]],
+        [hi[0], hi[1], hi[2]],
+        [lo[0], hi[1], hi[2]],
+    ];
+    let box_t = [
+        [0, 2, 1],
+        [0, 3, 2],
+        [4, 5, 6],
+        [4, 6, 7],
+        [0, 1, 5],
+        [0, 5, 4],
+        [1, 2, 6],
+        [1, 6, 5],
+        [2, 3, 7],
+        [2, 7, 6],
+        [3, 0, 4],
+        [3, 4, 7],
+    ];
+    // The cross-section (x, z) = (1, 2), (2, 2), (1.5, −depth), at y = −1 and y = 2.
+    let section = [[1.0, 2.0], [2.0, 2.0], [1.5, -depth]];
+    let prism_v: Vec<[f64; 3]> = [-1.0, 2.0]
+        .iter()
+        .flat_map(|&y| section.map(|[x, z]| [x, y, z]))
+        .collect();
+    let prism_t = [
+        [0, 2, 1],
+        [3, 4, 5],
+        [0, 1, 4],
+        [0, 4, 3],
+        [1, 2, 5],
+        [1, 5, 4],
+        [2, 0, 3],
+        [2, 3, 5],
+    ];
+    (mesh(&box_v, &box_t), mesh(&prism_v, &prism_t))
+}
+
+/// Rounding that makes two pieces touch keeps the pieces and their surfaces but not their
+/// complement's topology (ops3_float, 2026-11-27: a float join returned Betti (1, 1, 1) for
+/// the exact (1, 0, 2)). A prism dipping 2⁻⁶⁰ below the box's floor cuts it into two pieces
+/// whose floors end less than an ulp apart: the float difference must fail, since rounded they
+/// would share an edge and the complement's two cavities would become one. Dipping 2⁻²⁰, the
+/// float difference keeps both topologies.
+#[test]
+fn rounding_never_makes_pieces_touch() {
+    for (depth, representable) in [(2f64.powi(-60), false), (2f64.powi(-20), true)] {
+        let ((ea, fa), (eb, fb)) = box_cut_by_a_prism(depth);
+        assert!(ea.volume().is_some_and(|v| v.sign() == Ordering::Greater));
+        assert!(eb.volume().is_some_and(|v| v.sign() == Ordering::Greater));
+        let e = ea.difference(&eb);
+        assert_eq!((e.betti().b0, e.betti().b1, e.betti().b2), (2, 0, 0));
+        let e_complement = e.complement().betti();
+        assert_eq!(
+            (e_complement.b0, e_complement.b1, e_complement.b2),
+            (1, 0, 2)
+        );
+        match (fa.try_difference(&fb), representable) {
+            (Ok(f), true) => {
+                f.validate().expect("valid");
+                assert_eq!(f.betti(), e.betti());
+                assert_eq!(f.complement().betti(), e_complement);
+            }
+            (Err(Yin3Error::Unrepresentable(_)), false) => {}
+            (r, _) => panic!("depth {depth:e}: {:?}", r.map(|f| f.complement().betti())),
+        }
+    }
+}
+
 /// A point within ε of a face is on the boundary, in every axis direction; beyond ε it is
 /// inside or outside exactly.
 #[test]

@@ -1020,6 +1020,13 @@ fn found(seeds: &mut Seeds) {
         0x14, 0x00, 0x80,
     ];
     seeds.add("ops3", "found_tiny_locate_on_a_slanted_face", slanted_face);
+    // ops3_float, 2026-11-27: two pieces of A' ∧ B' apart by less than an ulp touched when
+    // rounded; the float join kept the pieces' topology but not its own.
+    let pieces_touch: &[u8] = &[
+        0x47, 0x01, 0x29, 0x01, 0x00, 0x52, 0x00, 0x00, 0x02, 0x34, 0x0d, 0x69, 0x00, 0x00, 0x02,
+        0x34, 0x0d, 0x69, 0x00, 0x00, 0x41, 0x87, 0x31, 0x06, 0x3a, 0x00,
+    ];
+    seeds.add("ops3", "found_pieces_rounded_to_touch", pieces_touch);
 }
 
 fn main() {

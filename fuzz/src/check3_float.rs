@@ -410,13 +410,12 @@ pub fn ops3_float(input: &Ops3Input) {
 
 #[cfg(test)]
 mod tests {
-    /// ops3_float, 2026-11-27, a kernel bug not fixed yet (it reproduces at 3acc3d0): A the
-    /// complement of a rotated unit box, B a rotated tetrahedron, both rounded and scaled by
-    /// 2⁶; float A ∨ B returns `Ok` with Betti numbers (1, 1, 1) where the exact join has
-    /// (1, 0, 2), so the rounded result's topology check let a wrong topology through. Run
-    /// with `cargo test --manifest-path fuzz/Cargo.toml -- --ignored`.
+    /// ops3_float, 2026-11-27: A the complement of a rotated unit box, B a rotated
+    /// tetrahedron, both rounded and scaled by 2⁶; float A ∨ B returned `Ok` with Betti numbers
+    /// (1, 1, 1) where the exact join has (1, 0, 2): the two pieces of A' ∧ B', apart by less
+    /// than an ulp, touched when rounded, and the topology check compared the pieces but not
+    /// their complement. Float mode must keep both or refuse (`Unrepresentable`).
     #[test]
-    #[ignore = "kernel bug: a float join keeps a wrong topology (fuzz/README.md)"]
     fn float_join_of_a_box_complement_and_a_tetrahedron_keeps_its_topology() {
         let bytes = [
             0x47, 0x01, 0x29, 0x01, 0x00, 0x52, 0x00, 0x00, 0x02, 0x34, 0x0d, 0x69, 0x00, 0x00,

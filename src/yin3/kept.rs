@@ -8,10 +8,19 @@ use super::glue::corner_cycles;
 use super::set::Brep;
 use crate::num::Num;
 
-/// What rounding must keep of a set: boundedness, the Betti numbers, and each glued surface's
-/// orientation, genus and depth in the Hasse diagram (seed 003 Def. 7.3, 7.6), sorted.
+/// What rounding must keep of a set: the [`Invariants`] of the set and of its complement. The
+/// set's alone do not fix the complement's: two pieces that rounding makes touch in two places
+/// are still two pieces with the same surfaces, while their complement gains a tunnel.
 #[derive(Debug, PartialEq)]
 pub(crate) struct Topology {
+    set: Invariants,
+    complement: Invariants,
+}
+
+/// Boundedness, the Betti numbers, and each glued surface's orientation, genus and depth in the
+/// Hasse diagram (seed 003 Def. 7.3, 7.6), sorted.
+#[derive(Debug, PartialEq)]
+struct Invariants {
     bounded: bool,
     betti: Betti3,
     surfaces: Vec<(bool, usize, usize)>,
@@ -20,6 +29,16 @@ pub(crate) struct Topology {
 impl Topology {
     /// The topology of the set bounded by `b`.
     pub(crate) fn of<N: Num>(b: &Brep<N>) -> Topology {
+        Topology {
+            set: Invariants::of(b),
+            complement: Invariants::of(&b.complement()),
+        }
+    }
+}
+
+impl Invariants {
+    /// The invariants of the set bounded by `b`.
+    fn of<N: Num>(b: &Brep<N>) -> Invariants {
         let depth = |mut s: usize| {
             let mut d = 0;
             while let Some(p) = b.parent[s] {
@@ -31,7 +50,7 @@ impl Topology {
             .map(|(s, g)| (g.positive, g.genus, depth(s)))
             .collect();
         surfaces.sort_unstable();
-        Topology {
+        Invariants {
             bounded: b.bounded,
             betti: b.betti(),
             surfaces,
@@ -40,6 +59,12 @@ impl Topology {
 }
 
 impl std::fmt::Display for Topology {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(f, "{}; complement {}", self.set, self.complement)
+    }
+}
+
+impl std::fmt::Display for Invariants {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
         let Betti3 { b0, b1, b2 } = self.betti;
         let pos = self.surfaces.iter().filter(|s| s.0).count();
@@ -58,10 +83,11 @@ const U: f64 = f64::EPSILON / 2.0;
 /// True only if the rounded boundary `b` — the exact boundary's very triangles, each vertex
 /// moved to its nearest `f64` — has the exact boundary's [`Topology`]. Sufficient: every edge
 /// has two fins and every vertex one corner cycle, so the boundary is disjoint closed
-/// surfaces, and the set's topology is their orientations and nesting; each surface's signed
-/// volume (positive iff it is positively oriented, Def. 7.3) is farther from 0 than rounding
-/// and the `f64` sum can move it; and no two surfaces' boxes come within the rounding of each
-/// other, so no surface is nested in another, exactly or rounded.
+/// surfaces, and the topology of the set and of its complement is their orientations and
+/// nesting; each surface's signed volume (positive iff it is positively oriented, Def. 7.3)
+/// is farther from 0 than rounding and the `f64` sum can move it; and no two surfaces' boxes
+/// come within the rounding of each other, so no surface is nested in another or touches it,
+/// exactly or rounded.
 pub(crate) fn provably_kept<N: Num>(b: &Brep<N>) -> bool {
     if b.table.fins.iter().any(|f| f.len() != 2) {
         return false;

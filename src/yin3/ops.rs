@@ -3,7 +3,7 @@
 
 use super::error::Yin3Error;
 use super::float::rounded_exact;
-use super::set::{Brep, Repr3, YinSet3};
+use super::set::{Repr3, YinSet3};
 use crate::num::Num;
 use rayon::prelude::*;
 use std::ops::{BitAnd, BitOr, BitXor, Not, Sub};
@@ -15,12 +15,7 @@ impl<N: Num> YinSet3<N> {
         match &self.repr {
             Repr3::Empty => YinSet3::full().with_ctx(self.ctx),
             Repr3::Full => YinSet3::empty().with_ctx(self.ctx),
-            Repr3::Brep(b) => {
-                let tris = b.tris.iter().map(|&[p, q, r]| [p, r, q]).collect();
-                let brep = Brep::assemble(b.points.clone(), tris)
-                    .unwrap_or_else(|e| panic!("the reversed boundary of a Yin set is one: {e}"));
-                YinSet3::from_brep(brep, self.ctx)
-            }
+            Repr3::Brep(b) => YinSet3::from_brep(b.complement(), self.ctx),
         }
     }
 

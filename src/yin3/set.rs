@@ -140,6 +140,14 @@ impl<N: Num> Brep<N> {
         }
     }
 
+    /// The boundary of the complement (seed 000 Def. 4.4 in 3D): every triangle reversed and
+    /// the glued surfaces regrouped.
+    pub(crate) fn complement(&self) -> Brep<N> {
+        let tris = self.tris.iter().map(|&[p, q, r]| [p, r, q]).collect();
+        Brep::assemble(self.points.clone(), tris)
+            .unwrap_or_else(|e| panic!("the reversed boundary of a Yin set is one: {e}"))
+    }
+
     /// The Betti numbers of the set it bounds (DESIGN-3D §2.12), computed once.
     pub(crate) fn betti(&self) -> Betti3 {
         *self.betti.get_or_init(|| {
