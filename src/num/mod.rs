@@ -14,6 +14,7 @@ mod gmp;
 mod grid_orient;
 mod interval;
 mod literal;
+mod quotient;
 mod rational;
 
 pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance, PlaneF64};

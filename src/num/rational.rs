@@ -2,6 +2,7 @@
 //! as `num-rational`'s big rationals otherwise, compared through a floating-point filter.
 
 use super::grid_orient::odd_decode;
+use super::quotient::{nearest_f64, Leading};
 use super::{
     big, exact_orient, exact_orient3d, exact_orient3d_f64, exact_orient_f64, filtered_orient,
     filtered_orient3d, Literal, Num, NumError,
@@ -522,7 +523,30 @@ impl Num for Rational {
             Repr::Small(n, d) if exact(n.unsigned_abs()) && exact(d.unsigned_abs()) => {
                 *n as f64 / *d as f64
             }
-            _ => ToPrimitive::to_f64(self.big().as_ref()).unwrap_or(f64::NAN),
+            Repr::Small(0, _) => 0.0,
+            // Otherwise from the leading bits where they settle it, else one exact division.
+            repr => {
+                let (negative, n, d) = match repr {
+                    Repr::Small(n, d) => (
+                        (*n < 0) != (*d < 0),
+                        Leading::of_u64(n.unsigned_abs()),
+                        Leading::of_u64(d.unsigned_abs()),
+                    ),
+                    Repr::Big(b) => {
+                        let (n, d) = (b.value.numer(), b.value.denom());
+                        (
+                            n.is_negative() != d.is_negative(),
+                            Leading::of_big(n.magnitude()),
+                            Leading::of_big(d.magnitude()),
+                        )
+                    }
+                };
+                match nearest_f64(n, d) {
+                    Some(v) if negative => -v,
+                    Some(v) => v,
+                    None => ToPrimitive::to_f64(self.big().as_ref()).unwrap_or(f64::NAN),
+                }
+            }
         }
     }
 
@@ -634,6 +658,23 @@ mod tests {
     fn to_f64_rounds_once() {
         let x = Rational::new(((1i64 << 53) + 1).into(), 3.into());
         assert_eq!(Num::to_f64(&x), 3002399751580331.0);
+    }
+
+    proptest::proptest! {
+        /// `to_f64` is num-rational's correctly rounded value, both signs, for small fractions
+        /// with more than 53 significant bits and for big ones of up to 300 bits a side.
+        #[test]
+        fn to_f64_is_the_nearest_f64(
+            n in proptest::num::i64::ANY, d in 1i64..i64::MAX, k in 0u32..240, j in 0u32..240,
+        ) {
+            for (n, d) in [
+                (BigInt::from(n >> 2), BigInt::from(d >> 2 | 1)),
+                ((BigInt::from(n) << k) + 1, (BigInt::from(d) << j) + 3),
+            ] {
+                let reference = ToPrimitive::to_f64(&BigRational::new(n.clone(), d.clone()));
+                proptest::prop_assert_eq!(Some(Num::to_f64(&Rational::new(n, d))), reference);
+            }
+        }
     }
 
     #[test]
