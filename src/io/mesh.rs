@@ -6,7 +6,7 @@ use super::decimal::exact_text;
 use super::ParseError;
 use crate::kernel::Point3;
 use crate::num::Num;
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 use std::fmt::Write;
 
 /// A polygon mesh as a file gives it: vertices and faces (0-based vertex indices, any number

@@ -2,8 +2,8 @@
 
 use crate::kernel::{on_closed_segment, orient, BBox, Point};
 use crate::num::Num;
+use foldhash::HashSet;
 use std::cmp::Ordering;
-use std::collections::HashSet;
 
 /// An oriented Jordan polygon: its vertices in order, the edge from the last back to the first
 /// implied. Positively oriented (counterclockwise) curves have their bounded region on the left.
@@ -174,6 +174,7 @@ fn canonical_rotation<N: Num>(v: &mut [Point<N>]) {
 mod tests {
     use super::*;
     use crate::num::Rational;
+    use foldhash::HashSetExt;
 
     fn pts(c: &[(i64, i64)]) -> Vec<Point<Rational>> {
         c.iter().map(|&(x, y)| Point::int(x, y)).collect()

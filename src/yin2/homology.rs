@@ -5,7 +5,7 @@ use super::set::YinSet2;
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::union_find::UnionFind;
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 
 /// The ranks of the singular homology groups H₀ and H₁ of a Yin set as a topological space.
 ///

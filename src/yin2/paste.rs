@@ -4,7 +4,7 @@ use super::error::YinError;
 use super::set::{Spadjor, YinSet2};
 use crate::kernel::{cmp_clockwise_from, Point};
 use crate::num::Num;
-use std::collections::{HashMap, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet};
 
 /// Jordan curves as vertex cycles, and the touching points among their vertices.
 type Loops<N> = (Vec<Vec<Point<N>>>, HashSet<Point<N>>);

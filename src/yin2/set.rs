@@ -5,7 +5,7 @@ use super::hasse::{atoms, parents, Atom, Betti};
 use super::locate::{locate_within, Location};
 use crate::kernel::{BBox, Point};
 use crate::num::Num;
-use std::collections::HashSet;
+use foldhash::HashSet;
 use std::hash::{Hash, Hasher};
 
 /// A 2D Yin set, stored as its unique boundary representation (seed 000 Thm 3.21): 0̂ (∅),

@@ -8,8 +8,8 @@ use super::snap::{inside_set, regularize};
 use crate::kernel::{cmp_clockwise_from, BBox, Contact, Point};
 use crate::num::{Float, Num, Rational};
 use crate::union_find::UnionFind;
+use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use std::cmp::Ordering;
-use std::collections::{HashMap, HashSet};
 
 impl<N: Num> YinSet2<N> {
     /// The Yin set bounded by `curves` (each a vertex cycle; a repeated closing vertex is

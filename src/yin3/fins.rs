@@ -3,8 +3,8 @@
 
 use crate::kernel::{orient3d, Point3};
 use crate::num::Num;
+use foldhash::{HashMap, HashMapExt};
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 /// A triangle seen from one of its edges (a "fin" of the edge).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

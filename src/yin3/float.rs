@@ -14,7 +14,7 @@ use super::transversal::{transversal_meet, Transversal};
 use super::validate::{check_windings, conforming_after_moves, revalidate};
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
-use std::collections::{HashMap, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet};
 
 /// The meet of two float sets under the combined context `ctx` (module docs): the transversal
 /// meet where it applies, else the general exact meet, rounded.

@@ -13,8 +13,8 @@ use super::set::{Brep, YinSet3};
 use crate::kernel::Point3;
 use crate::num::Num;
 use crate::union_find::UnionFind;
+use foldhash::{HashMap, HashMapExt};
 use std::cell::OnceCell;
-use std::collections::HashMap;
 
 /// Where a piece of one operand lies relative to the other operand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
