@@ -2,7 +2,7 @@
 //! R2A-a/b) and Betti numbers (seed 000 Cor. 3.14).
 
 use super::curve::Curve;
-use super::locate::{locate_in_edges, Location};
+use super::locate::{locate_by_crossings, locate_in_edges, Location};
 use crate::kernel::{BBox, Point};
 use crate::num::Num;
 
@@ -41,6 +41,10 @@ impl Betti {
     }
 }
 
+/// Up to this many curves to locate inside one curve, each is located by one pass over its
+/// edges rather than by a sweep of them.
+const FEW_QUERIES: usize = 16;
+
 /// Parent of each curve in the Hasse diagram of inclusion (seed 002 Alg. 3): the smallest curve
 /// whose bounded region contains it. Curves must be pairwise almost disjoint with every touching
 /// point a vertex of each curve through it. The curves containing a curve form a chain, so the
@@ -72,7 +76,13 @@ pub(crate) fn parents<N: Num>(curves: &[Curve<N>], ctx: &N::Ctx) -> Vec<Option<u
             .edges()
             .map(|(a, b)| if ccw { (a, b) } else { (b, a) })
             .collect();
-        let located = locate_in_edges(&edges, false, &queries, ctx);
+        let located = if queries.len() <= FEW_QUERIES {
+            (queries.iter())
+                .map(|q| locate_by_crossings(&edges, q, ctx))
+                .collect()
+        } else {
+            locate_in_edges(&edges, false, &queries, ctx)
+        };
         for (&j, loc) in candidates.iter().zip(located) {
             if loc == Location::Inside {
                 containing[j].push(i);
