@@ -65,13 +65,11 @@ impl FinTable {
     }
 }
 
-/// The partner of fin `i` among `fins` (sorted counterclockwise, orientations alternating):
-/// the +n side of a forward fin is counterclockwise from it (DESIGN-3D §2.6).
-pub(crate) fn partner_in(fins: &[Fin], i: usize, pairing: Pairing) -> usize {
-    let m = fins.len();
-    let next = (i + 1) % m;
-    let prev = (i + m - 1) % m;
-    match (pairing, fins[i].forward) {
+/// The partner of `fin` in `pairing`, given the fins `prev` and `next` to it in the
+/// counterclockwise order (orientations alternating): the +n side of a forward fin is
+/// counterclockwise from it (DESIGN-3D §2.6).
+pub(crate) fn partner(fin: Fin, pairing: Pairing, prev: usize, next: usize) -> usize {
+    match (pairing, fin.forward) {
         (Pairing::Inside, true) | (Pairing::Outside, false) => prev,
         (Pairing::Inside, false) | (Pairing::Outside, true) => next,
     }
@@ -157,7 +155,7 @@ mod tests {
         assert_eq!(order, vec![2, 5, 4, 3]);
         // Fin at angle 0 runs forward: its +n side is counterclockwise, so its Inside partner
         // is the previous fin (at 270°) and its Outside partner the next (at 90°).
-        assert_eq!(partner_in(&fins, 0, Pairing::Inside), 3);
-        assert_eq!(partner_in(&fins, 0, Pairing::Outside), 1);
+        assert_eq!(partner(fins[0], Pairing::Inside, 3, 1), 3);
+        assert_eq!(partner(fins[0], Pairing::Outside, 3, 1), 1);
     }
 }

@@ -5,7 +5,7 @@
 //! vertex alone. GS.1 joins triangles across the pairing that locally bounds the set; GS.2
 //! splits each resulting P_GS by the other pairing restricted to its own fins.
 
-use super::fins::{partner_in, Fin, FinTable, Pairing};
+use super::fins::{partner, Fin, FinTable, Pairing};
 use crate::union_find::UnionFind;
 
 impl Pairing {
@@ -28,26 +28,14 @@ pub(crate) fn pair_fins(
     mut f: impl FnMut(Fin, usize, Fin),
 ) {
     for (e, fins) in table.fins.iter().enumerate() {
-        match label {
-            None => {
-                for (i, fin) in fins.iter().enumerate() {
-                    f(*fin, e, fins[partner_in(fins, i, pairing)]);
-                }
-            }
-            Some(label) => {
-                let mut groups: Vec<(usize, Vec<Fin>)> = Vec::new();
-                for fin in fins {
-                    match groups.iter_mut().find(|(l, _)| *l == label[fin.tri]) {
-                        Some((_, g)) => g.push(*fin),
-                        None => groups.push((label[fin.tri], vec![*fin])),
-                    }
-                }
-                for (_, g) in &groups {
-                    for (i, fin) in g.iter().enumerate() {
-                        f(*fin, e, g[partner_in(g, i, pairing)]);
-                    }
-                }
-            }
+        // The cyclic order, restricted to one label when labels are given: the nearest fins
+        // of the same label before and after each fin (the fin itself if it is alone).
+        let m = fins.len();
+        for (i, fin) in fins.iter().enumerate() {
+            let same = |j: &usize| label.is_none_or(|l| l[fins[*j].tri] == l[fin.tri]);
+            let next = (1..=m).map(|k| (i + k) % m).find(same).unwrap_or(i);
+            let prev = (1..=m).map(|k| (i + m - k) % m).find(same).unwrap_or(i);
+            f(*fin, e, fins[partner(*fin, pairing, prev, next)]);
         }
     }
 }
