@@ -440,31 +440,13 @@ fn rounding_never_turns_a_sliver_inside_out() {
 /// The box [0,3]×[0,1]×[0,1] minus a prism across it whose edge dips `depth` below the box's
 /// floor, in exact and in float mode: two pieces, apart by about `depth`/2 along the floor.
 fn box_cut_by_a_prism(depth: f64) -> ((Y3, F3), (Y3, F3)) {
-    let (lo, hi) = ([0.0; 3], [3.0, 1.0, 1.0]);
-    let box_v = [
-        [lo[0], lo[1], lo[2]],
-        [hi[0], lo[1], lo[2]],
-        [hi[0], hi[1], lo[2]],
-        [lo[0], hi[1], lo[2]],
-        [lo[0], lo[1], hi[2]],
-        [hi[0], lo[1], hi[2]],
-        [hi[0], hi[1], hi[2]],
-        [lo[0], hi[1], hi[2]],
-    ];
-    let box_t = [
-        [0, 2, 1],
-        [0, 3, 2],
-        [4, 5, 6],
-        [4, 6, 7],
-        [0, 1, 5],
-        [0, 5, 4],
-        [1, 2, 6],
-        [1, 6, 5],
-        [2, 3, 7],
-        [2, 7, 6],
-        [3, 0, 4],
-        [3, 4, 7],
-    ];
+    let f = |v: [f64; 3]| Point3::new(Float::new(v[0]), Float::new(v[1]), Float::new(v[2]));
+    let (corners, quads) = cuboid(&f([0.0; 3]), &f([3.0, 1.0, 1.0]));
+    let box_v: Vec<[f64; 3]> = corners.iter().map(|p| p.to_f64()).collect();
+    let box_t: Vec<[usize; 3]> = quads
+        .iter()
+        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+        .collect();
     // The cross-section (x, z) = (1, 2), (2, 2), (1.5, −depth), at y = −1 and y = 2.
     let section = [[1.0, 2.0], [2.0, 2.0], [1.5, -depth]];
     let prism_v: Vec<[f64; 3]> = [-1.0, 2.0]
