@@ -123,12 +123,12 @@ fn float_locate_far_from_a_sliver_hole() {
 }
 
 /// ops_float, fuzz/seeds/ops/found_tiny_hole_grows_to_a_grid_cell: on a grid of
-/// g = 2.2·10¹², an unbounded operand's hole of area 1505/46 centred near a pixel's corner
-/// rounds to a hole of one whole grid cell (area g²), beyond g·L with L the input's and E's
-/// boundary length alone. Here the same in small numbers: the complement of a square of side
-/// 2⁻⁶ centred on the cell (0, 1)² of the grid g = 1. The hole is kept (never silently
-/// emptied) and area(F △ E) = 1 − 2⁻¹² is within g·L only with F's boundary length (4) in
-/// L — the README's contract.
+/// g = 2.2·10¹², an unbounded operand's hole of area 1505/46 centred near a point halfway
+/// between grid points rounds to a hole of one whole grid cell (area g²), beyond g·L with L
+/// the input's and E's boundary length alone. Here the same in small numbers: the complement
+/// of a square of side 2⁻⁶ centred on the cell (0, 1)² of the grid g = 1. The hole is kept
+/// (never silently emptied) and area(F △ E) = 1 − 2⁻¹² is within g·L only with F's boundary
+/// length (4) in L — the README's contract.
 #[test]
 fn float_tiny_hole_grows_to_a_grid_cell_within_the_contract() {
     let (lo, hi) = (0.5 - 2f64.powi(-7), 0.5 + 2f64.powi(-7));

@@ -419,13 +419,11 @@ mod tests {
     /// tetrahedron, both rounded and scaled by 2⁶; float A ∨ B returned `Ok` with Betti numbers
     /// (1, 1, 1) where the exact join has (1, 0, 2): the two pieces of A' ∧ B', apart by less
     /// than an ulp, touched when rounded, and the topology check compared the pieces but not
-    /// their complement. Float mode must keep both or refuse (`Unrepresentable`).
+    /// their complement. Float mode must keep both or refuse (`Unrepresentable`). The input is
+    /// the seed that examples/gen_seeds.rs writes from it.
     #[test]
     fn float_join_of_a_box_complement_and_a_tetrahedron_keeps_its_topology() {
-        let bytes = [
-            0x47, 0x01, 0x29, 0x01, 0x00, 0x52, 0x00, 0x00, 0x02, 0x34, 0x0d, 0x69, 0x00, 0x00,
-            0x02, 0x34, 0x0d, 0x69, 0x00, 0x00, 0x41, 0x87, 0x31, 0x06, 0x3a, 0x00,
-        ];
-        super::ops3_float(&crate::input::decode(&bytes).expect("decodes"));
+        let bytes = include_bytes!("../seeds/ops3/found_pieces_rounded_to_touch");
+        super::ops3_float(&crate::input::decode(bytes).expect("decodes"));
     }
 }

@@ -92,6 +92,15 @@ mod tests {
         r.to_f64().expect("a finite quotient")
     }
 
+    /// The integer whose 64-bit digits, least significant first, are `digits`.
+    fn from_digits(digits: &[u64]) -> BigUint {
+        let halves: Vec<u32> = digits
+            .iter()
+            .flat_map(|&x| [x as u32, (x >> 32) as u32])
+            .collect();
+        BigUint::from_slice(&halves)
+    }
+
     fn leading(x: &BigUint) -> Leading {
         match x.to_u64() {
             Some(v) => Leading::of_u64(v),
@@ -154,9 +163,7 @@ mod tests {
         fn leading_bits_are_the_shifted_integer(
             digits in proptest::collection::vec(proptest::num::u64::ANY, 1..10),
         ) {
-            let x = BigUint::from_slice(
-                &digits.iter().flat_map(|&v| [v as u32, (v >> 32) as u32]).collect::<Vec<u32>>(),
-            );
+            let x = from_digits(&digits);
             proptest::prop_assume!(x.bits() > 0);
             let l = Leading::of_big(&x);
             let shifted = match x.bits() {
@@ -180,11 +187,7 @@ mod tests {
             nudge in -(1i64 << 13)..=(1 << 13),
             scale in -1100i64..1100,
         ) {
-            let big = |digits: &[u64]| {
-                BigUint::from_slice(&digits.iter().flat_map(|&x| [x as u32, (x >> 32) as u32])
-                    .collect::<Vec<u32>>())
-            };
-            let (n, d) = (big(&n_digits), big(&d_digits) | BigUint::from(1u32));
+            let (n, d) = (from_digits(&n_digits), from_digits(&d_digits) | BigUint::from(1u32));
             proptest::prop_assume!(n.bits() > 0);
             let mut cases = vec![(n.clone(), d.clone())];
             // (m + 1/2 + nudge·2⁻²¹)·2^scale: near the midpoint after the 53-bit m.
