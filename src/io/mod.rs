@@ -27,7 +27,7 @@ pub mod scene3;
 pub mod stl;
 pub mod svg;
 #[cfg(test)]
-mod testdata;
+pub(crate) mod testdata;
 pub mod wkb;
 pub mod wkt;
 pub mod yin2_text;

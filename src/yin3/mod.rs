@@ -5,6 +5,7 @@
 mod arrange;
 mod betti;
 mod canonical;
+mod contact;
 mod error;
 mod fins;
 mod float;

@@ -1,14 +1,18 @@
 //! The meet of two float sets whose boundaries cross transversally (seed 004 steps 1–5 for the
-//! generic case; README, "3D float mode"): every pair of triangles of different operands either
-//! misses or crosses properly — no vertex on the other's plane where they meet, no edge through
-//! the other's edge. Then everything the general arrangement decides with constructed points
-//! is decided from exact orientations of the `f64` input vertices:
+//! generic case; README, "3D float mode"): every pair of triangles of different operands
+//! misses, crosses along a segment whose inside runs through both triangles' insides, or
+//! touches in a shared corner ([`super::contact`]) — no vertex on the other's plane but a shared
+//! corner, no triangles crossing along an edge. Then everything the general arrangement decides
+//! with constructed points is decided from exact orientations of the `f64` input vertices:
 //! - each end of a crossing segment is where an edge of one operand pierces a triangle of the
-//!   other, named by that (edge, triangle) pair and constructed exactly once;
-//! - a pierce point lies on the edge's triangles and in the pierced triangle, and nowhere else;
+//!   other, where an edge of one crosses an edge of the other, or a shared corner; each
+//!   constructed point is named by what defines it and constructed exactly once;
+//! - a pierce point lies on the edge's triangles and in the pierced triangle, crossing edges'
+//!   point on both edges' triangles, and nowhere else;
 //! - membership is constant on patches (pieces of one operand joined across edges that are not
 //!   crossing segments) and flips across every crossing segment, so one ray per connected
-//!   surface decides every patch.
+//!   surface, from an input vertex that is not a shared corner, decides every patch; shared
+//!   corners become one point in the meet.
 //!
 //! Where no pair meets at all, each glued surface lies wholly inside or outside the other
 //! operand, and one ray per glued surface decides it ([`Transversal::Apart`]).
@@ -24,13 +28,13 @@
 //! the exact meet either way.
 
 use super::arrange::retriangulate;
+use super::contact::{contact, key, Contact, Edge, End};
 use super::float::exact_points;
 use super::geom::Chart;
 use super::locate::{winding, TriBoxes};
 use super::set::{compact, Brep};
-use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
-use crate::num::{common_grid, exact_orient3d_f64, Num, PlaneF64, Rational};
+use crate::num::{common_grid, Num, PlaneF64, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use num_bigint::BigInt;
@@ -38,11 +42,65 @@ use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
 use std::cell::{Cell, OnceCell};
-use std::cmp::Ordering::{self, Equal};
 use std::sync::OnceLock;
 
-/// Where an edge `(u, v)` (global point indices, u < v) pierces triangle `tri` (global index).
-type Pierce = ((usize, usize), usize);
+/// A constructed point where the boundaries meet, by what defines it ([`End`]).
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+enum Site {
+    /// An edge through a triangle's interior.
+    Pierce(Edge, usize),
+    /// An edge of operand 0 through an edge of operand 1.
+    Edges(Edge, Edge),
+}
+
+/// The points constructed where the boundaries meet, each once, numbered from `first`: each on
+/// the sides of its edges' triangles (`on_edge`), a pierce point inside its triangle (`extra`).
+struct Sites {
+    first: usize,
+    index: HashMap<Site, usize>,
+    /// For each point in order, an edge and a triangle through whose plane it passes there.
+    made: Vec<(Edge, usize)>,
+    on_edge: HashMap<Edge, Vec<usize>>,
+    extra: Vec<Vec<usize>>,
+}
+
+impl Sites {
+    /// No points yet, numbered from `first`, on `tris` triangles.
+    fn new(first: usize, tris: usize) -> Self {
+        Sites {
+            first,
+            index: HashMap::new(),
+            made: Vec::new(),
+            on_edge: HashMap::new(),
+            extra: vec![Vec::new(); tris],
+        }
+    }
+
+    /// The index of the point `end` in operand 0's triangles and in operand 1's: a corner's
+    /// own in each, a constructed point's (numbered on first sight) in both.
+    fn at(&mut self, end: End) -> (usize, usize) {
+        let (site, made, edges, inside) = match end {
+            End::Pierce(edge, tri) => {
+                let site = Site::Pierce(edge, tri);
+                (site, (edge, tri), [Some(edge), None], Some(tri))
+            }
+            End::Edges(e, f, tri) => (Site::Edges(e, f), (e, tri), [Some(e), Some(f)], None),
+            End::Corner(x, y) => return (x, y),
+        };
+        let next = self.first + self.made.len();
+        let v = *self.index.entry(site).or_insert(next);
+        if v == next {
+            self.made.push(made);
+            for edge in edges.into_iter().flatten() {
+                self.on_edge.entry(edge).or_default().push(v);
+            }
+            if let Some(tri) = inside {
+                self.extra[tri].push(v);
+            }
+        }
+        (v, v)
+    }
+}
 
 /// Rays that scan every triangle of the other operand before an R-tree of its boxes is built
 /// (one in unit tests, so that they take both ways).
@@ -67,20 +125,6 @@ fn map_all<T: Sync, R: Send>(
 
 /// Triangles over a table of exact points.
 type Complex = (Vec<Point3<Rational>>, Vec<[usize; 3]>);
-
-/// How two triangles of different operands meet.
-enum Contact {
-    /// Disjoint.
-    Apart,
-    /// Crossing properly along the segment between two pierce points.
-    Cross([Pierce; 2]),
-    /// Meeting only in a shared corner or a shared edge: the pairs of equal corners (t's, s's;
-    /// one pair twice for a corner).
-    Touch([[usize; 2]; 2]),
-    /// Meeting otherwise (overlapping in a plane, a vertex on the other, an edge through an
-    /// edge, a corner shared with more in common): not generic.
-    Degenerate,
-}
 
 /// The meet of two float boundaries that cross transversally, touch, or do not meet.
 pub(crate) enum Transversal {
@@ -182,14 +226,11 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         .into_iter()
         .collect::<Option<_>>()?;
     let (crossings, touching): (Vec<_>, Vec<_>) = found.into_iter().unzip();
-    let crossings: Vec<(usize, usize, [Pierce; 2])> = crossings.into_iter().flatten().collect();
+    let crossings: Vec<(usize, usize, [End; 2])> = crossings.into_iter().flatten().collect();
     let touching: Vec<[[usize; 2]; 2]> = touching.into_iter().flatten().collect();
     let rays = Rays::new([a, b]);
-    if !touching.is_empty() {
-        return match crossings.is_empty() {
-            true => touching_meet(&touching, &rays),
-            false => None,
-        };
+    if crossings.is_empty() && !touching.is_empty() {
+        return touching_meet(&touching, &rays);
     }
     if crossings.is_empty() {
         // Each glued surface lies wholly on one side of the other boundary.
@@ -206,31 +247,36 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             None => Transversal::Apart(inside),
         });
     }
+    // Shared corners where surfaces cross: operand 1's corner for operand 0's equal one. A
+    // shared edge as well is left to the general meet.
+    let mut same: HashMap<usize, usize> = HashMap::new();
+    for [e0, e1] in &touching {
+        if e0 != e1 {
+            return None;
+        }
+        same.insert(e0[1], e0[0]);
+    }
     let mut points = exact_points(&a.points);
     points.extend(exact_points(&b.points));
-    // The pierce points: each constructed once, on its edge's triangles and in its triangle.
-    let mut index: HashMap<Pierce, usize> = HashMap::new();
-    let mut pierces: Vec<Pierce> = Vec::new();
-    let mut on_edge: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
-    let mut extra: Vec<Vec<usize>> = vec![Vec::new(); tris.len()];
+    let mut sites = Sites::new(points.len(), tris.len());
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); tris.len()];
     let mut crossing_edges: HashSet<(usize, usize)> = HashSet::new();
-    let first_pierce = points.len();
     for &(t, s, ends) in &crossings {
-        let [p, q] = ends.map(|(edge, tri)| {
-            *index.entry((edge, tri)).or_insert_with(|| {
-                let v = first_pierce + pierces.len();
-                pierces.push((edge, tri));
-                on_edge.entry(edge).or_default().push(v);
-                extra[tri].push(v);
-                v
-            })
+        let [(pt, ps), (qt, qs)] = ends.map(|end| {
+            if let End::Corner(x, y) = end {
+                same.insert(y, x);
+            }
+            sites.at(end)
         });
-        cuts[t].push((p, q));
-        cuts[s].push((p, q));
-        crossing_edges.insert((p.min(q), p.max(q)));
+        if pt != qt {
+            cuts[t].push((pt, qt));
+            cuts[s].push((ps, qs));
+            crossing_edges.insert(key(pt, qt));
+            crossing_edges.insert(key(ps, qs));
+        }
     }
-    points.extend(map_all(&pierces, parallel, |&(edge, tri)| {
+    let (on_edge, extra) = (&sites.on_edge, &sites.extra);
+    points.extend(map_all(&sites.made, parallel, |&(edge, tri)| {
         pierce(&f64s, edge, tris[tri])
     }));
     // Every triangle with points on it, re-triangulated: the pierce points of its edges lie
@@ -263,8 +309,13 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             None => pieces.push((tri, t)),
         }
     }
-    let inside = inside(&pieces, &crossing_edges, &rays, parallel)?;
-    Some(Transversal::Crossing((points, kept(&pieces, &inside))))
+    let inside = inside(&pieces, &crossing_edges, &same, &rays, parallel)?;
+    let rename = |v: usize| *same.get(&v).unwrap_or(&v);
+    let kept = kept(&pieces, &inside)
+        .into_iter()
+        .map(|t| t.map(rename))
+        .collect();
+    Some(Transversal::Crossing((points, kept)))
 }
 
 /// The triangles of each operand (0 below `first_b`, 1 from it) whose boxes meet the box of
@@ -395,142 +446,6 @@ fn exact_complex<N: Num>(ops: [&Brep<N>; 2], tris: Vec<[usize; 3]>) -> Complex {
     (exact_points(&points), tris)
 }
 
-/// The edge `uv` as a key (smaller index first).
-fn key(u: usize, v: usize) -> (usize, usize) {
-    (u.min(v), u.max(v))
-}
-
-/// How triangles `t` and `s` (indices into `p`, the `f64` values of `corners`; their planes
-/// in `planes`) meet, from orientations of their vertices. Triangles with a vertex on the
-/// other's plane are apart if they share no corner and [`tri::apart`] shows it, touch if they
-/// meet only in one shared corner ([`meet_only_at`]) or only in a shared edge (not coplanar,
-/// or coplanar on opposite sides of it: [`apart_across`]), and are degenerate otherwise. Else
-/// each plane must separate the other's vertices strictly; the line of the planes then meets
-/// each triangle in a segment from one straddling edge to the other, and the ends of the
-/// intersection are the pierce points of either triangle's straddling edges that lie strictly
-/// inside the other's segment — left of both of its straddling edges, a sign that
-/// orient3d(e₀, e₁, f₀, f₁) gives up to the side of f₁.
-fn contact<N: Num>(
-    p: &[[f64; 3]],
-    planes: &[OnceLock<PlaneF64>],
-    corners: &[&Point3<N>],
-    (ti, t): (usize, [usize; 3]),
-    (si, s): (usize, [usize; 3]),
-) -> Contact {
-    let o = |a: usize, b: usize, c: usize, d: usize| exact_orient3d_f64(p[a], p[b], p[c], p[d]);
-    let plane =
-        |i: usize, [u, v, w]: [usize; 3]| planes[i].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]));
-    let s_sides = s.map(|v| plane(ti, t).side(p[v]));
-    if one_side(&s_sides) {
-        return Contact::Apart;
-    }
-    let t_sides = t.map(|v| plane(si, s).side(p[v]));
-    if one_side(&t_sides) {
-        return Contact::Apart;
-    }
-    if s_sides.contains(&Equal) || t_sides.contains(&Equal) {
-        return touch(p, corners, t, s, [&s_sides, &t_sides]);
-    }
-    let mut ends = Vec::with_capacity(2);
-    for (host, hi, host_sides, guest, guest_sides) in
-        [(t, ti, t_sides, s, s_sides), (s, si, s_sides, t, t_sides)]
-    {
-        let host_edges = straddling(host, &host_sides);
-        for (f, f1_side) in straddling(guest, &guest_sides) {
-            let mut inside = true;
-            for (e, _) in host_edges {
-                match o(e.0, e.1, f.0, f.1) {
-                    Equal => return Contact::Degenerate,
-                    sign => inside &= sign == f1_side,
-                }
-            }
-            if inside {
-                ends.push((key(f.0, f.1), hi));
-            }
-        }
-    }
-    match ends[..] {
-        [] => Contact::Apart,
-        [x, y] => Contact::Cross([x, y]),
-        _ => Contact::Degenerate,
-    }
-}
-
-/// [`contact`] of triangles `t` and `s` with a vertex on the other's plane (`s_sides`: s's
-/// vertices against t's plane; `t_sides`: t's against s's): apart if [`tri::apart`] shows it
-/// where they share no corner, a touch in one shared corner or one shared edge, else
-/// degenerate.
-fn touch<N: Num>(
-    p: &[[f64; 3]],
-    corners: &[&Point3<N>],
-    t: [usize; 3],
-    s: [usize; 3],
-    [s_sides, t_sides]: [&[Ordering; 3]; 2],
-) -> Contact {
-    let ctx = N::exact_ctx();
-    let mut shared = t.iter().flat_map(|&x| {
-        s.iter()
-            .filter(move |&&y| p[x] == p[y])
-            .map(move |&y| [x, y])
-    });
-    let after = |tri: [usize; 3], v: usize| corners_after(tri, v).map(|w| corners[w]);
-    let touches = match (shared.next(), shared.next(), shared.next()) {
-        (None, _, _) => {
-            let apart = tri::apart(t.map(|v| corners[v]), s.map(|v| corners[v]), &ctx);
-            return if apart {
-                Contact::Apart
-            } else {
-                Contact::Degenerate
-            };
-        }
-        (Some([x, y]), None, _) => {
-            // The planes' sides of the corners after the shared one, as `contact` found them.
-            let sides_after = |tri: [usize; 3], v: usize, sides: &[Ordering; 3]| {
-                let k = tri.iter().position(|&w| w == v).expect("a shared corner");
-                [sides[(k + 1) % 3], sides[(k + 2) % 3]]
-            };
-            let sides = [sides_after(s, y, s_sides), sides_after(t, x, t_sides)];
-            meet_only_at_given(corners[x], after(t, x), after(s, y), sides, &ctx)
-                .then_some([[x, y]; 2])
-        }
-        (Some(e0), Some(e1), None) => {
-            // s's third corner off t's plane, or on it across the shared edge.
-            let third = |tri: [usize; 3], k: usize| {
-                (0..3)
-                    .find(|&i| tri[i] != e0[k] && tri[i] != e1[k])
-                    .expect("a triangle has three distinct corners")
-            };
-            let (a, w) = (t[third(t, 0)], third(s, 1));
-            let edge = [corners[e0[0]], corners[e1[0]]];
-            let meets_only_in_edge =
-                s_sides[w] != Equal || apart_across(edge, corners[a], corners[s[w]], &ctx);
-            meets_only_in_edge.then_some([e0, e1])
-        }
-        _ => None,
-    };
-    touches.map_or(Contact::Degenerate, Contact::Touch)
-}
-
-/// True if no vertex lies on the plane and all lie on one side of it.
-fn one_side(sides: &[Ordering; 3]) -> bool {
-    sides[0] != Equal && sides[0] == sides[1] && sides[1] == sides[2]
-}
-
-/// The two edges of triangle `tri` whose ends lie on opposite sides of a plane (`sides`, none
-/// on it), each directed as the triangle runs, with the side of its second end.
-fn straddling(tri: [usize; 3], sides: &[Ordering; 3]) -> [((usize, usize), Ordering); 2] {
-    let mut out = [((0, 0), Equal); 2];
-    let mut n = 0;
-    for k in 0..3 {
-        let j = (k + 1) % 3;
-        if sides[k] != sides[j] {
-            out[n] = ((tri[k], tri[j]), sides[j]);
-            n += 1;
-        }
-    }
-    out
-}
-
 /// The point where the edge `(u, v)` pierces the plane of the triangle `tri` (indices into the
 /// `f64` points `p`), exactly: (du·V − dv·U) / (du − dv), du and dv the plane's values at U and
 /// V, in integers after scaling every coordinate by one power of two
@@ -570,12 +485,14 @@ fn fin((u, v): (usize, usize), i: usize) -> u128 {
 /// For each piece of the transversal arrangement of `ops` (each with its parent: operand 0's
 /// triangles first, then operand 1's; over operand 0's points, operand 1's, then the pierce
 /// points), true if it lies inside the other operand: patches joined across edges that are not
-/// crossing segments, one ray from an input vertex per connected surface, the side flipped
+/// crossing segments, one ray from an input vertex off the other boundary (not a corner of
+/// `same`, operand 1's shared corners to operand 0's) per connected surface, the side flipped
 /// across every crossing segment. `None` if the flips contradict each other or the rays (not a
 /// transversal arrangement).
 fn inside<N: Num>(
     pieces: &[([usize; 3], usize)],
     crossing: &HashSet<(usize, usize)>,
+    same: &HashMap<usize, usize>,
     rays: &Rays<N>,
     parallel: bool,
 ) -> Option<Vec<bool>> {
@@ -630,13 +547,14 @@ fn inside<N: Num>(
         next[x].push(y);
         next[y].push(x);
     }
+    let shared: HashSet<usize> = same.iter().flat_map(|(&y, &x)| [x, y]).collect();
     let mut side: Vec<Option<bool>> = vec![None; pieces.len()];
     for (i, (piece, _)) in pieces.iter().enumerate() {
         let root = uf.find(i);
         if side[root].is_some() {
             continue;
         }
-        let Some(&v) = piece.iter().find(|&&v| v < inputs) else {
+        let Some(&v) = piece.iter().find(|&&v| v < inputs && !shared.contains(&v)) else {
             continue;
         };
         let o = operand(i);
@@ -897,8 +815,8 @@ mod tests {
         }
     }
 
-    /// Overlapping coplanar faces, a shared face, a vertex on a face and a face through a
-    /// shared corner into the other are declined.
+    /// Overlapping coplanar faces, a shared face, a vertex on a face and a face that crosses
+    /// the other from a shared corner along one of its edges are declined.
     #[test]
     fn declines_degenerate_pairs() {
         let still = [[0.0; 3]; 8];
@@ -913,51 +831,14 @@ mod tests {
             let b = solid::<Float>(&jittered_cube(o, 1.0, &jitter));
             assert!(transversal(&a, &b).is_none(), "offset {o:?}");
         }
-        // A tetrahedron at the cube's corner (1, 1, 1) with a face that enters the cube there.
+        // A tetrahedron at the cube's corner (1, 1, 1) with a face in the plane y = z, which
+        // enters the cube there along the cube's edge to (0, 1, 1).
         let (v, f) = (
             vec![[1.0; 3], [0.5, 1.2, 1.2], [2.0, 0.5, 0.5], [1.5, 1.5, 2.0]],
             vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
         );
-        assert!(transversal(&a, &solid::<Float>(&(v, f))).is_none());
-    }
-
-    /// The contact of two triangles given by their corners.
-    fn contact_of(t: [[f64; 3]; 3], s: [[f64; 3]; 3]) -> Contact {
-        let p = [t, s].concat();
-        let points: Vec<Point3<Float>> = p
-            .iter()
-            .map(|c| c.map(|x| Float::from_f64(x).expect("finite")))
-            .map(|[x, y, z]| Point3::new(x, y, z))
-            .collect();
-        let corners: Vec<&Point3<Float>> = points.iter().collect();
-        let planes = [OnceLock::new(), OnceLock::new()];
-        contact(&p, &planes, &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
-    }
-
-    /// Triangles sharing a corner or an edge touch only where they meet in nothing else:
-    /// leaving the corner away from the other, across the edge in one plane or off it. Through
-    /// the corner into the other, or on the same side of the edge in one plane, they are
-    /// degenerate; with a vertex on the other's plane and nothing shared, apart where they
-    /// miss.
-    #[test]
-    fn shared_corners_and_edges_touch_only_where_nothing_else_meets() {
-        let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
-        let touch = |s| matches!(contact_of(t, s), Contact::Touch(_));
-        let degenerate = |s| matches!(contact_of(t, s), Contact::Degenerate);
-        assert!(touch([[0.0; 3], [-1.0, -1.0, 1.0], [-1.0, -1.0, -1.0]]));
-        assert!(degenerate([[0.0; 3], [1.0, 1.0, 1.0], [1.0, 1.0, -1.0]]));
-        assert!(touch([[1.0, 0.0, 0.0], [0.0; 3], [0.2, -0.3, 0.0]]));
-        assert!(touch([[1.0, 0.0, 0.0], [0.0; 3], [0.2, 0.3, 1.0]]));
-        assert!(degenerate([[1.0, 0.0, 0.0], [0.0; 3], [0.2, 0.2, 0.0]]));
-        assert!(matches!(
-            contact_of(t, [[2.0, 0.0, 0.0], [2.0, 1.0, 1.0], [3.0, 0.0, -1.0]]),
-            Contact::Apart
-        ));
-        assert!(degenerate([
-            [0.5, 0.2, 0.0],
-            [2.0, 1.0, 1.0],
-            [3.0, 0.0, -1.0]
-        ]));
+        let tet = solid::<Float>(&(v, f));
+        assert!(transversal(&a, &tet).is_none());
     }
 
     /// A jitter that moves corners only into corner 0's octant (each coordinate by 1/32 or a
@@ -1019,6 +900,103 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The kinds of crossing ends between the triangles of two float sets: crossing edges,
+    /// shared corners, and pairs meeting in one point only.
+    fn crossing_kinds(a: &YinSet3<Float>, b: &YinSet3<Float>) -> [bool; 3] {
+        let (x, y) = (a.brep().unwrap(), b.brep().unwrap());
+        let points: Vec<Point3<Float>> = x.points.iter().chain(&y.points).cloned().collect();
+        let p: Vec<[f64; 3]> = points.iter().map(|q| q.to_f64()).collect();
+        let corners: Vec<&Point3<Float>> = points.iter().collect();
+        let n = x.points.len();
+        let tris: Vec<[usize; 3]> = (x.tris.iter().copied())
+            .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
+            .collect();
+        let planes: Vec<OnceLock<PlaneF64>> = tris.iter().map(|_| OnceLock::new()).collect();
+        let mut kinds = [false; 3];
+        for t in 0..x.tris.len() {
+            for s in x.tris.len()..tris.len() {
+                if let Contact::Cross(ends) =
+                    contact(&p, &planes, &corners, (t, tris[t]), (s, tris[s]))
+                {
+                    for end in ends {
+                        kinds[0] |= matches!(end, End::Edges(..));
+                        kinds[1] |= matches!(end, End::Corner(..));
+                    }
+                    kinds[2] |= ends[0] == ends[1];
+                }
+            }
+        }
+        kinds
+    }
+
+    /// Tetrahedra with corners on the half-integer lattice against a cube on it, half of them
+    /// with a corner at one of the cube's, also as their complement: their edges cross the cube's edges and face diagonals, and they cross the
+    /// cube through shared corners. Wherever the transversal meet is taken it equals the
+    /// general exact meet; it is taken with crossing edges, through shared corners and with
+    /// pairs meeting in one point, each in many cases.
+    #[test]
+    fn lattice_solids_meet_as_the_general_meet() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand::rngs::StdRng::seed_from_u64(18);
+        let cube = jittered_cube([0.0; 3], 2.0, &[[0.0; 3]; 8]);
+        let (fa, ea) = (solid::<Float>(&cube), solid::<Rational>(&cube));
+        let mut taken = [0usize; 3];
+        for _ in 0..3000 {
+            let mut v: Vec<[f64; 3]> = (0..4)
+                .map(|_| [0; 3].map(|_| f64::from(rng.random_range(-2..7i32)) / 2.0))
+                .collect();
+            if rng.random_bool(0.5) {
+                // A corner of the cube's.
+                v[0] = [0; 3].map(|_| f64::from(rng.random_range(0..2i32)) * 2.0);
+            }
+            let d = |i: usize| [0, 1, 2].map(|k| v[i][k] - v[0][k]);
+            let (x, y, z) = (d(1), d(2), d(3));
+            let volume = x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0])
+                + x[2] * (y[0] * z[1] - y[1] * z[0]);
+            if volume == 0.0 {
+                continue;
+            }
+            let f = match volume > 0.0 {
+                true => vec![vec![0, 2, 1], vec![0, 1, 3], vec![0, 3, 2], vec![1, 2, 3]],
+                false => vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
+            };
+            let tetra = (v, f);
+            let (fb, eb) = (solid::<Float>(&tetra), solid::<Rational>(&tetra));
+            for (fb, eb) in [(fb.clone(), eb.clone()), (fb.complement(), eb.complement())] {
+                let Some(fast) = transversal(&fa, &fb) else {
+                    continue;
+                };
+                assert_eq!(fast, ea.meet(&eb), "tetrahedron {:?}", tetra.0);
+                for (n, kind) in taken.iter_mut().zip(crossing_kinds(&fa, &fb)) {
+                    *n += usize::from(kind);
+                }
+            }
+        }
+        assert!(taken.iter().all(|&n| n >= 50), "taken {taken:?}");
+    }
+
+    /// ballmid and torus of ../shared/data/3d, on one lattice, cross in edges through edges and
+    /// through shared corners: the transversal meet is taken and equals the general exact meet.
+    #[test]
+    fn ballmid_and_torus_meet_as_the_general_meet() {
+        if !crate::io::testdata::available() {
+            return;
+        }
+        let read = |name: &str| {
+            let text = std::fs::read_to_string(crate::io::testdata::dir("3d").join(name));
+            let mesh = crate::io::obj::read_obj::<Float>(&text.expect("readable")).unwrap();
+            YinSet3::from_triangles(mesh.vertices, mesh.faces).expect("a valid mesh")
+        };
+        let (ball, torus) = (read("ballmid.obj"), read("torus.obj"));
+        let kinds = crossing_kinds(&ball, &torus);
+        assert!(
+            kinds[0] && kinds[1],
+            "crossing edges and corners: {kinds:?}"
+        );
+        let fast = transversal(&ball, &torus).expect("the transversal meet");
+        assert_eq!(fast, exact_set(&ball).meet(&exact_set(&torus)));
     }
 
     /// Axis-aligned cubes sharing a corner (their faces at it coplanar) take the touching meet

@@ -1,0 +1,302 @@
+//! How two triangles of different float operands meet, decided from exact orientations of their
+//! `f64` corners (seed 004 step 1 for the cases [`super::transversal`] constructs without the
+//! general arrangement). Where two triangles cross, each meets the line of the two planes in a
+//! segment — from one straddling edge's pierce point to the other's, or from a shared corner to
+//! the opposite edge's — and the triangles meet in the overlap of the two segments. Each end of
+//! the overlap is an end of one segment strictly inside the other (a pierce point), an end of
+//! both (an edge of one operand through an edge of the other, or the shared corner), and is
+//! named by what defines it, so that every pair that finds it finds the same point.
+
+use super::tri::{self, apart_across, corners_after, meet_only_at_given};
+use crate::kernel::Point3;
+use crate::num::{exact_orient3d_f64, Num, PlaneF64};
+use std::cmp::Ordering::{self, Equal};
+use std::sync::OnceLock;
+
+/// An edge of one operand: its ends' global point indices, the smaller first.
+pub(super) type Edge = (usize, usize);
+
+/// A point where two crossing triangles' boundaries meet, named by what defines it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) enum End {
+    /// Where an edge of one operand pierces the interior of a triangle (global index) of the
+    /// other.
+    Pierce(Edge, usize),
+    /// Where an edge of operand 0 crosses an edge of operand 1 inside both, with a triangle of
+    /// the second edge (global index), through whose plane the first edge passes there.
+    Edges(Edge, Edge, usize),
+    /// A corner of operand 0 (global index) equal to a corner of operand 1.
+    Corner(usize, usize),
+}
+
+/// How two triangles of different operands meet.
+#[derive(Debug)]
+pub(super) enum Contact {
+    /// Disjoint.
+    Apart,
+    /// Crossing along the segment between two ends; one end twice where they meet in one
+    /// point only, an edge of each crossing the other's ([`End::Edges`]).
+    Cross([End; 2]),
+    /// Meeting only in a shared corner or a shared edge: the pairs of equal corners (t's, s's;
+    /// one pair twice for a corner).
+    Touch([[usize; 2]; 2]),
+    /// Meeting otherwise (overlapping in a plane, a vertex on the other away from a shared
+    /// corner, a shared corner with a coplanar edge or face): not handled here.
+    Degenerate,
+}
+
+/// The edge `uv` as a key (smaller index first).
+pub(super) fn key(u: usize, v: usize) -> Edge {
+    (u.min(v), u.max(v))
+}
+
+/// How triangles `t` (operand 0) and `s` (operand 1) meet, as indices into `p`, the `f64`
+/// values of `corners`, with their global indices `ti`, `si` and their planes in `planes`.
+/// Triangles with a vertex on the other's plane go to [`touch`]. Else each plane must separate
+/// the other's vertices strictly; the line of the planes meets each triangle in a segment
+/// between its straddling edges' pierce points, and the sign of orient3d(e₀, e₁, f₀, f₁) — for
+/// a straddling edge e of one and f of the other, each directed as its triangle runs — tells,
+/// up to the side of f₁, whether f's pierce point lies left of e (inside e's triangle), on it
+/// (the edges cross: [`End::Edges`]) or right of it. The same sign serves with the triangles'
+/// roles swapped (the permutation is even), so four orientations settle the overlap.
+pub(super) fn contact<N: Num>(
+    p: &[[f64; 3]],
+    planes: &[OnceLock<PlaneF64>],
+    corners: &[&Point3<N>],
+    (ti, t): (usize, [usize; 3]),
+    (si, s): (usize, [usize; 3]),
+) -> Contact {
+    let plane =
+        |i: usize, [u, v, w]: [usize; 3]| planes[i].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]));
+    let s_sides = s.map(|v| plane(ti, t).side(p[v]));
+    if one_side(&s_sides) {
+        return Contact::Apart;
+    }
+    let t_sides = t.map(|v| plane(si, s).side(p[v]));
+    if one_side(&t_sides) {
+        return Contact::Apart;
+    }
+    if s_sides.contains(&Equal) || t_sides.contains(&Equal) {
+        return touch(p, corners, (ti, t), (si, s), [&s_sides, &t_sides]);
+    }
+    let (te, se) = (straddling(t, &t_sides), straddling(s, &s_sides));
+    let sign = te.map(|(e, _)| se.map(|(f, _)| exact_orient3d_f64(p[e.0], p[e.1], p[f.0], p[f.1])));
+    let mut ends = Vec::with_capacity(2);
+    for (j, &(f, side)) in se.iter().enumerate() {
+        if sign.iter().all(|row| row[j] == side) {
+            ends.push(End::Pierce(key(f.0, f.1), ti));
+        }
+    }
+    for (i, &(e, side)) in te.iter().enumerate() {
+        if sign[i].iter().all(|&o| o == side) {
+            ends.push(End::Pierce(key(e.0, e.1), si));
+        }
+        for (j, &(f, _)) in se.iter().enumerate() {
+            if sign[i][j] == Equal {
+                ends.push(End::Edges(key(e.0, e.1), key(f.0, f.1), si));
+            }
+        }
+    }
+    match ends[..] {
+        [] => Contact::Apart,
+        [x @ End::Edges(..)] => Contact::Cross([x, x]),
+        [x, y] => Contact::Cross([x, y]),
+        _ => Contact::Degenerate,
+    }
+}
+
+/// [`contact`] of triangles `t` and `s` with a vertex on the other's plane (`s_sides`: s's
+/// vertices against t's plane; `t_sides`: t's against s's): apart if [`tri::apart`] shows it
+/// where they share no corner; a touch in one shared corner or one shared edge; crossing from
+/// one shared corner where both triangles' other corners straddle the other's plane
+/// ([`through_corner`]); else degenerate.
+fn touch<N: Num>(
+    p: &[[f64; 3]],
+    corners: &[&Point3<N>],
+    (ti, t): (usize, [usize; 3]),
+    (si, s): (usize, [usize; 3]),
+    [s_sides, t_sides]: [&[Ordering; 3]; 2],
+) -> Contact {
+    let ctx = N::exact_ctx();
+    let mut shared = t.iter().flat_map(|&x| {
+        s.iter()
+            .filter(move |&&y| p[x] == p[y])
+            .map(move |&y| [x, y])
+    });
+    let after = |tri: [usize; 3], v: usize| corners_after(tri, v).map(|w| corners[w]);
+    match (shared.next(), shared.next(), shared.next()) {
+        (None, _, _) => {
+            if tri::apart(t.map(|v| corners[v]), s.map(|v| corners[v]), &ctx) {
+                Contact::Apart
+            } else {
+                Contact::Degenerate
+            }
+        }
+        (Some([x, y]), None, _) => {
+            // The planes' sides of the corners after the shared one, as `contact` found them.
+            let sides_after = |tri: [usize; 3], v: usize, sides: &[Ordering; 3]| {
+                let k = tri.iter().position(|&w| w == v).expect("a shared corner");
+                [sides[(k + 1) % 3], sides[(k + 2) % 3]]
+            };
+            let sides = [sides_after(s, y, s_sides), sides_after(t, x, t_sides)];
+            if meet_only_at_given(corners[x], after(t, x), after(s, y), sides, &ctx) {
+                Contact::Touch([[x, y]; 2])
+            } else {
+                through_corner(p, (ti, t), (si, s), [x, y], sides)
+            }
+        }
+        (Some(e0), Some(e1), None) => {
+            // s's third corner off t's plane, or on it across the shared edge.
+            let third = |tri: [usize; 3], k: usize| {
+                (0..3)
+                    .find(|&i| tri[i] != e0[k] && tri[i] != e1[k])
+                    .expect("a triangle has three distinct corners")
+            };
+            let (a, w) = (t[third(t, 0)], third(s, 1));
+            let edge = [corners[e0[0]], corners[e1[0]]];
+            let meets_only_in_edge =
+                s_sides[w] != Equal || apart_across(edge, corners[a], corners[s[w]], &ctx);
+            match meets_only_in_edge {
+                true => Contact::Touch([e0, e1]),
+                false => Contact::Degenerate,
+            }
+        }
+        _ => Contact::Degenerate,
+    }
+}
+
+/// Triangles `t` and `s` sharing only the corner `x` (t's) = `y` (s's), which meet elsewhere
+/// too: if the corners after it straddle the other's plane strictly on both (`sides`: s's
+/// against t's plane, t's against s's), both meet the planes' line in a segment from the corner
+/// to the opposite edge's pierce point, pointing the same way (they meet beyond the corner),
+/// and they cross from the corner to the nearer of the two — by the sign of orient3d of the
+/// opposite edges, as in [`contact`]. Else degenerate.
+fn through_corner(
+    p: &[[f64; 3]],
+    (ti, t): (usize, [usize; 3]),
+    (si, s): (usize, [usize; 3]),
+    [x, y]: [usize; 2],
+    [[sc, sd], [sa, sb]]: [[Ordering; 2]; 2],
+) -> Contact {
+    let straddle = |u: Ordering, v: Ordering| u != v && u != Equal && v != Equal;
+    if !(straddle(sc, sd) && straddle(sa, sb)) {
+        return Contact::Degenerate;
+    }
+    let ([a, b], [c, d]) = (corners_after(t, x), corners_after(s, y));
+    let far = match exact_orient3d_f64(p[a], p[b], p[c], p[d]) {
+        Equal => End::Edges(key(a, b), key(c, d), si),
+        o if o == sd => End::Pierce(key(c, d), ti),
+        _ => End::Pierce(key(a, b), si),
+    };
+    Contact::Cross([End::Corner(x, y), far])
+}
+
+/// True if no vertex lies on the plane and all lie on one side of it.
+fn one_side(sides: &[Ordering; 3]) -> bool {
+    sides[0] != Equal && sides[0] == sides[1] && sides[1] == sides[2]
+}
+
+/// The two edges of triangle `tri` whose ends lie on opposite sides of a plane (`sides`, none
+/// on it), each directed as the triangle runs, with the side of its second end.
+fn straddling(tri: [usize; 3], sides: &[Ordering; 3]) -> [((usize, usize), Ordering); 2] {
+    let mut out = [((0, 0), Equal); 2];
+    let mut n = 0;
+    for k in 0..3 {
+        let j = (k + 1) % 3;
+        if sides[k] != sides[j] {
+            out[n] = ((tri[k], tri[j]), sides[j]);
+            n += 1;
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Float;
+
+    /// The contact of two triangles given by their corners (points 0–2 and 3–5, triangles 0
+    /// and 1).
+    fn contact_of(t: [[f64; 3]; 3], s: [[f64; 3]; 3]) -> Contact {
+        let p = [t, s].concat();
+        let points: Vec<Point3<Float>> = p
+            .iter()
+            .map(|c| c.map(|x| Float::from_f64(x).expect("finite")))
+            .map(|[x, y, z]| Point3::new(x, y, z))
+            .collect();
+        let corners: Vec<&Point3<Float>> = points.iter().collect();
+        let planes = [OnceLock::new(), OnceLock::new()];
+        contact(&p, &planes, &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
+    }
+
+    /// Triangles sharing a corner or an edge touch only where they meet in nothing else:
+    /// leaving the corner away from the other, across the edge in one plane or off it. On the
+    /// same side of the shared edge in one plane they are degenerate; with a vertex on the
+    /// other's plane and nothing shared, apart where they miss.
+    #[test]
+    fn shared_corners_and_edges_touch_only_where_nothing_else_meets() {
+        let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        let touch = |s| matches!(contact_of(t, s), Contact::Touch(_));
+        let degenerate = |s| matches!(contact_of(t, s), Contact::Degenerate);
+        assert!(touch([[0.0; 3], [-1.0, -1.0, 1.0], [-1.0, -1.0, -1.0]]));
+        assert!(touch([[1.0, 0.0, 0.0], [0.0; 3], [0.2, -0.3, 0.0]]));
+        assert!(touch([[1.0, 0.0, 0.0], [0.0; 3], [0.2, 0.3, 1.0]]));
+        assert!(degenerate([[1.0, 0.0, 0.0], [0.0; 3], [0.2, 0.2, 0.0]]));
+        assert!(matches!(
+            contact_of(t, [[2.0, 0.0, 0.0], [2.0, 1.0, 1.0], [3.0, 0.0, -1.0]]),
+            Contact::Apart
+        ));
+        assert!(degenerate([
+            [0.5, 0.2, 0.0],
+            [2.0, 1.0, 1.0],
+            [3.0, 0.0, -1.0]
+        ]));
+    }
+
+    /// Through a shared corner, the triangles cross from it to the nearer end: t (in z = 0,
+    /// x + y ≤ 1) and s (in the plane x = y) meet along the diagonal from the origin to where
+    /// t's long edge (points 1–2) pierces s, (1/2, 1/2, 0), short of where s's far edge
+    /// pierces t's plane; with s's far edge moved to x = y = 1/2 the edges cross there, and to
+    /// x = y = 1/4 s's edge pierces t first. A triangle with a corner on the other's plane
+    /// beside a shared corner is degenerate.
+    #[test]
+    fn triangles_cross_from_a_shared_corner_to_the_nearer_end() {
+        let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        let s = |h: f64| [[0.0; 3], [h, h, 1.0], [h, h, -1.0]];
+        let cross = |s| match contact_of(t, s) {
+            Contact::Cross(ends) => ends,
+            other => panic!("not a crossing: {other:?}"),
+        };
+        assert_eq!(cross(s(1.0)), [End::Corner(0, 3), End::Pierce((1, 2), 1)]);
+        assert_eq!(
+            cross(s(0.5)),
+            [End::Corner(0, 3), End::Edges((1, 2), (4, 5), 1)]
+        );
+        assert_eq!(cross(s(0.25)), [End::Corner(0, 3), End::Pierce((4, 5), 0)]);
+        assert!(matches!(
+            contact_of(t, [[0.0; 3], [1.0, 1.0, 0.0], [1.0, 1.0, -1.0]]),
+            Contact::Degenerate
+        ));
+    }
+
+    /// Triangles whose straddling edges cross: t (in z = 0) meets the x-axis in [0, 1], its
+    /// edge 1–2 ending it at (1, 0, 0); s (in y = 0) meets it in [1/2, 1] or [1, 3/2], its edge
+    /// 3–5 ending it at (1, 0, 0) too. Where the segments overlap, the crossing runs from the
+    /// crossing edges to s's other pierce point; where they only touch end to end, the
+    /// triangles meet in that one point (the end twice).
+    #[test]
+    fn crossing_edges_end_the_overlap() {
+        let t = [[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0]];
+        let edges = End::Edges((1, 2), (3, 5), 1);
+        let cross = |s| match contact_of(t, s) {
+            Contact::Cross(ends) => ends,
+            other => panic!("not a crossing: {other:?}"),
+        };
+        let overlap = cross([[0.75, 0.0, 1.0], [0.25, 0.0, -1.0], [1.25, 0.0, -1.0]]);
+        assert!(overlap.contains(&edges), "{overlap:?}");
+        assert!(overlap.contains(&End::Pierce((3, 4), 0)), "{overlap:?}");
+        let end_to_end = cross([[0.0, 0.0, 1.0], [3.0, 0.0, -1.0], [2.0, 0.0, -1.0]]);
+        assert_eq!(end_to_end, [edges, edges]);
+    }
+}
