@@ -1,18 +1,19 @@
 //! The meet of two float sets whose boundaries cross transversally (seed 004 steps 1–5 for the
 //! generic case; README, "3D float mode"): every pair of triangles of different operands
 //! misses, crosses along a segment whose inside runs through both triangles' insides, or
-//! touches in a shared corner ([`super::contact`]) — no vertex on the other's plane but a shared
-//! corner, no triangles crossing along an edge. Then everything the general arrangement decides
+//! touches in a shared corner or edge ([`super::contact`]) — no vertex on the other's plane but
+//! a shared corner, no triangles crossing along an edge. Then everything the general arrangement decides
 //! with constructed points is decided from exact orientations of the `f64` input vertices:
 //! - each end of a crossing segment is where an edge of one operand pierces a triangle of the
 //!   other, where an edge of one crosses an edge of the other, or a shared corner; each
 //!   constructed point is named by what defines it and constructed exactly once;
 //! - a pierce point lies on the edge's triangles and in the pierced triangle, crossing edges'
 //!   point on both edges' triangles, and nowhere else;
-//! - membership is constant on patches (pieces of one operand joined across edges that are not
-//!   crossing segments) and flips across every crossing segment, so one ray per connected
-//!   surface, from an input vertex that is not a shared corner, decides every patch; shared
-//!   corners become one point in the meet.
+//! - membership is constant on patches (pieces of one operand joined across edges that are
+//!   neither crossing segments nor shared edges) and flips across every crossing segment, so
+//!   one ray per connected surface and per patch that flips cannot reach, from an input vertex
+//!   that is not a shared corner, decides every patch; shared corners become one point in the
+//!   meet.
 //!
 //! Where no pair meets at all, each glued surface lies wholly inside or outside the other
 //! operand, and one ray per glued surface decides it ([`Transversal::Apart`]).
@@ -36,13 +37,24 @@ use super::set::{compact, Brep};
 use crate::kernel::Point3;
 use crate::num::{common_grid, Num, PlaneF64, Rational};
 use crate::union_find::UnionFind;
-use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
+use foldhash::{HashMap, HashMapExt, HashSet};
 use num_bigint::BigInt;
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
 use std::cell::{Cell, OnceCell};
 use std::sync::OnceLock;
+
+/// Where the boundaries meet, as edges of the pieces of the transversal meet.
+#[derive(Default)]
+struct Seams {
+    /// The crossing segments: membership flips across each.
+    crossing: HashSet<Edge>,
+    /// The shared edges, in each operand's numbering: membership may change across them.
+    shared: HashSet<Edge>,
+    /// Operand 1's shared corners, to operand 0's equal ones.
+    same: HashMap<usize, usize>,
+}
 
 /// A constructed point where the boundaries meet, by what defines it ([`End`]).
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
@@ -247,32 +259,28 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             None => Transversal::Apart(inside),
         });
     }
-    // Shared corners where surfaces cross: operand 1's corner for operand 0's equal one. A
-    // shared edge as well is left to the general meet.
-    let mut same: HashMap<usize, usize> = HashMap::new();
-    for [e0, e1] in &touching {
+    let mut seams = Seams::default();
+    for &[e0, e1] in &touching {
+        seams.same.extend([(e0[1], e0[0]), (e1[1], e1[0])]);
         if e0 != e1 {
-            return None;
+            seams.shared.extend([key(e0[0], e1[0]), key(e0[1], e1[1])]);
         }
-        same.insert(e0[1], e0[0]);
     }
     let mut points = exact_points(&a.points);
     points.extend(exact_points(&b.points));
     let mut sites = Sites::new(points.len(), tris.len());
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); tris.len()];
-    let mut crossing_edges: HashSet<(usize, usize)> = HashSet::new();
     for &(t, s, ends) in &crossings {
         let [(pt, ps), (qt, qs)] = ends.map(|end| {
             if let End::Corner(x, y) = end {
-                same.insert(y, x);
+                seams.same.insert(y, x);
             }
             sites.at(end)
         });
         if pt != qt {
             cuts[t].push((pt, qt));
             cuts[s].push((ps, qs));
-            crossing_edges.insert(key(pt, qt));
-            crossing_edges.insert(key(ps, qs));
+            seams.crossing.extend([key(pt, qt), key(ps, qs)]);
         }
     }
     let (on_edge, extra) = (&sites.on_edge, &sites.extra);
@@ -309,8 +317,8 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             None => pieces.push((tri, t)),
         }
     }
-    let inside = inside(&pieces, &crossing_edges, &same, &rays, parallel)?;
-    let rename = |v: usize| *same.get(&v).unwrap_or(&v);
+    let inside = inside(&pieces, &seams, &rays, parallel)?;
+    let rename = |v: usize| *seams.same.get(&v).unwrap_or(&v);
     let kept = kept(&pieces, &inside)
         .into_iter()
         .map(|t| t.map(rename))
@@ -484,15 +492,14 @@ fn fin((u, v): (usize, usize), i: usize) -> u128 {
 
 /// For each piece of the transversal arrangement of `ops` (each with its parent: operand 0's
 /// triangles first, then operand 1's; over operand 0's points, operand 1's, then the pierce
-/// points), true if it lies inside the other operand: patches joined across edges that are not
-/// crossing segments, one ray from an input vertex off the other boundary (not a corner of
-/// `same`, operand 1's shared corners to operand 0's) per connected surface, the side flipped
-/// across every crossing segment. `None` if the flips contradict each other or the rays (not a
-/// transversal arrangement).
+/// points), true if it lies inside the other operand: patches joined across edges that are
+/// neither crossing segments nor shared edges ([`Seams`]), one ray from an input vertex off the
+/// other boundary (not a shared corner) per connected surface, the side flipped across every
+/// crossing segment. `None` if the flips contradict each other or the rays, or a patch gets no
+/// side.
 fn inside<N: Num>(
     pieces: &[([usize; 3], usize)],
-    crossing: &HashSet<(usize, usize)>,
-    same: &HashMap<usize, usize>,
+    seams: &Seams,
     rays: &Rays<N>,
     parallel: bool,
 ) -> Option<Vec<bool>> {
@@ -519,7 +526,11 @@ fn inside<N: Num>(
     let mut uf = UnionFind::new(pieces.len());
     let mut flips: Vec<(usize, usize)> = Vec::new();
     for at in fins.chunk_by(|x, y| x >> FIELD == y >> FIELD) {
-        let across = crossing.contains(&edge(&at[0]));
+        let edge = edge(&at[0]);
+        if seams.shared.contains(&edge) {
+            continue;
+        }
+        let across = seams.crossing.contains(&edge);
         for o in 0..2 {
             let mut mine = at
                 .iter()
@@ -547,7 +558,7 @@ fn inside<N: Num>(
         next[x].push(y);
         next[y].push(x);
     }
-    let shared: HashSet<usize> = same.iter().flat_map(|(&y, &x)| [x, y]).collect();
+    let shared: HashSet<usize> = seams.same.iter().flat_map(|(&y, &x)| [x, y]).collect();
     let mut side: Vec<Option<bool>> = vec![None; pieces.len()];
     for (i, (piece, _)) in pieces.iter().enumerate() {
         let root = uf.find(i);
@@ -902,9 +913,10 @@ mod tests {
         }
     }
 
-    /// The kinds of crossing ends between the triangles of two float sets: crossing edges,
-    /// shared corners, and pairs meeting in one point only.
-    fn crossing_kinds(a: &YinSet3<Float>, b: &YinSet3<Float>) -> [bool; 3] {
+    /// The kinds of contact between the triangles of two float sets: crossing edges, crossing
+    /// through shared corners, meeting in one point only, and touching in a shared edge where
+    /// other triangles cross.
+    fn crossing_kinds(a: &YinSet3<Float>, b: &YinSet3<Float>) -> [bool; 4] {
         let (x, y) = (a.brep().unwrap(), b.brep().unwrap());
         let points: Vec<Point3<Float>> = x.points.iter().chain(&y.points).cloned().collect();
         let p: Vec<[f64; 3]> = points.iter().map(|q| q.to_f64()).collect();
@@ -914,42 +926,53 @@ mod tests {
             .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
             .collect();
         let planes: Vec<OnceLock<PlaneF64>> = tris.iter().map(|_| OnceLock::new()).collect();
-        let mut kinds = [false; 3];
+        let (mut kinds, mut edge_touch, mut cross) = ([false; 4], false, false);
         for t in 0..x.tris.len() {
             for s in x.tris.len()..tris.len() {
-                if let Contact::Cross(ends) =
-                    contact(&p, &planes, &corners, (t, tris[t]), (s, tris[s]))
-                {
-                    for end in ends {
-                        kinds[0] |= matches!(end, End::Edges(..));
-                        kinds[1] |= matches!(end, End::Corner(..));
+                match contact(&p, &planes, &corners, (t, tris[t]), (s, tris[s])) {
+                    Contact::Cross(ends) => {
+                        cross = true;
+                        for end in ends {
+                            kinds[0] |= matches!(end, End::Edges(..));
+                            kinds[1] |= matches!(end, End::Corner(..));
+                        }
+                        kinds[2] |= ends[0] == ends[1];
                     }
-                    kinds[2] |= ends[0] == ends[1];
+                    Contact::Touch([e0, e1]) => edge_touch |= e0 != e1,
+                    _ => {}
                 }
             }
         }
+        kinds[3] = edge_touch && cross;
         kinds
     }
 
     /// Tetrahedra with corners on the half-integer lattice against a cube on it, half of them
-    /// with a corner at one of the cube's, also as their complement: their edges cross the cube's edges and face diagonals, and they cross the
-    /// cube through shared corners. Wherever the transversal meet is taken it equals the
-    /// general exact meet; it is taken with crossing edges, through shared corners and with
-    /// pairs meeting in one point, each in many cases.
+    /// with a corner at one of the cube's and a quarter with an edge on one of the cube's, also
+    /// as their complement: their edges cross the cube's edges and face diagonals, and they
+    /// cross the cube through shared corners and along shared edges. Wherever the transversal
+    /// meet is taken it equals the general exact meet; it is taken with crossing edges,
+    /// through shared corners, with pairs meeting in one point and with shared edges beside
+    /// crossings, each in many cases.
     #[test]
     fn lattice_solids_meet_as_the_general_meet() {
         use rand::{RngExt, SeedableRng};
         let mut rng = rand::rngs::StdRng::seed_from_u64(18);
         let cube = jittered_cube([0.0; 3], 2.0, &[[0.0; 3]; 8]);
         let (fa, ea) = (solid::<Float>(&cube), solid::<Rational>(&cube));
-        let mut taken = [0usize; 3];
+        let mut taken = [0usize; 4];
         for _ in 0..3000 {
             let mut v: Vec<[f64; 3]> = (0..4)
                 .map(|_| [0; 3].map(|_| f64::from(rng.random_range(-2..7i32)) / 2.0))
                 .collect();
             if rng.random_bool(0.5) {
-                // A corner of the cube's.
+                // A corner of the cube's, and half the time the next along an edge.
                 v[0] = [0; 3].map(|_| f64::from(rng.random_range(0..2i32)) * 2.0);
+                if rng.random_bool(0.5) {
+                    let k = rng.random_range(0..3);
+                    v[1] = v[0];
+                    v[1][k] = 2.0 - v[0][k];
+                }
             }
             let d = |i: usize| [0, 1, 2].map(|k| v[i][k] - v[0][k]);
             let (x, y, z) = (d(1), d(2), d(3));
