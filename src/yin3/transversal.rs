@@ -2,8 +2,9 @@
 //! generic case; README, "3D float mode"): every pair of triangles of different operands
 //! misses, crosses along a segment whose inside runs through both triangles' insides, or
 //! touches in a shared corner or edge ([`super::contact`]) — no vertex on the other's plane but
-//! a shared corner, no triangles crossing along an edge. Then everything the general arrangement decides
-//! with constructed points is decided from exact orientations of the `f64` input vertices:
+//! a shared corner, no triangles crossing along an edge. Then everything the general
+//! arrangement decides with constructed points is decided from exact orientations of the `f64`
+//! input vertices:
 //! - each end of a crossing segment is where an edge of one operand pierces a triangle of the
 //!   other, where an edge of one crosses an edge of the other, or a shared corner; each
 //!   constructed point is named by what defines it and constructed exactly once;
