@@ -561,25 +561,35 @@ fn data_pair(name: &str, eps: f64) -> (Y3, F3) {
     (exact_of(&f).expect("exactly valid"), f)
 }
 
+/// Every operation of `ops` on each pair of meshes of ../shared/data/3d (ε = 10⁻⁹) in both
+/// modes; `None` without the data.
+fn compare_shared(pairs: &[(&str, &str)], ops: &[&str]) -> Option<Tally> {
+    if !common::data_available() {
+        return None;
+    }
+    let eps = 1e-9;
+    let mut t = Tally::default();
+    for (a, b) in pairs {
+        compare(&mut t, &data_pair(a, eps), &data_pair(b, eps), eps, ops);
+    }
+    Some(t)
+}
+
 /// ballmid ∧ ballright (a ball 10⁻⁶ inside another, no contact), torus ∧ innerball (touching
 /// along shared edges), ballahead and ballabehind (touching at one point from outside) and
 /// ballmid and ballleft (touching at one vertex from inside), every operation, against exact
 /// mode.
 #[test]
 fn shared_meshes_in_float_mode() {
-    if !common::data_available() {
-        return;
-    }
-    let eps = 1e-9;
-    let mut t = Tally::default();
-    for (a, b) in [
+    let pairs = [
         ("ballmid.obj", "ballright.obj"),
         ("torus.obj", "innerball.obj"),
         ("ballahead.obj", "ballabehind.obj"),
         ("ballmid.obj", "ballleft.obj"),
-    ] {
-        compare(&mut t, &data_pair(a, eps), &data_pair(b, eps), eps, &OPS);
-    }
+    ];
+    let Some(t) = compare_shared(&pairs, &OPS) else {
+        return;
+    };
     eprintln!("3D float vs exact on shared meshes: {t:?}");
     assert_eq!(t.comparisons, 20);
 }
@@ -590,12 +600,8 @@ fn shared_meshes_in_float_mode() {
 /// five operations.
 #[test]
 fn crossing_meshes_meet_in_float_mode() {
-    if !common::data_available() {
+    let Some(t) = compare_shared(&[("ballmid.obj", "torus.obj")], &["meet"]) else {
         return;
-    }
-    let eps = 1e-9;
-    let mut t = Tally::default();
-    let (a, b) = (data_pair("ballmid.obj", eps), data_pair("torus.obj", eps));
-    compare(&mut t, &a, &b, eps, &["meet"]);
+    };
     assert_eq!(t.comparisons, 1);
 }
