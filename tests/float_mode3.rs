@@ -561,7 +561,7 @@ fn data_pair(name: &str, eps: f64) -> (Y3, F3) {
     (exact_of(&f).expect("exactly valid"), f)
 }
 
-/// Every operation of `ops` on each pair of meshes of ../shared/data/3d (ε = 10⁻⁹) in both
+/// The operations `ops` on each pair of meshes of ../shared/data/3d (ε = 10⁻⁹) in both
 /// modes; `None` without the data.
 fn compare_shared(pairs: &[(&str, &str)], ops: &[&str]) -> Option<Tally> {
     if !common::data_available() {
