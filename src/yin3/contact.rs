@@ -1,11 +1,12 @@
 //! How two triangles of different float operands meet, decided from exact orientations of their
 //! `f64` corners (seed 004 step 1 for the cases [`super::transversal`] constructs without the
 //! general arrangement). Where two triangles cross, each meets the line of the two planes in a
-//! segment — from one straddling edge's pierce point to the other's, or from a shared corner to
-//! the opposite edge's — and the triangles meet in the overlap of the two segments. Each end of
-//! the overlap is an end of one segment strictly inside the other (a pierce point), an end of
-//! both (an edge of one operand through an edge of the other, or the shared corner), and is
-//! named by what defines it, so that every pair that finds it finds the same point.
+//! segment — from one straddling edge's pierce point to the other's, or from a shared corner
+//! or a vertex on the other's plane to the opposite edge's — and the triangles meet in the
+//! overlap of the two segments. Each end of the overlap is an end of one segment strictly
+//! inside the other (a pierce point or a vertex inside the other triangle) or an end of both
+//! (an edge of one operand through an edge of the other, or the shared corner), and is named
+//! by what defines it, so that every pair that finds it finds the same point.
 
 use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
@@ -27,6 +28,8 @@ pub(super) enum End {
     Edges(Edge, Edge, usize),
     /// A corner of operand 0 (global index) equal to a corner of operand 1.
     Corner(usize, usize),
+    /// A vertex of one operand (global index) inside a triangle (global index) of the other.
+    Vertex(usize, usize),
 }
 
 /// How two triangles of different operands meet.
@@ -40,8 +43,8 @@ pub(super) enum Contact {
     /// Meeting only in a shared corner or a shared edge: the pairs of equal corners (t's, s's;
     /// one pair twice for a corner).
     Touch([[usize; 2]; 2]),
-    /// Meeting otherwise (overlapping in a plane, a vertex on the other away from a shared
-    /// corner, a shared corner with a coplanar edge or face): not handled here.
+    /// Meeting otherwise (overlapping in a plane, an edge on the other's plane, a vertex on an
+    /// edge of the other, a shared corner with a coplanar edge or face): not handled here.
     Degenerate,
 }
 
@@ -107,9 +110,9 @@ pub(super) fn contact<N: Num>(
 
 /// [`contact`] of triangles `t` and `s` with a vertex on the other's plane (`s_sides`: s's
 /// vertices against t's plane; `t_sides`: t's against s's): apart if [`tri::apart`] shows it
-/// where they share no corner; a touch in one shared corner or one shared edge; crossing from
-/// one shared corner where both triangles' other corners straddle the other's plane
-/// ([`through_corner`]); else degenerate.
+/// where they share no corner, else as [`on_plane`] finds; a touch in one shared corner or one
+/// shared edge; crossing from one shared corner where both triangles' other corners straddle
+/// the other's plane ([`through_corner`]); else degenerate.
 fn touch<N: Num>(
     p: &[[f64; 3]],
     corners: &[&Point3<N>],
@@ -129,7 +132,7 @@ fn touch<N: Num>(
             if tri::apart(t.map(|v| corners[v]), s.map(|v| corners[v]), &ctx) {
                 Contact::Apart
             } else {
-                Contact::Degenerate
+                on_plane(p, (ti, t), (si, s), [s_sides, t_sides])
             }
         }
         (Some([x, y]), None, _) => {
@@ -191,6 +194,89 @@ fn through_corner(
     Contact::Cross([End::Corner(x, y), far])
 }
 
+/// Triangles `t` and `s` sharing no corner, with a vertex on the other's plane (`sides` as in
+/// [`touch`]). Unless one has an edge on the other's plane, each meets the planes' line in a
+/// segment or a point whose ends are its vertices on the other's plane and its straddling
+/// edges' pierce points, each the point where a line (f₀, f₁) through f₀ meets that plane, f₁
+/// off it. Such a point lies strictly inside the other triangle iff it lies left of all three
+/// of its edges e, that is, iff orient3d(e₀, e₁, f₀, f₁) has the sign of f₁'s side for each;
+/// on one edge only, a pierce point is where the two edges cross ([`End::Edges`]). The ends of
+/// the overlap are the ends of either strictly inside the other and those crossing edges; a
+/// vertex on an edge of the other, or an edge through a vertex, is degenerate.
+fn on_plane(
+    p: &[[f64; 3]],
+    (ti, t): (usize, [usize; 3]),
+    (si, s): (usize, [usize; 3]),
+    [s_sides, t_sides]: [&[Ordering; 3]; 2],
+) -> Contact {
+    let (Some(t_ends), Some(s_ends)) = (line_ends(t, t_sides, si), line_ends(s, s_sides, ti))
+    else {
+        return Contact::Degenerate;
+    };
+    let mut ends: Vec<End> = Vec::with_capacity(2);
+    for (mine, host) in [(&s_ends, t), (&t_ends, s)] {
+        for &(end, (f0, f1), side) in mine {
+            let signs = [0, 1, 2].map(|k| {
+                let (e0, e1) = (host[k], host[(k + 1) % 3]);
+                exact_orient3d_f64(p[e0], p[e1], p[f0], p[f1])
+            });
+            let on: Vec<usize> = (0..3).filter(|&k| signs[k] == Equal).collect();
+            if signs.iter().any(|&o| o != Equal && o != side) {
+                continue;
+            }
+            let found = match (&on[..], end) {
+                ([], _) => end,
+                (&[k], End::Pierce(f, _)) => {
+                    let e = key(host[k], host[(k + 1) % 3]);
+                    match host == t {
+                        true => End::Edges(e, f, si),
+                        false => End::Edges(f, e, si),
+                    }
+                }
+                _ => return Contact::Degenerate,
+            };
+            if !ends.contains(&found) {
+                ends.push(found);
+            }
+        }
+    }
+    match ends[..] {
+        [] => Contact::Apart,
+        [x @ (End::Edges(..) | End::Vertex(..))] => Contact::Cross([x, x]),
+        [x, y] => Contact::Cross([x, y]),
+        _ => Contact::Degenerate,
+    }
+}
+
+/// An end of a triangle's meet with the planes' line, with a line (f₀, f₁) through it, f₁ off
+/// the other's plane, and f₁'s side of it ([`on_plane`]).
+type LineEnd = (End, (usize, usize), Ordering);
+
+/// The ends of triangle `tri`'s meet with the planes' line, its vertices' sides of the other
+/// triangle's plane `sides` (not all on one side, the other triangle `other`): each with a line
+/// (f₀, f₁) through it, f₁ off the plane, and f₁'s side ([`on_plane`]); `None` if an edge lies
+/// on the plane.
+fn line_ends(tri: [usize; 3], sides: &[Ordering; 3], other: usize) -> Option<Vec<LineEnd>> {
+    let on: Vec<usize> = (0..3).filter(|&k| sides[k] == Equal).collect();
+    match on[..] {
+        [] => Some(
+            straddling(tri, sides)
+                .map(|(e, side)| (End::Pierce(key(e.0, e.1), other), e, side))
+                .to_vec(),
+        ),
+        [k] => {
+            let (v, a, b) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
+            let (sa, sb) = (sides[(k + 1) % 3], sides[(k + 2) % 3]);
+            let mut ends = vec![(End::Vertex(v, other), (v, a), sa)];
+            if sa != sb {
+                ends.push((End::Pierce(key(a, b), other), (a, b), sb));
+            }
+            Some(ends)
+        }
+        _ => None,
+    }
+}
+
 /// True if no vertex lies on the plane and all lie on one side of it.
 fn one_side(sides: &[Ordering; 3]) -> bool {
     sides[0] != Equal && sides[0] == sides[1] && sides[1] == sides[2]
@@ -247,11 +333,29 @@ mod tests {
             contact_of(t, [[2.0, 0.0, 0.0], [2.0, 1.0, 1.0], [3.0, 0.0, -1.0]]),
             Contact::Apart
         ));
-        assert!(degenerate([
-            [0.5, 0.2, 0.0],
-            [2.0, 1.0, 1.0],
-            [3.0, 0.0, -1.0]
-        ]));
+    }
+
+    /// A vertex of s inside t: where s's other corners straddle t's plane, they cross from the
+    /// vertex to where t's long edge (points 1–2) leaves s's plane; where both lie above it,
+    /// they meet in the vertex alone (the end twice). A vertex on t's edge is degenerate.
+    #[test]
+    fn a_vertex_inside_the_other_ends_the_overlap() {
+        let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        let through = contact_of(t, [[0.5, 0.2, 0.0], [2.0, 1.0, 1.0], [3.0, 0.0, -1.0]]);
+        let Contact::Cross(ends) = through else {
+            panic!("not a crossing: {through:?}");
+        };
+        assert!(ends.contains(&End::Vertex(3, 0)), "{ends:?}");
+        assert!(ends.contains(&End::Pierce((1, 2), 1)), "{ends:?}");
+        let touching = contact_of(t, [[0.2, 0.2, 0.0], [1.0, 1.0, 1.0], [0.0, 1.0, 1.0]]);
+        assert!(
+            matches!(touching, Contact::Cross(ends) if ends == [End::Vertex(3, 0); 2]),
+            "{touching:?}"
+        );
+        assert!(matches!(
+            contact_of(t, [[0.5, 0.0, 0.0], [1.0, 1.0, 1.0], [1.0, -1.0, -1.0]]),
+            Contact::Degenerate
+        ));
     }
 
     /// Through a shared corner, the triangles cross from it to the nearer end: t (in z = 0,

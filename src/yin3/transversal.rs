@@ -1,19 +1,20 @@
 //! The meet of two float sets whose boundaries cross transversally (seed 004 steps 1–5 for the
 //! generic case; README, "3D float mode"): every pair of triangles of different operands
 //! misses, crosses along a segment whose inside runs through both triangles' insides, or
-//! touches in a shared corner or edge ([`super::contact`]) — no vertex on the other's plane but
-//! a shared corner, no triangles crossing along an edge. Then everything the general
-//! arrangement decides with constructed points is decided from exact orientations of the `f64`
-//! input vertices:
+//! touches in a shared corner or edge ([`super::contact`]) — no vertex on an edge of the other,
+//! no edge on the other's plane. Then everything the general arrangement decides with
+//! constructed points is decided from exact orientations of the `f64` input vertices:
 //! - each end of a crossing segment is where an edge of one operand pierces a triangle of the
-//!   other, where an edge of one crosses an edge of the other, or a shared corner; each
-//!   constructed point is named by what defines it and constructed exactly once;
+//!   other, where an edge of one crosses an edge of the other, a vertex of one inside a
+//!   triangle of the other, or a shared corner; each constructed point is named by what
+//!   defines it and constructed exactly once;
 //! - a pierce point lies on the edge's triangles and in the pierced triangle, crossing edges'
-//!   point on both edges' triangles, and nowhere else;
+//!   point on both edges' triangles, a vertex also in the triangle it lies in, and nowhere
+//!   else;
 //! - membership is constant on patches (pieces of one operand joined across edges that are
 //!   neither crossing segments nor shared edges) and flips across every crossing segment, so
 //!   one ray per connected surface and per patch that flips cannot reach, from an input vertex
-//!   that is not a shared corner, decides every patch; shared corners become one point in the
+//!   off the other boundary, decides every patch; shared corners become one point in the
 //!   meet.
 //!
 //! Where no pair meets at all, each glued surface lies wholly inside or outside the other
@@ -55,6 +56,9 @@ struct Seams {
     shared: HashSet<Edge>,
     /// Operand 1's shared corners, to operand 0's equal ones.
     same: HashMap<usize, usize>,
+    /// The input vertices on the other operand's boundary: shared corners (both indices) and
+    /// vertices inside the other's triangles.
+    on_other: HashSet<usize>,
 }
 
 /// A constructed point where the boundaries meet, by what defines it ([`End`]).
@@ -64,6 +68,8 @@ enum Site {
     Pierce(Edge, usize),
     /// An edge of operand 0 through an edge of operand 1.
     Edges(Edge, Edge),
+    /// A vertex inside a triangle (an input point: nothing to construct).
+    Vertex(usize, usize),
 }
 
 /// The points constructed where the boundaries meet, each once, numbered from `first`: each on
@@ -90,7 +96,8 @@ impl Sites {
     }
 
     /// The index of the point `end` in operand 0's triangles and in operand 1's: a corner's
-    /// own in each, a constructed point's (numbered on first sight) in both.
+    /// own in each, a vertex's own in both (put inside its triangle on first sight), a
+    /// constructed point's (numbered on first sight) in both.
     fn at(&mut self, end: End) -> (usize, usize) {
         let (site, made, edges, inside) = match end {
             End::Pierce(edge, tri) => {
@@ -99,6 +106,12 @@ impl Sites {
             }
             End::Edges(e, f, tri) => (Site::Edges(e, f), (e, tri), [Some(e), Some(f)], None),
             End::Corner(x, y) => return (x, y),
+            End::Vertex(v, tri) => {
+                if self.index.insert(Site::Vertex(v, tri), v).is_none() {
+                    self.extra[tri].push(v);
+                }
+                return (v, v);
+            }
         };
         let next = self.first + self.made.len();
         let v = *self.index.entry(site).or_insert(next);
@@ -263,6 +276,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     let mut seams = Seams::default();
     for &[e0, e1] in &touching {
         seams.same.extend([(e0[1], e0[0]), (e1[1], e1[0])]);
+        seams.on_other.extend(e0.into_iter().chain(e1));
         if e0 != e1 {
             seams.shared.extend([key(e0[0], e1[0]), key(e0[1], e1[1])]);
         }
@@ -273,8 +287,15 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); tris.len()];
     for &(t, s, ends) in &crossings {
         let [(pt, ps), (qt, qs)] = ends.map(|end| {
-            if let End::Corner(x, y) = end {
-                seams.same.insert(y, x);
+            match end {
+                End::Corner(x, y) => {
+                    seams.same.insert(y, x);
+                    seams.on_other.extend([x, y]);
+                }
+                End::Vertex(v, _) => {
+                    seams.on_other.insert(v);
+                }
+                _ => {}
             }
             sites.at(end)
         });
@@ -559,18 +580,22 @@ fn inside<N: Num>(
         next[x].push(y);
         next[y].push(x);
     }
-    let shared: HashSet<usize> = seams.same.iter().flat_map(|(&y, &x)| [x, y]).collect();
     let mut side: Vec<Option<bool>> = vec![None; pieces.len()];
     for (i, (piece, _)) in pieces.iter().enumerate() {
         let root = uf.find(i);
         if side[root].is_some() {
             continue;
         }
-        let Some(&v) = piece.iter().find(|&&v| v < inputs && !shared.contains(&v)) else {
+        let o = operand(i);
+        // An input vertex of the piece's own operand, off the other's boundary.
+        let own = [0..points_a, points_a..inputs];
+        let Some(&v) = piece
+            .iter()
+            .find(|&&v| own[o].contains(&v) && !seams.on_other.contains(&v))
+        else {
             continue;
         };
-        let o = operand(i);
-        let q = &ops[o].points[if o == 0 { v } else { v - points_a }];
+        let q = &ops[o].points[v - own[o].start];
         side[root] = Some(rays.inside_other(o, q));
         let mut stack = vec![root];
         while let Some(x) = stack.pop() {
@@ -828,8 +853,9 @@ mod tests {
         }
     }
 
-    /// Overlapping coplanar faces, a shared face, a vertex on a face and a face that crosses
-    /// the other from a shared corner along one of its edges are declined.
+    /// Overlapping coplanar faces, a shared face, a vertex on an edge (the top face's diagonal)
+    /// and a face that crosses the other from a shared corner along one of its edges are
+    /// declined.
     #[test]
     fn declines_degenerate_pairs() {
         let still = [[0.0; 3]; 8];
@@ -916,9 +942,9 @@ mod tests {
     }
 
     /// The kinds of contact between the triangles of two float sets: crossing edges, crossing
-    /// through shared corners, meeting in one point only, and touching in a shared edge where
-    /// other triangles cross.
-    fn crossing_kinds(a: &YinSet3<Float>, b: &YinSet3<Float>) -> [bool; 4] {
+    /// through shared corners, meeting in one point only, touching in a shared edge where
+    /// other triangles cross, and a vertex inside the other's triangle.
+    fn crossing_kinds(a: &YinSet3<Float>, b: &YinSet3<Float>) -> [bool; 5] {
         let (x, y) = (a.brep().unwrap(), b.brep().unwrap());
         let points: Vec<Point3<Float>> = x.points.iter().chain(&y.points).cloned().collect();
         let p: Vec<[f64; 3]> = points.iter().map(|q| q.to_f64()).collect();
@@ -928,7 +954,7 @@ mod tests {
             .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
             .collect();
         let planes: Vec<OnceLock<PlaneF64>> = tris.iter().map(|_| OnceLock::new()).collect();
-        let (mut kinds, mut edge_touch, mut cross) = ([false; 4], false, false);
+        let (mut kinds, mut edge_touch, mut cross) = ([false; 5], false, false);
         for t in 0..x.tris.len() {
             for s in x.tris.len()..tris.len() {
                 match contact(&p, &planes, &corners, (t, tris[t]), (s, tris[s])) {
@@ -937,6 +963,7 @@ mod tests {
                         for end in ends {
                             kinds[0] |= matches!(end, End::Edges(..));
                             kinds[1] |= matches!(end, End::Corner(..));
+                            kinds[4] |= matches!(end, End::Vertex(..));
                         }
                         kinds[2] |= ends[0] == ends[1];
                     }
@@ -989,7 +1016,7 @@ mod tests {
         use rand::{RngExt, SeedableRng};
         let mut rng = rand::rngs::StdRng::seed_from_u64(18);
         let cube = jittered_cube([0.0; 3], 2.0, &[[0.0; 3]; 8]);
-        let (mut taken, mut rounded, mut meets) = ([0usize; 4], 0, 0);
+        let (mut taken, mut rounded, mut meets) = ([0usize; 5], 0, 0);
         for _ in 0..3000 {
             let a = match rng.random_bool(0.5) {
                 true => cube.clone(),
