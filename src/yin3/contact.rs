@@ -38,7 +38,8 @@ pub(super) enum Contact {
     /// Disjoint.
     Apart,
     /// Crossing along the segment between two ends; one end twice where they meet in one
-    /// point only, an edge of each crossing the other's ([`End::Edges`]).
+    /// point only: an edge of each crossing the other's ([`End::Edges`]) or a vertex inside
+    /// the other ([`End::Vertex`]).
     Cross([End; 2]),
     /// Meeting only in a shared corner or a shared edge: the pairs of equal corners (t's, s's;
     /// one pair twice for a corner).

@@ -61,7 +61,15 @@ struct Seams {
     on_other: HashSet<usize>,
 }
 
-/// A constructed point where the boundaries meet, by what defines it ([`End`]).
+impl Seams {
+    /// Records operand 1's corner `y`, equal to operand 0's corner `x`.
+    fn corner(&mut self, x: usize, y: usize) {
+        self.same.insert(y, x);
+        self.on_other.extend([x, y]);
+    }
+}
+
+/// A point where the boundaries meet, by what defines it ([`End`]).
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 enum Site {
     /// An edge through a triangle's interior.
@@ -72,8 +80,9 @@ enum Site {
     Vertex(usize, usize),
 }
 
-/// The points constructed where the boundaries meet, each once, numbered from `first`: each on
-/// the sides of its edges' triangles (`on_edge`), a pierce point inside its triangle (`extra`).
+/// The points where the boundaries meet, each once: constructed ones numbered from `first`,
+/// each on the sides of its edges' triangles (`on_edge`); a pierce point or a vertex inside its
+/// triangle (`extra`).
 struct Sites {
     first: usize,
     index: HashMap<Site, usize>,
@@ -275,8 +284,8 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     }
     let mut seams = Seams::default();
     for &[e0, e1] in &touching {
-        seams.same.extend([(e0[1], e0[0]), (e1[1], e1[0])]);
-        seams.on_other.extend(e0.into_iter().chain(e1));
+        seams.corner(e0[0], e0[1]);
+        seams.corner(e1[0], e1[1]);
         if e0 != e1 {
             seams.shared.extend([key(e0[0], e1[0]), key(e0[1], e1[1])]);
         }
@@ -288,10 +297,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     for &(t, s, ends) in &crossings {
         let [(pt, ps), (qt, qs)] = ends.map(|end| {
             match end {
-                End::Corner(x, y) => {
-                    seams.same.insert(y, x);
-                    seams.on_other.extend([x, y]);
-                }
+                End::Corner(x, y) => seams.corner(x, y),
                 End::Vertex(v, _) => {
                     seams.on_other.insert(v);
                 }
