@@ -34,6 +34,26 @@ pub(crate) fn betti<N: Num>(
     ctx: &N::Ctx,
 ) -> Betti3 {
     let b2 = closed_complement_components(points, tris, table, ctx) - usize::from(bounded);
+    let chi_surface = link_sum(points, tris, table, ctx) - tris.len() as i64 / 2;
+    let chi = chi_surface / 2 + i64::from(!bounded);
+    let b1 = atoms as i64 + b2 as i64 - chi;
+    Betti3 {
+        b0: atoms,
+        b1: usize::try_from(b1).unwrap_or_else(|_| {
+            panic!("negative b1 = {b1} (b0 = {atoms}, b2 = {b2}, χ = {chi}): a kernel bug")
+        }),
+        b2,
+    }
+}
+
+/// Σ_p (2 r_p − l_p) over the vertices p of the closed complex `tris` (fin table `table`):
+/// l_p 𝒴-cycles at p, and r_p faces of p's link in 𝒴 (module docs).
+pub(crate) fn link_sum<N: Num>(
+    points: &[Point3<N>],
+    tris: &[[usize; 3]],
+    table: &FinTable,
+    ctx: &N::Ctx,
+) -> i64 {
     let mut inside = corner_cycles(table, tris, None, Pairing::Inside);
     let mut outside = corner_cycles(table, tris, None, Pairing::Outside);
     let mut link = UnionFind::new(3 * tris.len());
@@ -90,16 +110,7 @@ pub(crate) fn betti<N: Num>(
         };
         sum += 2 * r - l;
     }
-    let chi_surface = sum - tris.len() as i64 / 2;
-    let chi = chi_surface / 2 + i64::from(!bounded);
-    let b1 = atoms as i64 + b2 as i64 - chi;
-    Betti3 {
-        b0: atoms,
-        b1: usize::try_from(b1).unwrap_or_else(|_| {
-            panic!("negative b1 = {b1} (b0 = {atoms}, b2 = {b2}, χ = {chi}): a kernel bug")
-        }),
-        b2,
-    }
+    sum
 }
 
 /// The corner of triangle `t` at vertex `v`.

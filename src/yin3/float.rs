@@ -37,7 +37,7 @@ pub(crate) fn float_meet<N: Num>(
             let moved = moved(&rounded, &points);
             let exact = || Ok(Topology::of(&Brep::assemble(points.clone(), kept.clone())?));
             return Ok(YinSet3::from_brep(
-                rounded_complex(rounded, &moved, kept.clone(), exact)?,
+                rounded_complex(rounded, &moved, &points, kept.clone(), exact)?,
                 ctx,
             ));
         }
@@ -98,7 +98,9 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
             .clone()
             .map_points(|_| points.next().expect("one rounded point per point")));
     }
-    rounded_complex(rounded, &moved, b.tris.clone(), || Ok(Topology::of(b)))
+    rounded_complex(rounded, &moved, &b.points, b.tris.clone(), || {
+        Ok(Topology::of(b))
+    })
 }
 
 /// For each exact point, whether its rounding in `rounded` differs from it.
@@ -119,9 +121,9 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
         .collect()
 }
 
-/// The boundary of a valid set — the triangles `tris` over exact points, compact and
-/// conforming, as the validator would rebuild it — with each point replaced by its rounding in
-/// `rounded` (`moved` where it differs). If none moved, it is the exact boundary. If no two
+/// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
+/// and conforming, as the validator would rebuild it — with each point replaced by its rounding
+/// in `rounded` (`moved` where it differs). If none moved, it is the exact boundary. If no two
 /// points round to one, only the triangles at moved points are checked against their
 /// neighbours ([`conforming_after_moves`]), else the whole boundary is validated. Otherwise
 /// vertices that round to one point are merged, triangles that collapse to a segment or a
@@ -132,6 +134,7 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 fn rounded_complex<N: Num>(
     rounded: Vec<Point3<N>>,
     moved: &[bool],
+    exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
     keep: impl FnOnce() -> Result<Topology, Yin3Error>,
 ) -> Result<Brep<N>, Yin3Error> {
@@ -140,7 +143,7 @@ fn rounded_complex<N: Num>(
         return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
     }
     let (brep, same_triangles) = rounded_boundary(rounded, moved, tris)?;
-    if same_triangles && provably_kept(&brep) {
+    if same_triangles && provably_kept(&brep, exact) {
         return Ok(brep);
     }
     let (keep, got) = (keep()?, Topology::of(&brep));
