@@ -491,6 +491,12 @@ impl Num for Float {
         self.0
     }
 
+    fn fraction(&self) -> (num_bigint::BigInt, num_bigint::BigInt) {
+        Rational::from_f64(self.0)
+            .expect("float sets have finite coordinates")
+            .fraction()
+    }
+
     fn sign(&self) -> Ordering {
         self.0.total_cmp(&0.0)
     }

@@ -71,6 +71,19 @@ impl Num for GmpRational {
         self.0.to_f64()
     }
 
+    fn fraction(&self) -> (num_bigint::BigInt, num_bigint::BigInt) {
+        let big = |i: &Integer| {
+            let magnitude =
+                num_bigint::BigUint::from_bytes_le(&i.to_digits::<u8>(rug::integer::Order::Lsf));
+            let sign = match i.cmp0() {
+                Ordering::Less => num_bigint::Sign::Minus,
+                _ => num_bigint::Sign::Plus,
+            };
+            num_bigint::BigInt::from_biguint(sign, magnitude)
+        };
+        (big(self.0.numer()), big(self.0.denom()))
+    }
+
     fn sign(&self) -> Ordering {
         self.0.cmp0()
     }
@@ -95,5 +108,20 @@ mod tests {
         let x = GmpRational::parse("4.5040114e+00").unwrap();
         assert_eq!(x.0, Rational::from((45040114, 10_000_000)));
         assert_eq!(GmpRational::parse("1/3").unwrap().0, Rational::from((1, 3)));
+    }
+
+    /// The fraction in lowest terms, sign on the numerator, beyond 64 bits.
+    #[test]
+    fn fraction_is_the_exact_value() {
+        let big = |s: &str| s.parse::<num_bigint::BigInt>().unwrap();
+        let x = GmpRational::parse("-123456789012345678901234567890/4").unwrap();
+        assert_eq!(
+            x.fraction(),
+            (big("-61728394506172839450617283945"), big("2"))
+        );
+        assert_eq!(
+            GmpRational::parse("0").unwrap().fraction(),
+            (big("0"), big("1"))
+        );
     }
 }

@@ -26,6 +26,7 @@ pub(crate) use interval::Interval;
 pub use literal::Literal;
 pub use rational::Rational;
 
+use num_bigint::BigInt;
 use std::cmp::Ordering;
 use std::fmt::{Debug, Display};
 use std::hash::Hash;
@@ -92,6 +93,10 @@ pub trait Num:
 
     /// The nearest `f64` (for output and rendering, never for exact decisions).
     fn to_f64(&self) -> f64;
+
+    /// The exact value as a numerator and a positive denominator (float backends: of the
+    /// `f64` value; panics if it is not finite).
+    fn fraction(&self) -> (BigInt, BigInt);
 
     /// An `f64` within 4 ulps of the value (relative; within 2⁻¹⁰⁶² absolute below the normal
     /// range), or NaN or an infinity when out of range: the input of floating-point filters,

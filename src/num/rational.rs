@@ -514,6 +514,10 @@ impl Num for Rational {
         approx(self)
     }
 
+    fn fraction(&self) -> (BigInt, BigInt) {
+        (self.numer(), self.denom())
+    }
+
     fn to_f64(&self) -> f64 {
         // At most 53 significant bits: exact as an f64 (every dyadic value read from an f64,
         // whatever its power-of-two denominator, is such a pair).

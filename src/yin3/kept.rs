@@ -143,8 +143,8 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> 
         .zip(&boxes)
         .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
         && (!pinched
-            || link_sum(exact, &b.tris, &b.table, &())
-                == link_sum(&exact_points(&b.points), &b.tris, &b.table, &()))
+            || link_sum(exact, &b.tris, &b.table)
+                == link_sum(&exact_points(&b.points), &b.tris, &b.table))
 }
 
 /// The box `[min, max]` of the points `p[v]` for the indices `v`.

@@ -13,6 +13,7 @@ mod geom;
 mod glue;
 mod hasse;
 mod kept;
+mod link;
 mod locate;
 mod meet;
 mod ops;
