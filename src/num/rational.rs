@@ -199,18 +199,23 @@ impl Rational {
         }
         // v = ±m·2^e with m odd, m < 2^53: small as m·2^e while that is below 2^62 (integers
         // such as grid coordinates, however many trailing zeros) or as m / 2^−e for e ≥ −61
-        // (both terms below 2^62).
-        if v.is_finite() {
-            let (m, e) = odd_decode(v);
-            let m = i128::from(m);
-            if e >= 0 && 128 - m.unsigned_abs().leading_zeros() as i32 + e <= 62 {
-                return Some(lowest(m << e, 1));
-            }
-            if (-61..0).contains(&e) {
-                return Some(lowest(m, 1 << -e));
-            }
+        // (both terms below 2^62); else big, already in lowest terms (m odd), no gcd taken.
+        if !v.is_finite() {
+            return None;
         }
-        BigRational::from_float(v).map(from_big)
+        let (m, e) = odd_decode(v);
+        let m = i128::from(m);
+        if e >= 0 && 128 - m.unsigned_abs().leading_zeros() as i32 + e <= 62 {
+            return Some(lowest(m << e, 1));
+        }
+        if (-61..0).contains(&e) {
+            return Some(lowest(m, 1 << -e));
+        }
+        let (m, one) = (BigInt::from(m), BigInt::from(1));
+        Some(from_big(match e >= 0 {
+            true => BigRational::new_raw(m << e, one),
+            false => BigRational::new_raw(m, one << -e),
+        }))
     }
 
     /// The numerator (lowest terms; carries the sign).
