@@ -242,8 +242,10 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     );
     // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
     // ends it.
-    let search = |q: usize| {
-        let (mut crossing, mut touching) = (Vec::new(), Vec::new());
+    // The crossing and the touching pairs found so far, to which `search` adds those of the
+    // triangle q.
+    type Found = (Vec<(usize, usize, [End; 2])>, Vec<[[usize; 2]; 2]>);
+    let search = |(mut crossing, mut touching): Found, q: usize| -> Option<Found> {
         let generic = meeting_boxes(tree.root(), &boxes[q], &mut |g| {
             let (t, s) = if flip { (g, q) } else { (q, g) };
             match contact(&f64s, &planes, &corners, (t, tris[t]), (s, tris[s])) {
@@ -257,12 +259,19 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         generic.then_some((crossing, touching))
     };
     let parallel = tris.len() >= PARALLEL_FROM;
-    let found: Vec<(Vec<_>, Vec<_>)> = map_all(&near, parallel, |&t| search(t))
-        .into_iter()
-        .collect::<Option<_>>()?;
-    let (crossings, touching): (Vec<_>, Vec<_>) = found.into_iter().unzip();
-    let crossings: Vec<(usize, usize, [End; 2])> = crossings.into_iter().flatten().collect();
-    let touching: Vec<[[usize; 2]; 2]> = touching.into_iter().flatten().collect();
+    let (crossings, touching) = if parallel {
+        let join = |(mut c, mut t): Found, (c1, t1): Found| {
+            c.extend(c1);
+            t.extend(t1);
+            Some((c, t))
+        };
+        near.par_iter()
+            .try_fold(Found::default, |found, &q| search(found, q))
+            .try_reduce(Found::default, join)?
+    } else {
+        near.iter()
+            .try_fold(Found::default(), |found, &q| search(found, q))?
+    };
     let rays = Rays::new([a, b]);
     if crossings.is_empty() && !touching.is_empty() {
         return touching_meet(&touching, &rays);
