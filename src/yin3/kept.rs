@@ -9,7 +9,7 @@ use super::glue::corner_cycles;
 use super::set::Brep;
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
-use foldhash::{HashSet, HashSetExt};
+use std::cell::OnceCell;
 
 /// What rounding must keep of a set: the [`Invariants`] of the set and of its complement. The
 /// set's alone do not fix the complement's: two pieces that rounding makes touch in two places
@@ -88,15 +88,20 @@ const U: f64 = f64::EPSILON / 2.0;
 /// Sufficient: both boundaries are valid and every edge has two fins, so the glued surfaces
 /// and corner cycles are the same, and the topology of the set and of its complement is each
 /// surface's orientation, which surfaces lie inside which, and at each vertex with several
-/// corner cycles the faces of its link in 𝒴 (Σ r_p, [`link_sum`]; the complement's are the
-/// others). Each surface's signed volume (positive iff it is positively oriented, Def. 7.3)
+/// corner cycles the faces of its link in 𝒴 (Σ r_p, [`link_sum`]; the link is l_p disjoint
+/// circles, so l_p + 1 faces, and the complement's r_p is l_p + 1 minus the set's: equal sums
+/// for the set mean equal sums for the complement). Each surface's signed volume (positive iff it is positively oriented, Def. 7.3)
 /// must be farther from 0 than rounding and the `f64` sum can move it; two surfaces whose boxes
 /// come within the rounding of each other must each have a vertex off the other and farther
 /// from each of its triangles than twice the rounding (then moving every vertex straight from
 /// its exact to its rounded place never moves the surface through that vertex, so the
-/// winding number about it, nesting, is kept); surfaces farther apart are nested in neither
+/// winding number about it is kept; in both versions surfaces meet only in shared vertices,
+/// so that winding number is the one about every other point of the surface, nesting);
+/// surfaces farther apart are nested in neither
 /// version; and the link sums are compared exactly where a vertex has several corner cycles.
 pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> bool {
+    // Two fins per edge also make the fin table (built on the rounded points) the exact
+    // points' own: with two fins there is no order to sort.
     if b.table.fins.iter().any(|f| f.len() != 2) {
         return false;
     }
@@ -134,14 +139,15 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> 
         .collect();
     // A difference of f64s above 4·moved is, exactly, above 2·moved.
     let gap = 4.0 * moved;
-    close_pairs(&boxes, gap).iter().all(|&(s, t)| {
-        let (s, t) = (&b.surfaces[s].triangles, &b.surfaces[t].triangles);
-        witnessed(&p, &b.tris, s, t, gap) && witnessed(&p, &b.tris, t, s, gap)
-    }) && b
-        .surfaces
+    let near: Vec<OnceCell<Near>> = b.surfaces.iter().map(|_| OnceCell::new()).collect();
+    let near = |s: usize| near[s].get_or_init(|| Near::of(&p, &b.tris, &b.surfaces[s].triangles));
+    close_pairs(&boxes, gap)
         .iter()
-        .zip(&boxes)
-        .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
+        .all(|&(s, t)| witnessed(&p, near(s), near(t), gap) && witnessed(&p, near(t), near(s), gap))
+        && b.surfaces
+            .iter()
+            .zip(&boxes)
+            .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
         && (!pinched
             || link_sum(exact, &b.tris, &b.table)
                 == link_sum(&exact_points(&b.points), &b.tris, &b.table))
@@ -162,24 +168,35 @@ fn corners_box(p: &[[f64; 3]], vertices: impl Iterator<Item = usize>) -> [[f64; 
 /// Vertices of a surface tried as witnesses that it lies off another ([`witnessed`]).
 const WITNESS_TRIES: usize = 8;
 
-/// True if one of the first [`WITNESS_TRIES`] vertices of the triangles `s` that are not
-/// vertices of the triangles `t` lies, on some axis, more than `gap` beyond the box of each
+/// A surface's vertices (sorted, each once) and its triangles' boxes, for [`witnessed`].
+struct Near {
+    vertices: Vec<usize>,
+    boxes: Vec<[[f64; 3]; 2]>,
+}
+
+impl Near {
+    /// The vertices and triangle boxes of the surface of `triangles` (points `p`).
+    fn of(p: &[[f64; 3]], tris: &[[usize; 3]], triangles: &[usize]) -> Near {
+        let mut vertices: Vec<usize> = triangles.iter().flat_map(|&u| tris[u]).collect();
+        vertices.sort_unstable();
+        vertices.dedup();
+        let boxes = (triangles.iter())
+            .map(|&u| corners_box(p, tris[u].into_iter()))
+            .collect();
+        Near { vertices, boxes }
+    }
+}
+
+/// True if one of the first [`WITNESS_TRIES`] vertices of the surface `s` that are not
+/// vertices of the surface `t` lies, on some axis, more than `gap` beyond the box of each
 /// triangle of `t` (points `p`).
-fn witnessed(p: &[[f64; 3]], tris: &[[usize; 3]], s: &[usize], t: &[usize], gap: f64) -> bool {
-    let on_t: HashSet<usize> = t.iter().flat_map(|&u| tris[u]).collect();
-    let t_boxes: Vec<[[f64; 3]; 2]> = t
-        .iter()
-        .map(|&u| corners_box(p, tris[u].into_iter()))
-        .collect();
-    let mut tried = HashSet::new();
-    s.iter()
-        .flat_map(|&u| tris[u])
-        .filter(|v| !on_t.contains(v) && tried.insert(*v))
+fn witnessed(p: &[[f64; 3]], s: &Near, t: &Near, gap: f64) -> bool {
+    (s.vertices.iter())
+        .filter(|v| t.vertices.binary_search(v).is_err())
         .take(WITNESS_TRIES)
-        .any(|v| {
+        .any(|&v| {
             let q = p[v];
-            t_boxes
-                .iter()
+            (t.boxes.iter())
                 .all(|bx| (0..3).any(|k| q[k] - bx[1][k] > gap || bx[0][k] - q[k] > gap))
         })
 }

@@ -159,9 +159,11 @@ fn first_hit(wedges: &[Wedge], x: &Vector, y: &Vector) -> Option<(usize, bool)> 
     best.map(|(_, _, k, above)| (k, above))
 }
 
-/// An integer vector in the direction of the exact vector `b − a`: its coordinates times the
-/// least common multiple of their denominators.
+/// An integer vector in the direction of the vector `b − a` of exact points (the Betti numbers
+/// are computed on exact points only): its coordinates times the least common multiple of
+/// their denominators.
 fn direction<N: Num>(a: &Point3<N>, b: &Point3<N>) -> Vector {
+    debug_assert!(N::EXACT, "the link is walked on exact points");
     let f = [0, 1, 2].map(|k| (b.coord(k).clone() - a.coord(k).clone()).fraction());
     let l = f.iter().fold(BigInt::one(), |l, (_, d)| l.lcm(d));
     f.map(|(n, d)| n * (&l / d))
