@@ -14,7 +14,7 @@ use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
 /// An integer vector.
-type Vector = [BigInt; 3];
+pub(super) type Vector = [BigInt; 3];
 
 /// r_p where the link of `p` has several components (`groups` of corners): the number of
 /// faces of the link lying in 𝒴, each a class of 𝒴-cycles bounding one face (Janiszewski);
@@ -170,7 +170,7 @@ fn direction<N: Num>(a: &Point3<N>, b: &Point3<N>) -> Vector {
 }
 
 /// x × y.
-fn cross(x: &Vector, y: &Vector) -> Vector {
+pub(super) fn cross(x: &Vector, y: &Vector) -> Vector {
     [0, 1, 2].map(|k| {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
         &x[i] * &y[j] - &x[j] * &y[i]
@@ -178,7 +178,7 @@ fn cross(x: &Vector, y: &Vector) -> Vector {
 }
 
 /// x · y.
-fn dot(x: &Vector, y: &Vector) -> BigInt {
+pub(super) fn dot(x: &Vector, y: &Vector) -> BigInt {
     &x[0] * &y[0] + &x[1] * &y[1] + &x[2] * &y[2]
 }
 

@@ -34,6 +34,7 @@ use super::arrange::retriangulate;
 use super::contact::{contact, key, Contact, Edge, End};
 use super::float::exact_points;
 use super::geom::Chart;
+use super::link::{cross, dot, Vector};
 use super::locate::{winding, TriBoxes};
 use super::set::{compact, Brep};
 use crate::kernel::Point3;
@@ -500,17 +501,9 @@ fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rat
     let (parts, low) = common_grid::<15>(std::array::from_fn(|k| p[corners[k / 3]][k % 3]));
     let int = |(m, shift): (i64, u32)| BigInt::from(m) << shift;
     let [pu, pv, a, b, c] = [0, 1, 2, 3, 4].map(|i| [0, 1, 2].map(|k| int(parts[3 * i + k])));
-    let sub = |x: &[BigInt; 3], y: &[BigInt; 3]| [0, 1, 2].map(|k| &x[k] - &y[k]);
-    let (ab, ac) = (sub(&b, &a), sub(&c, &a));
-    let n = [
-        &ab[1] * &ac[2] - &ab[2] * &ac[1],
-        &ab[2] * &ac[0] - &ab[0] * &ac[2],
-        &ab[0] * &ac[1] - &ab[1] * &ac[0],
-    ];
-    let value = |x: &[BigInt; 3]| {
-        let d = sub(x, &a);
-        &n[0] * &d[0] + &n[1] * &d[1] + &n[2] * &d[2]
-    };
+    let sub = |x: &Vector, y: &Vector| [0, 1, 2].map(|k| &x[k] - &y[k]);
+    let n = cross(&sub(&b, &a), &sub(&c, &a));
+    let value = |x: &Vector| dot(&n, &sub(x, &a));
     let [x, y, z] = Rational::section_point(&value(&pu), &value(&pv), [&pu, &pv], low);
     Point3::new(x, y, z)
 }
