@@ -72,11 +72,13 @@ pub(super) fn contact<N: Num>(
 ) -> Contact {
     let plane =
         |i: usize, [u, v, w]: [usize; 3]| planes[i].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]));
-    let s_sides = s.map(|v| plane(ti, t).side(p[v]));
+    let t_plane = plane(ti, t);
+    let s_sides = s.map(|v| t_plane.side(p[v]));
     if one_side(&s_sides) {
         return Contact::Apart;
     }
-    let t_sides = t.map(|v| plane(si, s).side(p[v]));
+    let s_plane = plane(si, s);
+    let t_sides = t.map(|v| s_plane.side(p[v]));
     if one_side(&t_sides) {
         return Contact::Apart;
     }
@@ -122,21 +124,27 @@ fn touch<N: Num>(
     [s_sides, t_sides]: [&[Ordering; 3]; 2],
 ) -> Contact {
     let ctx = N::exact_ctx();
-    let mut shared = t.iter().flat_map(|&x| {
-        s.iter()
-            .filter(move |&&y| p[x] == p[y])
-            .map(move |&y| [x, y])
-    });
+    // The first three pairs of equal corners (t's, s's).
+    let mut shared = [None; 3];
+    let mut n = 0;
+    for x in t {
+        for y in s {
+            if n < 3 && p[x] == p[y] {
+                shared[n] = Some([x, y]);
+                n += 1;
+            }
+        }
+    }
     let after = |tri: [usize; 3], v: usize| corners_after(tri, v).map(|w| corners[w]);
-    match (shared.next(), shared.next(), shared.next()) {
-        (None, _, _) => {
+    match shared {
+        [None, _, _] => {
             if tri::apart(t.map(|v| corners[v]), s.map(|v| corners[v]), &ctx) {
                 Contact::Apart
             } else {
                 on_plane(p, (ti, t), (si, s), [s_sides, t_sides])
             }
         }
-        (Some([x, y]), None, _) => {
+        [Some([x, y]), None, _] => {
             // The planes' sides of the corners after the shared one, as `contact` found them.
             let sides_after = |tri: [usize; 3], v: usize, sides: &[Ordering; 3]| {
                 let k = tri.iter().position(|&w| w == v).expect("a shared corner");
@@ -149,7 +157,7 @@ fn touch<N: Num>(
                 through_corner(p, (ti, t), (si, s), [x, y], sides)
             }
         }
-        (Some(e0), Some(e1), None) => {
+        [Some(e0), Some(e1), None] => {
             // s's third corner off t's plane, or on it across the shared edge.
             let third = |tri: [usize; 3], k: usize| {
                 (0..3)

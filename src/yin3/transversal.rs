@@ -273,7 +273,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         near.iter()
             .try_fold(Found::default(), |found, &q| search(found, q))?
     };
-    let rays = Rays::new([a, b]);
+    let rays = Rays::new([a, b], &boxes);
     if crossings.is_empty() && !touching.is_empty() {
         return touching_meet(&touching, &rays);
     }
@@ -423,13 +423,13 @@ fn kept(pieces: &[([usize; 3], usize)], inside: &[bool]) -> Vec<[usize; 3]> {
 fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option<Transversal> {
     let ops = rays.ops;
     let na = ops[0].points.len();
-    // Touching corners and edges of each operand, in its own numbering.
-    let mut corners: [HashSet<usize>; 2] = Default::default();
+    // Touching corners (flags by vertex) and edges of each operand, in its own numbering.
+    let mut corners = ops.map(|op| vec![false; op.points.len()]);
     let mut edges: [HashSet<(usize, usize)>; 2] = Default::default();
     for &[e0, e1] in touching {
         for o in 0..2 {
             let (x, y) = (e0[o] - o * na, e1[o] - o * na);
-            corners[o].extend([x, y]);
+            (corners[o][x], corners[o][y]) = (true, true);
             if x != y {
                 edges[o].insert(key(x, y));
             }
@@ -437,9 +437,22 @@ fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option
     }
     let inside = [0, 1].map(|o| {
         let op = ops[o];
+        if edges[o].is_empty() {
+            // Each glued surface is joined across its edges, none of which touches: one
+            // patch, one ray.
+            let mut side = vec![false; op.tris.len()];
+            for s in &op.surfaces {
+                let mut corners_of = s.triangles.iter().flat_map(|&t| op.tris[t]);
+                let v = corners_of.find(|&v| !corners[o][v])?;
+                let inside = rays.inside_other(o, &op.points[v]);
+                s.triangles.iter().for_each(|&t| side[t] = inside);
+            }
+            return Some(side);
+        }
         let mut uf = UnionFind::new(op.tris.len());
         for (e, fins) in op.table.edges.iter().zip(&op.table.fins) {
-            if !edges[o].contains(e) {
+            let touches = corners[o][e.0] && corners[o][e.1] && edges[o].contains(e);
+            if !touches {
                 for f in &fins[1..] {
                     uf.union(fins[0].tri, f.tri);
                 }
@@ -449,7 +462,7 @@ fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option
         for (t, tri) in op.tris.iter().enumerate() {
             let root = uf.find(t);
             if side[root].is_none() {
-                if let Some(&v) = tri.iter().find(|v| !corners[o].contains(v)) {
+                if let Some(&v) = tri.iter().find(|&&v| !corners[o][v]) {
                     side[root] = Some(rays.inside_other(o, &op.points[v]));
                 }
             }
@@ -463,6 +476,9 @@ fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option
     };
     if let Some(o) = whole_operand([&in_b, &in_a]) {
         return Some(Transversal::Operand(o));
+    }
+    if !in_b.contains(&true) && !in_a.contains(&true) {
+        return Some(Transversal::Crossing(Complex::default()));
     }
     // Operand 1's touching corners become operand 0's equal ones: no point occurs twice.
     let same: HashMap<usize, usize> = touching.iter().flatten().map(|&[x, y]| (y, x)).collect();
@@ -624,17 +640,20 @@ fn inside<N: Num>(
 }
 
 /// Rays from points of one operand to the other ([`winding`]): the first few scan every
-/// triangle, later ones an R-tree of the other's boxes, built on first need.
+/// triangle's box, later ones an R-tree of the other's boxes, built on first need.
 struct Rays<'a, N: Num> {
     ops: [&'a Brep<N>; 2],
+    /// The triangles' `f64` boxes, operand 0's first (exact: float points are `f64`s).
+    boxes: &'a [AABB<[f64; 3]>],
     trees: [OnceCell<TriBoxes>; 2],
     cast: Cell<usize>,
 }
 
 impl<'a, N: Num> Rays<'a, N> {
-    fn new(ops: [&'a Brep<N>; 2]) -> Self {
+    fn new(ops: [&'a Brep<N>; 2], boxes: &'a [AABB<[f64; 3]>]) -> Self {
         Rays {
             ops,
+            boxes,
             trees: Default::default(),
             cast: Cell::new(0),
         }
@@ -645,7 +664,15 @@ impl<'a, N: Num> Rays<'a, N> {
         let other = self.ops[1 - o];
         self.cast.set(self.cast.get() + 1);
         let w = if self.cast.get() <= SCANNED_RAYS {
-            winding(other.all_corners(), q, &N::exact_ctx())
+            // Only triangles whose box meets the ray can count ([`TriBoxes::along_x`]).
+            let boxes = &self.boxes[(1 - o) * self.ops[0].tris.len()..];
+            let [x, y, z] = q.to_f64();
+            let meets_ray = |b: &AABB<[f64; 3]>| {
+                let (lo, hi) = (b.lower(), b.upper());
+                hi[0] >= x && (lo[1]..=hi[1]).contains(&y) && (lo[2]..=hi[2]).contains(&z)
+            };
+            let near = (0..other.tris.len()).filter(|&s| meets_ray(&boxes[s]));
+            winding(near.map(|s| other.corners(s)), q, &N::exact_ctx())
         } else {
             let tree = self.trees[1 - o].get_or_init(|| {
                 TriBoxes::new((0..other.tris.len()).map(|s| (s, other.corners(s))))
@@ -1089,7 +1116,8 @@ mod tests {
     }
 
     /// Axis-aligned cubes sharing a corner (their faces at it coplanar) take the touching meet
-    /// and meet in nothing; one of them also as its complement, and the meet is the other.
+    /// and meet in nothing; one of them also as its complement, and the meet is the other; a
+    /// cube touching one of two others and holding the other meets them in that one.
     #[test]
     fn cubes_sharing_a_corner_touch() {
         let still = [[0.0; 3]; 8];
@@ -1103,6 +1131,29 @@ mod tests {
             transversal_meet(a.brep().unwrap(), not_b.brep().unwrap()),
             Some(Transversal::Operand(0))
         ));
+        // Two cubes, one inside the unit cube, one at its corner (1, 1, 1) from outside: no
+        // part of the unit cube's boundary is in them, one of them is in it, and the meet is
+        // that one.
+        let (inner, outer) = (
+            jittered_cube([0.25; 3], 0.5, &still),
+            jittered_cube([1.0; 3], 0.5, &still),
+        );
+        let shift = inner.0.len();
+        let both: Raw = (
+            [inner.0.clone(), outer.0].concat(),
+            (inner.1.iter().cloned())
+                .chain(
+                    outer
+                        .1
+                        .iter()
+                        .map(|f| f.iter().map(|v| v + shift).collect()),
+                )
+                .collect(),
+        );
+        let both = solid::<Float>(&both);
+        for meet in [transversal(&a, &both), transversal(&both, &a)] {
+            assert_eq!(meet.expect("touching"), solid::<Rational>(&inner));
+        }
     }
 
     /// The bipyramid over the square with corners (±1, 0, 0), (0, ±1, 0), apexes at heights
