@@ -48,34 +48,61 @@ pub(crate) fn betti<N: Num>(
 /// Σ_p (2 r_p − l_p) over the vertices p of the closed complex `tris` (fin table `table`):
 /// l_p 𝒴-cycles at p, and r_p faces of p's link in 𝒴 (module docs).
 pub(crate) fn link_sum<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table: &FinTable) -> i64 {
-    let mut inside = corner_cycles(table, tris, None, Pairing::Inside);
-    let mut outside = corner_cycles(table, tris, None, Pairing::Outside);
-    let mut link = UnionFind::new(3 * tris.len());
-    for (e, fins) in table.fins.iter().enumerate() {
-        let (a, b) = table.edges[e];
-        for v in [a, b] {
-            let c0 = corner(tris, fins[0].tri, v);
-            for f in &fins[1..] {
-                link.union(c0, corner(tris, f.tri, v));
-            }
-        }
-    }
+    let mut links = Links::new(tris, table);
     let mut at: Vec<Vec<usize>> = vec![Vec::new(); points.len()];
     for (t, tri) in tris.iter().enumerate() {
         for (k, &v) in tri.iter().enumerate() {
             at[v].push(3 * t + k);
         }
     }
-    let mut sum: i64 = 0;
-    for (p, corners) in at.iter().enumerate() {
-        if corners.is_empty() {
-            continue;
+    (at.iter().enumerate())
+        .filter(|(_, corners)| !corners.is_empty())
+        .map(|(p, corners)| links.term(points, tris, p, corners))
+        .sum()
+}
+
+/// The corners of a closed complex joined three ways: into 𝒴-cycles, into 𝒴'-cycles, and
+/// into the components of each vertex's link (across every fin of an edge).
+pub(crate) struct Links {
+    inside: UnionFind,
+    outside: UnionFind,
+    link: UnionFind,
+}
+
+impl Links {
+    /// The joined corners of the closed complex `tris` with fin table `table`.
+    pub(crate) fn new(tris: &[[usize; 3]], table: &FinTable) -> Links {
+        let mut link = UnionFind::new(3 * tris.len());
+        for (e, fins) in table.fins.iter().enumerate() {
+            let (a, b) = table.edges[e];
+            for v in [a, b] {
+                let c0 = corner(tris, fins[0].tri, v);
+                for f in &fins[1..] {
+                    link.union(c0, corner(tris, f.tri, v));
+                }
+            }
         }
-        let mut ycycles: Vec<usize> = corners.iter().map(|&c| inside.find(c)).collect();
+        Links {
+            inside: corner_cycles(table, tris, None, Pairing::Inside),
+            outside: corner_cycles(table, tris, None, Pairing::Outside),
+            link,
+        }
+    }
+
+    /// 2 r_p − l_p at the vertex `p`, whose corners are `corners` (module docs), on the exact
+    /// values of `points`.
+    pub(crate) fn term<N: Num>(
+        &mut self,
+        points: &[Point3<N>],
+        tris: &[[usize; 3]],
+        p: usize,
+        corners: &[usize],
+    ) -> i64 {
+        let mut ycycles: Vec<usize> = corners.iter().map(|&c| self.inside.find(c)).collect();
         ycycles.sort_unstable();
         ycycles.dedup();
         let l = ycycles.len() as i64;
-        let mut comps: Vec<usize> = corners.iter().map(|&c| link.find(c)).collect();
+        let mut comps: Vec<usize> = corners.iter().map(|&c| self.link.find(c)).collect();
         comps.sort_unstable();
         comps.dedup();
         let r = if comps.len() == 1 {
@@ -87,7 +114,7 @@ pub(crate) fn link_sum<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table:
                     corners
                         .iter()
                         .copied()
-                        .filter(|&c| link.find(c) == k)
+                        .filter(|&c| self.link.find(c) == k)
                         .collect()
                 })
                 .collect();
@@ -96,13 +123,12 @@ pub(crate) fn link_sum<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table:
                 tris,
                 p,
                 &groups,
-                [&mut inside, &mut outside],
+                [&mut self.inside, &mut self.outside],
                 &ycycles,
             ) as i64
         };
-        sum += 2 * r - l;
+        2 * r - l
     }
-    sum
 }
 
 /// The corner of triangle `t` at vertex `v`.

@@ -2,9 +2,8 @@
 //! [`Topology`], compared between the exact and the rounded boundary, and [`provably_kept`],
 //! a sufficient test that needs no exact structure.
 
-use super::betti::{link_sum, Betti3};
+use super::betti::{Betti3, Links};
 use super::fins::Pairing;
-use super::float::exact_points;
 use super::glue::corner_cycles;
 use super::set::Brep;
 use crate::kernel::Point3;
@@ -88,9 +87,9 @@ const U: f64 = f64::EPSILON / 2.0;
 /// Sufficient: both boundaries are valid and every edge has two fins, so the glued surfaces
 /// and corner cycles are the same, and the topology of the set and of its complement is each
 /// surface's orientation, which surfaces lie inside which, and at each vertex with several
-/// corner cycles the faces of its link in 𝒴 (Σ r_p, [`link_sum`]; the link is l_p disjoint
-/// circles, so l_p + 1 faces, and the complement's r_p is l_p + 1 minus the set's: equal sums
-/// for the set mean equal sums for the complement). Each surface's signed volume (positive
+/// corner cycles the faces of its link in 𝒴 (r_p, [`Links::term`]; the link is l_p disjoint
+/// circles, so l_p + 1 faces, and the complement's r_p is l_p + 1 minus the set's: equal
+/// counts for the set mean equal counts for the complement). Each surface's signed volume (positive
 /// iff it is positively oriented, Def. 7.3) must be farther from 0 than rounding and the `f64`
 /// sum can move it; two surfaces whose boxes come within the rounding of each other must each
 /// have a vertex off the other and farther from each of its triangles than twice the rounding
@@ -98,7 +97,7 @@ const U: f64 = f64::EPSILON / 2.0;
 /// surface through that vertex, so the winding number about it is kept; in both versions
 /// surfaces meet only in shared vertices, so that winding number is the one about every other
 /// point of the surface: nesting); surfaces farther apart are nested in neither version; and
-/// the link sums are compared exactly where a vertex has several corner cycles.
+/// the link terms are compared exactly where a vertex has several corner cycles.
 pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> bool {
     // Two fins per edge also make the fin table (built on the rounded points) the exact
     // points' own: with two fins there is no order to sort.
@@ -107,14 +106,14 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> 
     }
     let mut cycles = corner_cycles(&b.table, &b.tris, None, Pairing::Inside);
     let mut cycle_at = vec![usize::MAX; b.points.len()];
-    let mut pinched = false;
+    let mut pinched = Vec::new();
     for (t, tri) in b.tris.iter().enumerate() {
         for (k, &v) in tri.iter().enumerate() {
             let c = cycles.find(3 * t + k);
             if cycle_at[v] == usize::MAX {
                 cycle_at[v] = c;
             } else if cycle_at[v] != c {
-                pinched = true;
+                pinched.push(v);
             }
         }
     }
@@ -148,9 +147,30 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> 
             .iter()
             .zip(&boxes)
             .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
-        && (!pinched
-            || link_sum(exact, &b.tris, &b.table)
-                == link_sum(&exact_points(&b.points), &b.tris, &b.table))
+        && links_kept(b, exact, pinched)
+}
+
+/// True if at each of the vertices `pinched` (with several corner cycles; duplicates allowed)
+/// the link term 2 r_p − l_p of `b` is the same on its exact points `exact` and on its rounded
+/// ones ([`Links::term`]); everywhere else r_p = l_p on both.
+fn links_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>], mut pinched: Vec<usize>) -> bool {
+    if pinched.is_empty() {
+        return true;
+    }
+    pinched.sort_unstable();
+    pinched.dedup();
+    let mut at: Vec<Vec<usize>> = vec![Vec::new(); pinched.len()];
+    for (t, tri) in b.tris.iter().enumerate() {
+        for (k, v) in tri.iter().enumerate() {
+            if let Ok(i) = pinched.binary_search(v) {
+                at[i].push(3 * t + k);
+            }
+        }
+    }
+    let mut links = Links::new(&b.tris, &b.table);
+    (pinched.iter().zip(&at)).all(|(&p, corners)| {
+        links.term(exact, &b.tris, p, corners) == links.term(&b.points, &b.tris, p, corners)
+    })
 }
 
 /// The box `[min, max]` of the points `p[v]` for the indices `v`.
@@ -270,6 +290,7 @@ mod tests {
     use super::*;
     use crate::kernel::Point3;
     use crate::num::{Float, Tolerance};
+    use crate::yin3::float::exact_points;
     use crate::yin3::shapes::{concat, cuboid};
     use crate::yin3::YinSet3;
 

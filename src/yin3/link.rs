@@ -159,12 +159,14 @@ fn first_hit(wedges: &[Wedge], x: &Vector, y: &Vector) -> Option<(usize, bool)> 
     best.map(|(_, _, k, above)| (k, above))
 }
 
-/// An integer vector in the direction of the vector `b − a` of exact points (the Betti numbers
-/// are computed on exact points only): its coordinates times the least common multiple of
-/// their denominators.
+/// An integer vector in the direction of `b − a` on the points' exact values ([`Num::fraction`],
+/// so float points too): the coordinates n_b/d_b − n_a/d_a = (n_b d_a − n_a d_b)/(d_a d_b)
+/// times the least common multiple of their denominators.
 fn direction<N: Num>(a: &Point3<N>, b: &Point3<N>) -> Vector {
-    debug_assert!(N::EXACT, "the link is walked on exact points");
-    let f = [0, 1, 2].map(|k| (b.coord(k).clone() - a.coord(k).clone()).fraction());
+    let f = [0, 1, 2].map(|k| {
+        let ((na, da), (nb, db)) = (a.coord(k).fraction(), b.coord(k).fraction());
+        (nb * &da - na * &db, da * db)
+    });
     let l = f.iter().fold(BigInt::one(), |l, (_, d)| l.lcm(d));
     f.map(|(n, d)| n * (&l / d))
 }
