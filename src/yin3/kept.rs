@@ -88,8 +88,8 @@ const U: f64 = f64::EPSILON / 2.0;
 /// and corner cycles are the same, and the topology of the set and of its complement is each
 /// surface's orientation, which surfaces lie inside which, and at each vertex with several
 /// corner cycles the faces of its link in 𝒴 (r_p, [`Links::term`]; the link is l_p disjoint
-/// circles, so l_p + 1 faces, and the complement's r_p is l_p + 1 minus the set's: equal
-/// counts for the set mean equal counts for the complement). Each surface's signed volume (positive
+/// circles, so l_p + 1 faces, and the complement's r_p is l_p + 1 minus the set's: equal counts
+/// for the set mean equal counts for the complement). Each surface's signed volume (positive
 /// iff it is positively oriented, Def. 7.3) must be farther from 0 than rounding and the `f64`
 /// sum can move it; two surfaces whose boxes come within the rounding of each other must each
 /// have a vertex off the other and farther from each of its triangles than twice the rounding
