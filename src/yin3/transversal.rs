@@ -25,7 +25,8 @@
 //! loop of edges), the operands' triangles are the pieces: a patch — triangles of one operand
 //! joined across its edges that do not touch — lies off the other boundary but for its
 //! touching corners and stays connected without them, so one ray per patch, from a corner that
-//! does not touch, decides it.
+//! does not touch, decides it (where no edge of an operand touches, its glued surfaces serve as
+//! the patches).
 //!
 //! If any pair is not generic the caller falls back to the general exact meet; the result is
 //! the exact meet either way.
@@ -138,8 +139,8 @@ impl Sites {
     }
 }
 
-/// Rays that scan every triangle of the other operand before an R-tree of its boxes is built
-/// (one in unit tests, so that they take both ways).
+/// Rays that scan every triangle's box of the other operand before an R-tree of its boxes is
+/// built (one in unit tests, so that they take both ways).
 const SCANNED_RAYS: usize = if cfg!(test) { 1 } else { 8 };
 
 /// Triangles of both operands from which the meet runs on rayon's threads (16 in unit tests,
@@ -211,6 +212,10 @@ impl Transversal {
 /// transversally, touch in shared corners and edges only, or do not meet (module docs); `None`
 /// otherwise.
 pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Transversal> {
+    debug_assert!(
+        !N::EXACT,
+        "the f64 boxes and contact tests read float points exactly"
+    );
     let na = a.points.len();
     let f64s: Vec<[f64; 3]> = a
         .points
@@ -417,9 +422,9 @@ fn kept(pieces: &[([usize; 3], usize)], inside: &[bool]) -> Vec<[usize; 3]> {
 
 /// The meet of boundaries that touch only in shared corners and edges (module docs), from
 /// the pairs of equal corners of the touching contacts (global indices, operand 0's first):
-/// each operand's triangles joined across its own edges that do not touch, each patch inside
-/// the other operand or not by a ray from one of its corners that does not touch. `None` if a
-/// patch has no such corner.
+/// each operand's triangles joined across its own edges that do not touch (its glued surfaces
+/// where none touches), each patch inside the other operand or not by a ray from one of its
+/// corners that does not touch. `None` if a patch has no such corner.
 fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option<Transversal> {
     let ops = rays.ops;
     let na = ops[0].points.len();
@@ -643,7 +648,7 @@ fn inside<N: Num>(
 /// triangle's box, later ones an R-tree of the other's boxes, built on first need.
 struct Rays<'a, N: Num> {
     ops: [&'a Brep<N>; 2],
-    /// The triangles' `f64` boxes, operand 0's first (exact: float points are `f64`s).
+    /// The triangles' `f64` boxes, operand 0's first (exact: the operands are float sets).
     boxes: &'a [AABB<[f64; 3]>],
     trees: [OnceCell<TriBoxes>; 2],
     cast: Cell<usize>,
