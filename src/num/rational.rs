@@ -74,7 +74,8 @@ impl PartialEq for Repr {
         match (self, o) {
             (Repr::Small(a, b), Repr::Small(c, d)) => a == c && b == d,
             (Repr::Big(x), Repr::Big(y)) => {
-                x.value.numer() == y.value.numer() && x.value.denom() == y.value.denom()
+                Arc::ptr_eq(x, y)
+                    || x.value.numer() == y.value.numer() && x.value.denom() == y.value.denom()
             }
             _ => false,
         }
@@ -275,6 +276,12 @@ impl Ord for Rational {
     fn cmp(&self, other: &Self) -> Ordering {
         if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &other.0) {
             return (*a as i128 * *d as i128).cmp(&(*c as i128 * *b as i128));
+        }
+        if let (Repr::Big(x), Repr::Big(y)) = (&self.0, &other.0) {
+            if Arc::ptr_eq(x, y) {
+                // One shared value (a point handed on by clones).
+                return Ordering::Equal;
+            }
         }
         let (x, y) = (self.big(), other.big());
         if x.denom() == y.denom() {

@@ -360,7 +360,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             None => pieces.push((tri, t)),
         }
     }
-    let inside = inside(&pieces, &seams, &rays, parallel)?;
+    let inside = inside(&pieces, &seams, &rays)?;
     let rename = |v: usize| *seams.same.get(&v).unwrap_or(&v);
     let kept = kept(&pieces, &inside)
         .into_iter()
@@ -529,16 +529,33 @@ fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rat
     Point3::new(x, y, z)
 }
 
-/// The bits of each field of a packed fin ([`fin`]).
-const FIELD: u32 = 42;
-
-/// The low [`FIELD`] bits.
-const MASK: u128 = (1 << FIELD) - 1;
-
-/// The edge `(u, v)` and the piece `i` at it as one integer that sorts by edge (each below
-/// 2^[`FIELD`]).
-fn fin((u, v): (usize, usize), i: usize) -> u128 {
-    (u as u128) << (2 * FIELD) | (v as u128) << FIELD | i as u128
+/// The pieces' edges grouped by edge: for each vertex u, the pairs (v, piece) of the edges
+/// (u, v), u < v, of the pieces, sorted, at `fins[start[u]..start[u + 1]]` — a counting sort
+/// by u, then a sort of each vertex's few edges.
+fn fins_by_vertex(pieces: &[([usize; 3], usize)]) -> (Vec<usize>, Vec<(usize, usize)>) {
+    let edges = |t: &[usize; 3]| [0, 1, 2].map(|k| key(t[k], t[(k + 1) % 3]));
+    let vertices = pieces.iter().flat_map(|p| p.0).max().map_or(0, |v| v + 1);
+    let mut start = vec![0usize; vertices + 1];
+    for (t, _) in pieces {
+        for (u, _) in edges(t) {
+            start[u + 1] += 1;
+        }
+    }
+    for u in 0..vertices {
+        start[u + 1] += start[u];
+    }
+    let mut next = start.clone();
+    let mut fins = vec![(0, 0); start[vertices]];
+    for (i, (t, _)) in pieces.iter().enumerate() {
+        for (u, v) in edges(t) {
+            fins[next[u]] = (v, i);
+            next[u] += 1;
+        }
+    }
+    for u in 0..vertices {
+        fins[start[u]..start[u + 1]].sort_unstable();
+    }
+    (start, fins)
 }
 
 /// For each piece of the transversal arrangement of `ops` (each with its parent: operand 0's
@@ -552,41 +569,26 @@ fn inside<N: Num>(
     pieces: &[([usize; 3], usize)],
     seams: &Seams,
     rays: &Rays<N>,
-    parallel: bool,
 ) -> Option<Vec<bool>> {
     let ops = rays.ops;
     let (points_a, first_b) = (ops[0].points.len(), ops[0].tris.len());
     let inputs = points_a + ops[1].points.len();
     let operand = |i: usize| usize::from(pieces[i].1 >= first_b);
-    // Each piece's edges, grouped by edge: (edge, piece) packed in one integer and sorted.
-    let too_big = |n: usize| n as u128 > MASK;
-    if too_big(pieces.len()) || pieces.iter().flat_map(|p| p.0).any(too_big) {
-        return None;
-    }
-    let mut fins: Vec<u128> = pieces
-        .iter()
-        .enumerate()
-        .flat_map(|(i, (t, _))| (0..3).map(move |k| fin(key(t[k], t[(k + 1) % 3]), i)))
-        .collect();
-    if parallel {
-        fins.par_sort_unstable();
-    } else {
-        fins.sort_unstable();
-    }
-    let edge = |f: &u128| ((f >> (2 * FIELD)) as usize, (f >> FIELD & MASK) as usize);
+    let (start, fins) = fins_by_vertex(pieces);
     let mut uf = UnionFind::new(pieces.len());
     let mut flips: Vec<(usize, usize)> = Vec::new();
-    for at in fins.chunk_by(|x, y| x >> FIELD == y >> FIELD) {
-        let edge = edge(&at[0]);
+    let at_edges = (0..start.len() - 1).flat_map(|u| {
+        let fins = &fins[start[u]..start[u + 1]];
+        fins.chunk_by(|x, y| x.0 == y.0)
+            .map(move |at| ((u, at[0].0), at))
+    });
+    for (edge, at) in at_edges {
         if seams.shared.contains(&edge) {
             continue;
         }
         let across = seams.crossing.contains(&edge);
         for o in 0..2 {
-            let mut mine = at
-                .iter()
-                .map(|f| (f & MASK) as usize)
-                .filter(|&i| operand(i) == o);
+            let mut mine = at.iter().map(|&(_, i)| i).filter(|&i| operand(i) == o);
             let Some(first) = mine.next() else {
                 continue;
             };

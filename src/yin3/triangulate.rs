@@ -92,11 +92,13 @@ fn in_closed<N: Num>(points: &[Point<N>], t: [usize; 3], x: usize, ctx: &N::Ctx)
     (0..3).all(|i| orient(&points[t[i]], &points[t[(i + 1) % 3]], &points[x], ctx) != Less)
 }
 
-/// The pieces of the segment `uv` between consecutive points lying on it.
+/// The pieces of the segment `uv` between consecutive points lying on it (its ends by index:
+/// the points are distinct, and an equal point is where the exact tests cost most).
 fn split<N: Num>(points: &[Point<N>], u: usize, v: usize, ctx: &N::Ctx) -> Vec<(usize, usize)> {
     let (a, b) = (&points[u], &points[v]);
+    let on_segment = |w: &Point<N>| orient(a, b, w, ctx) == Equal && on_closed_segment(a, b, w);
     let mut on: Vec<usize> = (0..points.len())
-        .filter(|&w| orient(a, b, &points[w], ctx) == Equal && on_closed_segment(a, b, &points[w]))
+        .filter(|&w| w == u || w == v || on_segment(&points[w]))
         .collect();
     on.sort_by(|&x, &y| points[x].cmp(&points[y]));
     on.windows(2).map(|w| (w[0], w[1])).collect()
