@@ -4,7 +4,7 @@
 //! without switching rounding modes; a NaN anywhere gives the whole line, which decides nothing.
 
 use std::cmp::Ordering;
-use std::ops::{Add, Mul, Sub};
+use std::ops::{Add, Mul, Neg, Sub};
 
 /// An interval `[lo, hi]` known to contain some exact value.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -120,6 +120,16 @@ impl Sub for Interval {
     type Output = Interval;
     fn sub(self, o: Interval) -> Interval {
         Interval::widened(self.lo - o.hi, self.hi - o.lo)
+    }
+}
+
+impl Neg for Interval {
+    type Output = Interval;
+    fn neg(self) -> Interval {
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
     }
 }
 
