@@ -49,16 +49,29 @@ pub(crate) fn betti<N: Num>(
 /// l_p 𝒴-cycles at p, and r_p faces of p's link in 𝒴 (module docs).
 pub(crate) fn link_sum<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table: &FinTable) -> i64 {
     let mut links = Links::new(tris, table);
-    let mut at: Vec<Vec<usize>> = vec![Vec::new(); points.len()];
-    for (t, tri) in tris.iter().enumerate() {
-        for (k, &v) in tri.iter().enumerate() {
-            at[v].push(3 * t + k);
-        }
-    }
+    let at = corners_at(tris, points.len(), Some);
     (at.iter().enumerate())
         .filter(|(_, corners)| !corners.is_empty())
         .map(|(p, corners)| links.term(points, tris, p, corners))
         .sum()
+}
+
+/// The corners (3 · triangle + k) of `tris` at `count` vertices, the vertex v's in the slot
+/// `slot(v)` (nowhere where it is `None`).
+pub(crate) fn corners_at(
+    tris: &[[usize; 3]],
+    count: usize,
+    slot: impl Fn(usize) -> Option<usize>,
+) -> Vec<Vec<usize>> {
+    let mut at = vec![Vec::new(); count];
+    for (t, tri) in tris.iter().enumerate() {
+        for (k, &v) in tri.iter().enumerate() {
+            if let Some(i) = slot(v) {
+                at[i].push(3 * t + k);
+            }
+        }
+    }
+    at
 }
 
 /// The corners of a closed complex joined three ways: into 𝒴-cycles, into 𝒴'-cycles, and

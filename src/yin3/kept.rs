@@ -2,7 +2,7 @@
 //! [`Topology`], compared between the exact and the rounded boundary, and [`provably_kept`],
 //! a sufficient test that needs no exact structure.
 
-use super::betti::{Betti3, Links};
+use super::betti::{corners_at, Betti3, Links};
 use super::fins::Pairing;
 use super::glue::corner_cycles;
 use super::set::Brep;
@@ -159,14 +159,7 @@ fn links_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>], mut pinched: Vec<
     }
     pinched.sort_unstable();
     pinched.dedup();
-    let mut at: Vec<Vec<usize>> = vec![Vec::new(); pinched.len()];
-    for (t, tri) in b.tris.iter().enumerate() {
-        for (k, v) in tri.iter().enumerate() {
-            if let Ok(i) = pinched.binary_search(v) {
-                at[i].push(3 * t + k);
-            }
-        }
-    }
+    let at = corners_at(&b.tris, pinched.len(), |v| pinched.binary_search(&v).ok());
     let mut links = Links::new(&b.tris, &b.table);
     (pinched.iter().zip(&at)).all(|(&p, corners)| {
         links.term(exact, &b.tris, p, corners) == links.term(&b.points, &b.tris, p, corners)

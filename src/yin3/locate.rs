@@ -49,13 +49,20 @@ impl TriBoxes {
     /// [`winding`] at `q` (a crossing needs q's y and z in the triangle's closed box and a
     /// corner with x ≥ q's).
     pub(crate) fn along_x<N: Num>(&self, q: &Point3<N>) -> impl Iterator<Item = usize> + '_ {
-        let b = f64_box([q]);
-        let mut hi = b.upper();
-        hi[0] = f64::MAX;
         self.0
-            .locate_in_envelope_intersecting(&AABB::from_corners(b.lower(), hi))
+            .locate_in_envelope_intersecting(&ray_box(q))
             .map(|g| g.data)
     }
+}
+
+/// A box holding the ray from `q` along +x: a triangle counts in [`winding`] at `q` only if
+/// its box (holding its exact box) meets this one — q's y and z in the triangle's closed box,
+/// a corner with x ≥ q's.
+pub(crate) fn ray_box<N: Num>(q: &Point3<N>) -> AABB<[f64; 3]> {
+    let b = f64_box([q]);
+    let mut hi = b.upper();
+    hi[0] = f64::MAX;
+    AABB::from_corners(b.lower(), hi)
 }
 
 /// The winding number at `q` of the oriented triangles `tris`: the sum of sign(n_x) over the

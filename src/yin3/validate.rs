@@ -7,7 +7,7 @@ use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::{exact_points, rounded_brep};
 use super::geom::{collinear, f64_box, normal, Chart};
-use super::locate::{winding, TriBoxes};
+use super::locate::{ray_box, winding, TriBoxes};
 use super::set::{Brep, YinSet3};
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
 use super::triangulate::ear_clip;
@@ -15,6 +15,7 @@ use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, Num, PlaneF64};
 use crate::union_find::UnionFind;
 use rayon::prelude::*;
+use rstar::{Envelope, AABB};
 use std::cmp::Ordering;
 
 impl<N: Num> YinSet3<N> {
@@ -315,6 +316,12 @@ pub(crate) fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yi
     }
     let (label, count) = uf.classes();
     let expected = if b.bounded { 0 } else { -1 };
+    // Each triangle's box on its corners rounded to f64: rounding is monotone, so a box that
+    // misses the ray's box misses the ray exactly.
+    let rounded: Vec<[f64; 3]> = b.points.iter().map(Point3::to_f64).collect();
+    let near = |u: usize, ray: &AABB<[f64; 3]>| {
+        AABB::from_points(b.tris[u].map(|v| &rounded[v])).intersects(ray)
+    };
     for c in 0..count {
         // A triangle whose normal has a nonzero x (the orientation of its projection to the
         // yz-plane): the ray along +x leaves it to one side.
@@ -328,7 +335,10 @@ pub(crate) fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yi
         };
         let [p, q, r] = b.corners(t);
         let centroid = Point3::centroid(p, q, r);
-        let others = (0..b.tris.len()).filter(|&u| u != t).map(|u| b.corners(u));
+        let ray = ray_box(&centroid);
+        let others = (0..b.tris.len())
+            .filter(|&u| u != t && near(u, &ray))
+            .map(|u| b.corners(u));
         let w = winding(others, &centroid, ctx);
         // The ray runs into the +n side if the normal's x is positive; the −n side has one more.
         let plus = if nx == Ordering::Greater { w } else { w - 1 };
