@@ -36,7 +36,7 @@ use super::contact::{contact, key, Contact, Edge, End};
 use super::float::exact_points;
 use super::geom::Chart;
 use super::link::{cross, dot, Vector};
-use super::locate::{winding, TriBoxes};
+use super::locate::{ray_box, winding, TriBoxes};
 use super::set::{compact, Brep};
 use crate::kernel::Point3;
 use crate::num::{common_grid, Num, PlaneF64, Rational};
@@ -671,14 +671,10 @@ impl<'a, N: Num> Rays<'a, N> {
         let other = self.ops[1 - o];
         self.cast.set(self.cast.get() + 1);
         let w = if self.cast.get() <= SCANNED_RAYS {
-            // Only triangles whose box meets the ray can count ([`TriBoxes::along_x`]).
+            // Only triangles whose box meets the ray can count ([`ray_box`]).
             let boxes = &self.boxes[(1 - o) * self.ops[0].tris.len()..];
-            let [x, y, z] = q.to_f64();
-            let meets_ray = |b: &AABB<[f64; 3]>| {
-                let (lo, hi) = (b.lower(), b.upper());
-                hi[0] >= x && (lo[1]..=hi[1]).contains(&y) && (lo[2]..=hi[2]).contains(&z)
-            };
-            let near = (0..other.tris.len()).filter(|&s| meets_ray(&boxes[s]));
+            let ray = ray_box(q);
+            let near = (0..other.tris.len()).filter(|&s| boxes[s].intersects(&ray));
             winding(near.map(|s| other.corners(s)), q, &N::exact_ctx())
         } else {
             let tree = self.trees[1 - o].get_or_init(|| {
@@ -700,7 +696,7 @@ mod tests {
     use crate::num::Float;
     use crate::yin3::float::exact_set;
     use crate::yin3::set::compact;
-    use crate::yin3::shapes::cuboid;
+    use crate::yin3::shapes::{concat, cuboid, Mesh};
     use crate::yin3::{Yin3Error, YinSet3};
     use proptest::prelude::*;
     use std::cmp::Ordering;
@@ -743,6 +739,15 @@ mod tests {
             .map(|p| Point3::new(c(p[0]), c(p[1]), c(p[2])))
             .collect();
         YinSet3::from_triangles(pts, f.clone()).expect("a valid mesh")
+    }
+
+    /// The cube [lo, hi]³.
+    fn cube<N: Num>(lo: f64, hi: f64) -> Mesh<N> {
+        let corner = |v: f64| {
+            let v = N::from_f64(v).expect("finite");
+            Point3::new(v.clone(), v.clone(), v)
+        };
+        cuboid(&corner(lo), &corner(hi))
     }
 
     /// The transversal meet of two float sets as an exact set, `None` where it declines.
@@ -1141,25 +1146,12 @@ mod tests {
         // Two cubes, one inside the unit cube, one at its corner (1, 1, 1) from outside: no
         // part of the unit cube's boundary is in them, one of them is in it, and the meet is
         // that one.
-        let (inner, outer) = (
-            jittered_cube([0.25; 3], 0.5, &still),
-            jittered_cube([1.0; 3], 0.5, &still),
-        );
-        let shift = inner.0.len();
-        let both: Raw = (
-            [inner.0.clone(), outer.0].concat(),
-            (inner.1.iter().cloned())
-                .chain(
-                    outer
-                        .1
-                        .iter()
-                        .map(|f| f.iter().map(|v| v + shift).collect()),
-                )
-                .collect(),
-        );
-        let both = solid::<Float>(&both);
+        let (v, f) = concat(vec![cube(0.25, 0.75), cube(1.0, 1.5)]);
+        let both = YinSet3::<Float>::from_triangles(v, f).expect("two cubes");
+        let (v, f) = cube(0.25, 0.75);
+        let inner = YinSet3::<Rational>::from_triangles(v, f).expect("a cube");
         for meet in [transversal(&a, &both), transversal(&both, &a)] {
-            assert_eq!(meet.expect("touching"), solid::<Rational>(&inner));
+            assert_eq!(meet.expect("touching"), inner);
         }
     }
 
