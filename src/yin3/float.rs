@@ -112,6 +112,12 @@ fn moved<N: Num>(rounded: &[Point3<N>], exact: &[Point3<Rational>]) -> Vec<bool>
         .collect()
 }
 
+/// The float point of a point whose coordinates are `f64`s' exact values.
+fn nearest<N: Num>(p: &Point3<Rational>) -> Point3<N> {
+    let f = |v: &Rational| N::from_f64(v.to_f64()).expect("the value of a finite f64");
+    Point3::new(f(&p.x), f(&p.y), f(&p.z))
+}
+
 /// The nearest `f64` points.
 fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>, Yin3Error> {
     let f = |v: &Rational| N::from_f64(v.to_f64()).map_err(|e| unrepresentable(&e));
@@ -142,7 +148,7 @@ fn rounded_complex<N: Num>(
         // Every point an `f64` already: the exact boundary itself, valid, with its topology.
         return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
     }
-    let (brep, same_triangles) = rounded_boundary(rounded, moved, tris)?;
+    let (brep, same_triangles) = rounded_boundary(rounded, moved, exact, tris)?;
     if same_triangles && provably_kept(&brep, exact) {
         return Ok(brep);
     }
@@ -160,16 +166,23 @@ fn rounded_complex<N: Num>(
 fn rounded_boundary<N: Num>(
     rounded: Vec<Point3<N>>,
     moved: &[bool],
+    exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
 ) -> Result<(Brep<N>, bool), Yin3Error> {
     if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
-        let brep = Brep::assemble(rounded, tris.clone()).map_err(|e| unrepresentable(&e))?;
+        // The rounded points' exact values: those that did not move are the exact points.
+        let values = (rounded.iter().zip(moved).zip(exact))
+            .map(|((q, &m), p)| if m { exact_point(q) } else { p.clone() })
+            .collect();
+        let on_values =
+            Brep::<Rational>::assemble(values, tris.clone()).map_err(|e| unrepresentable(&e))?;
+        let brep = on_values.clone().map_points(nearest);
         // Assembling a compact boundary keeps its numbering, so `moved` still applies.
         let same = brep.tris == tris;
         if same && conforming_after_moves(&brep, moved) {
-            check_windings(&exact_brep(&brep), &()).map_err(|e| unrepresentable(&e))?;
+            check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;
         } else {
-            revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
+            revalidate(on_values.points, &brep, ()).map_err(|e| unrepresentable(&e))?;
         }
         return Ok((brep, same));
     }
