@@ -44,6 +44,9 @@ pub(crate) fn triangulate<N: Num>(
     constraints: &[(usize, usize)],
     ctx: &N::Ctx,
 ) -> Result<Vec<[usize; 3]>, TriangulateError> {
+    if let Some(pieces) = one_cut(points.len(), corners, sides, constraints) {
+        return Ok(pieces);
+    }
     let mut mesh = Mesh::new(points, corners, ctx)?;
     let mut placed = vec![false; points.len()];
     for (k, side) in sides.iter().enumerate() {
@@ -74,6 +77,51 @@ pub(crate) fn triangulate<N: Num>(
         mesh.recover(u, v, c, &owner)?;
     }
     Ok(mesh.triangles())
+}
+
+/// The pieces, without a predicate, where one constraint is the only cut (most triangles a
+/// transversal meet cuts): between points inside two sides, the only points besides the
+/// corners, it cuts off the corner between them from a convex quadrilateral (split at the
+/// corner before); between a point inside a side, the only other point, and a corner, the
+/// triangle is halved at the point. `None` for anything else.
+fn one_cut(
+    count: usize,
+    corners: [usize; 3],
+    sides: [&[usize]; 3],
+    constraints: &[(usize, usize)],
+) -> Option<Vec<[usize; 3]>> {
+    let &[(u, v)] = constraints else {
+        return None;
+    };
+    let side = |p: usize| (0..3).find(|&k| sides[k] == [p]);
+    let corner = |p: usize| corners.iter().position(|&c| c == p);
+    // The corners from corner k on, counterclockwise.
+    let from = |k: usize| [0, 1, 2].map(|m| corners[(k + m) % 3]);
+    match count {
+        5 => {
+            let (i, j) = (side(u)?, side(v)?);
+            // p inside side k, q inside side k + 1: the corner k + 1 is cut off.
+            let (k, p, q) = match (j + 3 - i) % 3 {
+                1 => (i, u, v),
+                2 => (j, v, u),
+                _ => return None,
+            };
+            let [a, b, c] = from(k);
+            Some(vec![[p, b, q], [a, p, q], [a, q, c]])
+        }
+        4 => {
+            // p inside side k, the other end a corner (along the side if not the opposite
+            // one, which the halves have as an edge too).
+            let (p, k) = match (side(u), corner(v), side(v), corner(u)) {
+                (Some(k), Some(_), _, _) => (u, k),
+                (_, _, Some(k), Some(_)) => (v, k),
+                _ => return None,
+            };
+            let [a, b, c] = from(k);
+            Some(vec![[a, p, c], [p, b, c]])
+        }
+        _ => None,
+    }
 }
 
 /// The undirected edge `ab` as a map key.
@@ -452,6 +500,42 @@ mod tests {
         let tris = triangulate(&points, corners, NO_SIDES, constraints, &()).expect("valid input");
         check(&points, corners, constraints, &tris, &());
         tris
+    }
+
+    /// One constraint from inside one side to inside another, or to a corner, with no other
+    /// point (what [`one_cut`] answers without predicates), for every pair of sides or corner,
+    /// both directions and every rotation of the corners: the independent check passes.
+    #[test]
+    fn one_cut_cuts_off_a_corner_or_halves_the_triangle() {
+        // A point inside each side i, from corner i to corner i + 1.
+        let (corner_xy, inside_xy) = ([(0, 0), (6, 0), (0, 6)], [(2, 0), (4, 2), (0, 5)]);
+        for r in 0..3 {
+            let corners = [r, (r + 1) % 3, (r + 2) % 3];
+            let side_of = |i: usize| (i + 3 - r) % 3;
+            for (i, j) in [(0, 1), (1, 2), (2, 0), (1, 0), (2, 1), (0, 2)] {
+                let points = pts::<Rational>(&[
+                    corner_xy[0],
+                    corner_xy[1],
+                    corner_xy[2],
+                    inside_xy[i],
+                    inside_xy[j],
+                ]);
+                let mut sides = NO_SIDES;
+                (sides[side_of(i)], sides[side_of(j)]) = (&[3], &[4]);
+                let tris = triangulate(&points, corners, sides, &[(3, 4)], &()).expect("valid");
+                check(&points, corners, &[(3, 4)], &tris, &());
+            }
+            for i in 0..3 {
+                let points =
+                    pts::<Rational>(&[corner_xy[0], corner_xy[1], corner_xy[2], inside_xy[i]]);
+                let mut sides = NO_SIDES;
+                sides[side_of(i)] = &[3];
+                for cut in [0, 1, 2].into_iter().flat_map(|c| [(3, c), (c, 3)]) {
+                    let tris = triangulate(&points, corners, sides, &[cut], &()).expect("valid");
+                    check(&points, corners, &[cut], &tris, &());
+                }
+            }
+        }
     }
 
     /// True if `tris` has the edge `ab` in either direction.
