@@ -56,7 +56,7 @@ pub(crate) fn rounded_exact<N: Num>(
 }
 
 /// The exact value of a float vertex.
-fn exact_point<N: Num>(p: &Point3<N>) -> Point3<Rational> {
+pub(crate) fn exact_point<N: Num>(p: &Point3<N>) -> Point3<Rational> {
     let r = |v: &N| Rational::from_f64(v.to_f64()).expect("float sets have finite coordinates");
     Point3::new(r(&p.x), r(&p.y), r(&p.z))
 }

@@ -33,7 +33,7 @@
 
 use super::arrange::retriangulate;
 use super::contact::{contact, key, Contact, Edge, End};
-use super::float::exact_points;
+use super::float::{exact_point, exact_points};
 use super::geom::Chart;
 use super::link::{cross, dot, Vector};
 use super::locate::{ray_box, winding, TriBoxes};
@@ -305,9 +305,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             seams.shared.extend([key(e0[0], e1[0]), key(e0[1], e1[1])]);
         }
     }
-    let mut points = exact_points(&a.points);
-    points.extend(exact_points(&b.points));
-    let mut sites = Sites::new(points.len(), tris.len());
+    let mut sites = Sites::new(corners.len(), tris.len());
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); tris.len()];
     for &(t, s, ends) in &crossings {
         let [(pt, ps), (qt, qs)] = ends.map(|end| {
@@ -327,6 +325,8 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         }
     }
     let (on_edge, extra) = (&sites.on_edge, &sites.extra);
+    let mut points = Vec::with_capacity(corners.len() + sites.made.len());
+    points.extend(corners.iter().map(|&p| exact_point(p)));
     points.extend(map_all(&sites.made, parallel, |&(edge, tri)| {
         pierce(&f64s, edge, tris[tri])
     }));
@@ -342,9 +342,17 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
                 .as_slice()
         })
     };
-    let cut: Vec<usize> = (0..tris.len())
-        .filter(|&t| !extra[t].is_empty() || sides(t).iter().any(|side| !side.is_empty()))
-        .collect();
+    // A side has points only if both its ends are ends of an edge with points: most
+    // triangles have no such corner, and skip the lookups.
+    let mut ends = vec![false; points.len()];
+    for &(a, b) in on_edge.keys() {
+        (ends[a], ends[b]) = (true, true);
+    }
+    let has_points = |t: usize| {
+        let on_sides = || sides(t).iter().any(|side| !side.is_empty());
+        !extra[t].is_empty() || tris[t].iter().filter(|&&v| ends[v]).count() >= 2 && on_sides()
+    };
+    let cut: Vec<usize> = (0..tris.len()).filter(|&t| has_points(t)).collect();
     let parts: Vec<Vec<[usize; 3]>> = map_all(&cut, parallel, |&t| {
         let chart = Chart::of_f64_triangle(tris[t].map(|v| f64s[v]))?;
         let extra = extra[t].iter().copied();
