@@ -33,6 +33,7 @@
 
 use super::arrange::retriangulate;
 use super::contact::{contact, key, Contact, Edge, End};
+use super::fins::Fin;
 use super::float::{exact_point, exact_points};
 use super::geom::Chart;
 use super::link::{cross, dot, Vector};
@@ -362,13 +363,17 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     .collect::<Option<_>>()?;
     let mut parts: HashMap<usize, Vec<[usize; 3]>> = cut.into_iter().zip(parts).collect();
     let mut pieces: Vec<([usize; 3], usize)> = Vec::with_capacity(tris.len());
+    let mut whole: Vec<Option<usize>> = vec![None; tris.len()];
     for (t, &tri) in tris.iter().enumerate() {
         match parts.remove(&t) {
             Some(part) => pieces.extend(part.into_iter().map(|piece| (piece, t))),
-            None => pieces.push((tri, t)),
+            None => {
+                whole[t] = Some(pieces.len());
+                pieces.push((tri, t));
+            }
         }
     }
-    let inside = inside(&pieces, &seams, &rays)?;
+    let inside = inside(&pieces, &whole, &seams, &rays)?;
     let rename = |v: usize| *seams.same.get(&v).unwrap_or(&v);
     let kept = kept(&pieces, &inside)
         .into_iter()
@@ -537,33 +542,28 @@ fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rat
     Point3::new(x, y, z)
 }
 
-/// The pieces' edges grouped by edge: for each vertex u, the pairs (v, piece) of the edges
-/// (u, v), u < v, of the pieces, sorted, at `fins[start[u]..start[u + 1]]` — a counting sort
-/// by u, then a sort of each vertex's few edges.
-fn fins_by_vertex(pieces: &[([usize; 3], usize)]) -> (Vec<usize>, Vec<(usize, usize)>) {
-    let edges = |t: &[usize; 3]| [0, 1, 2].map(|k| key(t[k], t[(k + 1) % 3]));
-    let vertices = pieces.iter().flat_map(|p| p.0).max().map_or(0, |v| v + 1);
+/// The fins `(edge, piece)` grouped by edge: for each vertex u, the pairs (v, piece) of the
+/// fins at the edges (u, v), u < v, sorted, at `fins[start[u]..start[u + 1]]` — a counting
+/// sort by u, then a sort of each vertex's few.
+fn fins_by_vertex(fins: &[((usize, usize), usize)]) -> (Vec<usize>, Vec<(usize, usize)>) {
+    let vertices = fins.iter().map(|((_, v), _)| v + 1).max().unwrap_or(0);
     let mut start = vec![0usize; vertices + 1];
-    for (t, _) in pieces {
-        for (u, _) in edges(t) {
-            start[u + 1] += 1;
-        }
+    for ((u, _), _) in fins {
+        start[u + 1] += 1;
     }
     for u in 0..vertices {
         start[u + 1] += start[u];
     }
     let mut next = start.clone();
-    let mut fins = vec![(0, 0); start[vertices]];
-    for (i, (t, _)) in pieces.iter().enumerate() {
-        for (u, v) in edges(t) {
-            fins[next[u]] = (v, i);
-            next[u] += 1;
-        }
+    let mut grouped = vec![(0, 0); fins.len()];
+    for &((u, v), i) in fins {
+        grouped[next[u]] = (v, i);
+        next[u] += 1;
     }
     for u in 0..vertices {
-        fins[start[u]..start[u + 1]].sort_unstable();
+        grouped[start[u]..start[u + 1]].sort_unstable();
     }
-    (start, fins)
+    (start, grouped)
 }
 
 /// For each piece of the transversal arrangement of `ops` (each with its parent: operand 0's
@@ -571,10 +571,13 @@ fn fins_by_vertex(pieces: &[([usize; 3], usize)]) -> (Vec<usize>, Vec<(usize, us
 /// points), true if it lies inside the other operand: patches joined across edges that are
 /// neither crossing segments nor shared edges ([`Seams`]), one ray from an input vertex off the
 /// other boundary (not a shared corner) per connected surface, the side flipped across every
-/// crossing segment. `None` if the flips contradict each other or the rays, or a patch gets no
+/// crossing segment. `whole[t]` is the piece that is the triangle `t` where `t` was not cut:
+/// an edge with no cut triangle is joined from the operand's fin table, the others from the
+/// pieces' edges. `None` if the flips contradict each other or the rays, or a patch gets no
 /// side.
 fn inside<N: Num>(
     pieces: &[([usize; 3], usize)],
+    whole: &[Option<usize>],
     seams: &Seams,
     rays: &Rays<N>,
 ) -> Option<Vec<bool>> {
@@ -582,8 +585,29 @@ fn inside<N: Num>(
     let (points_a, first_b) = (ops[0].points.len(), ops[0].tris.len());
     let inputs = points_a + ops[1].points.len();
     let operand = |i: usize| usize::from(pieces[i].1 >= first_b);
-    let (start, fins) = fins_by_vertex(pieces);
     let mut uf = UnionFind::new(pieces.len());
+    // The fins at edges of cut triangles: the pieces' own, and the uncut triangles' there.
+    let mut loose: Vec<((usize, usize), usize)> = Vec::new();
+    for (o, op) in ops.iter().enumerate() {
+        for (&(a, b), fins) in op.table.edges.iter().zip(&op.table.fins) {
+            let edge = (a + o * points_a, b + o * points_a);
+            let piece = |f: &Fin| whole[f.tri + o * first_b];
+            if fins.iter().any(|f| piece(f).is_none()) {
+                loose.extend(fins.iter().filter_map(piece).map(|p| (edge, p)));
+            } else if !seams.shared.contains(&edge) {
+                let first = piece(&fins[0]).expect("an uncut triangle");
+                for f in &fins[1..] {
+                    uf.union(first, piece(f).expect("an uncut triangle"));
+                }
+            }
+        }
+    }
+    for (i, (t, parent)) in pieces.iter().enumerate() {
+        if whole[*parent].is_none() {
+            loose.extend((0..3).map(|k| (key(t[k], t[(k + 1) % 3]), i)));
+        }
+    }
+    let (start, fins) = fins_by_vertex(&loose);
     let mut flips: Vec<(usize, usize)> = Vec::new();
     let at_edges = (0..start.len() - 1).flat_map(|u| {
         let fins = &fins[start[u]..start[u + 1]];
