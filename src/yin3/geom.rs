@@ -188,10 +188,16 @@ pub(crate) fn in_triangle3<N: Num>(t: [&Point3<N>; 3], p: &Point3<N>, ctx: &N::C
 pub(crate) fn f64_box<'a, N: Num>(
     points: impl IntoIterator<Item = &'a Point3<N>>,
 ) -> rstar::AABB<[f64; 3]> {
+    widened_box(points.into_iter().map(Point3::to_f64))
+}
+
+/// The box of points rounded to `f64` (each coordinate to the nearest), widened by an ulp on
+/// each side: it contains the exact points' box, at the ends of the range too (a coordinate
+/// past `f64::MAX` rounds to infinity, whose box starts at `f64::MAX`).
+pub(crate) fn widened_box(rounded: impl IntoIterator<Item = [f64; 3]>) -> rstar::AABB<[f64; 3]> {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
-    for p in points {
-        let v = p.to_f64();
+    for v in rounded {
         for k in 0..3 {
             lo[k] = lo[k].min(v[k]);
             hi[k] = hi[k].max(v[k]);

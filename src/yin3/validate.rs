@@ -6,7 +6,7 @@
 use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::{exact_points, rounded_brep};
-use super::geom::{collinear, f64_box, normal, Chart};
+use super::geom::{collinear, f64_box, normal, widened_box, Chart};
 use super::locate::{ray_box, winding, TriBoxes};
 use super::set::{Brep, YinSet3};
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
@@ -316,12 +316,10 @@ pub(crate) fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yi
     }
     let (label, count) = uf.classes();
     let expected = if b.bounded { 0 } else { -1 };
-    // Each triangle's box on its corners rounded to f64: rounding is monotone, so a box that
-    // misses the ray's box misses the ray exactly.
+    // Each triangle's box on its corners rounded to f64, each point rounded once.
     let rounded: Vec<[f64; 3]> = b.points.iter().map(Point3::to_f64).collect();
-    let near = |u: usize, ray: &AABB<[f64; 3]>| {
-        AABB::from_points(b.tris[u].map(|v| &rounded[v])).intersects(ray)
-    };
+    let near =
+        |u: usize, ray: &AABB<[f64; 3]>| widened_box(b.tris[u].map(|v| rounded[v])).intersects(ray);
     for c in 0..count {
         // A triangle whose normal has a nonzero x (the orientation of its projection to the
         // yz-plane): the ray along +x leaves it to one side.
@@ -383,6 +381,24 @@ mod tests {
         let after = b.map_points(|q| to(q).unwrap_or_else(|| q.clone()));
         let full = revalidate(exact_points(&after.points), &after, ()).is_ok();
         (conforming_after_moves(&after, &moved), full)
+    }
+
+    /// A cube of side 2·10³⁰⁹ around a unit cavity is valid: its faces lie past `f64`'s range,
+    /// and the winding check's ray from the cavity still meets them (their boxes start at
+    /// `f64::MAX`, not at infinity).
+    #[test]
+    fn a_cavity_in_a_cube_past_f64s_range_is_valid() {
+        let r = |v: Rational| Point3::new(v.clone(), v.clone(), v);
+        let big = Rational::from_integer(num_bigint::BigInt::from(10).pow(309));
+        let one = Rational::from_i64(1);
+        let (mut cavity, outer) = (
+            cuboid(&r(-one.clone()), &r(one)),
+            cuboid(&r(-big.clone()), &r(big)),
+        );
+        cavity.1.iter_mut().for_each(|f| f.reverse());
+        let (v, f) = concat(vec![outer, cavity]);
+        let set = YinSet3::<Rational>::from_triangles(v, f).expect("a cube around a cavity");
+        assert_eq!(set.betti().b2, 1);
     }
 
     /// In both backends: float points take the plane test first.
