@@ -3,7 +3,10 @@
 //! in one face of each other, found by walking an arc of the link from one to the other.
 //! Points of the link are directions from p, integer vectors with no point constructed: a
 //! segment x → y not through p sweeps the directions λ(x − p) + μ(y − p), λ, μ ≥ 0, in the
-//! order of the arc, and scaling a direction by a positive number changes nothing.
+//! order of the arc, and scaling a direction by a positive number changes nothing. The walk
+//! runs first on intervals around the unscaled directions ([`Scalar`]): where every sign is
+//! certain it is the exact walk of a generic arc between the same wedges, and any generic arc
+//! finds the same face; elsewhere it runs on exact integer vectors.
 
 use crate::kernel::Point3;
 use crate::num::{Interval, Num};
@@ -161,8 +164,8 @@ impl<S: Scalar> Wedge<S> {
 /// wedges `cj`: the first wedge of `ci` (its index) that the arc from a direction inside a
 /// wedge of `cj` to one inside a wedge of `ci` crosses, and whether the arc comes from its +n
 /// side; retried with other directions while the arc is degenerate ([`first_hit`]); `None` if
-/// every arc is. [`Unsure`] where an interval sign does not settle the first arc that is not
-/// known to be degenerate.
+/// every arc is. [`Unsure`] where an interval sign does not settle the first arc (intervals
+/// never show a sign to be zero, so on them a degenerate arc is unsure, never retried).
 fn face_holding<S: Scalar>(
     ci: &[Wedge<S>],
     cj: &[Wedge<S>],
@@ -185,8 +188,8 @@ fn face_holding<S: Scalar>(
 /// The first of the `wedges` crossed by the arc of directions from `x` to `y`, which lies
 /// inside the wedge `end` (in its plane: β = 0 there, which no interval could tell), and
 /// whether `x` is on its +n side; `None` if the arc is degenerate (`x`, `y` parallel, the arc
-/// along a wedge's plane, through a wedge's edge, or through two wedges at once); [`Unsure`]
-/// if an interval sign does not tell. The arc meets the plane of a wedge where α = n·x and β = n·y
+/// along a wedge's plane, through a wedge's edge, or through two wedges at once: exact signs
+/// only); [`Unsure`] if an interval sign does not tell. The arc meets the plane of a wedge where α = n·x and β = n·y
 /// differ in sign, at s = |α| / (|α| + |β|) of the way, in the direction z = |β|x + |α|y; z
 /// is inside the wedge iff z = λu + μv with λ, μ > 0, the signs of (z × v)·n and (u × z)·n.
 fn first_hit<S: Scalar>(

@@ -542,9 +542,9 @@ fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rat
     Point3::new(x, y, z)
 }
 
-/// The fins `(edge, piece)` grouped by edge: for each vertex u, the pairs (v, piece) of the
-/// fins at the edges (u, v), u < v, sorted, at `fins[start[u]..start[u + 1]]` — a counting
-/// sort by u, then a sort of each vertex's few.
+/// The fins `(edge, piece)` grouped by edge, as `(start, grouped)`: for each vertex u, the
+/// pairs (v, piece) of the fins at the edges (u, v), u < v, sorted, at
+/// `grouped[start[u]..start[u + 1]]` — a counting sort by u, then a sort of each vertex's few.
 fn fins_by_vertex(fins: &[((usize, usize), usize)]) -> (Vec<usize>, Vec<(usize, usize)>) {
     let vertices = fins.iter().map(|((_, v), _)| v + 1).max().unwrap_or(0);
     let mut start = vec![0usize; vertices + 1];

@@ -83,7 +83,9 @@ pub(crate) fn triangulate<N: Num>(
 /// transversal meet cuts): between points inside two sides, the only points besides the
 /// corners, it cuts off the corner between them from a convex quadrilateral (split at the
 /// corner before); between a point inside a side, the only other point, and a corner, the
-/// triangle is halved at the point. `None` for anything else.
+/// triangle is halved at the point. `None` for anything else. (The corners must be
+/// counterclockwise, as [`triangulate`] requires; this path does not check it, the general one
+/// does.)
 fn one_cut(
     count: usize,
     corners: [usize; 3],
