@@ -48,7 +48,8 @@ pub(crate) fn betti<N: Num>(
 /// Σ_p (2 r_p − l_p) over the vertices p of the closed complex `tris` (fin table `table`):
 /// l_p 𝒴-cycles at p, and r_p faces of p's link in 𝒴 (module docs).
 pub(crate) fn link_sum<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], table: &FinTable) -> i64 {
-    let mut links = Links::new(tris, table);
+    let inside = corner_cycles(table, tris, None, Pairing::Inside);
+    let mut links = Links::new(tris, table, inside);
     let at = corners_at(tris, points.len(), Some);
     (at.iter().enumerate())
         .filter(|(_, corners)| !corners.is_empty())
@@ -83,8 +84,9 @@ pub(crate) struct Links {
 }
 
 impl Links {
-    /// The joined corners of the closed complex `tris` with fin table `table`.
-    pub(crate) fn new(tris: &[[usize; 3]], table: &FinTable) -> Links {
+    /// The joined corners of the closed complex `tris` with fin table `table`, whose 𝒴-cycles
+    /// ([`corner_cycles`] of the inside pairing) the caller has joined already as `inside`.
+    pub(crate) fn new(tris: &[[usize; 3]], table: &FinTable, inside: UnionFind) -> Links {
         let mut link = UnionFind::new(3 * tris.len());
         for (e, fins) in table.fins.iter().enumerate() {
             let (a, b) = table.edges[e];
@@ -96,7 +98,7 @@ impl Links {
             }
         }
         Links {
-            inside: corner_cycles(table, tris, None, Pairing::Inside),
+            inside,
             outside: corner_cycles(table, tris, None, Pairing::Outside),
             link,
         }

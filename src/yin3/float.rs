@@ -112,19 +112,15 @@ fn moved<N: Num>(rounded: &[Point3<N>], exact: &[Point3<Rational>]) -> Vec<bool>
         .collect()
 }
 
-/// The float point of a point whose coordinates are `f64`s' exact values.
-fn nearest<N: Num>(p: &Point3<Rational>) -> Point3<N> {
-    let f = |v: &Rational| N::from_f64(v.to_f64()).expect("the value of a finite f64");
-    Point3::new(f(&p.x), f(&p.y), f(&p.z))
+/// The nearest `f64` point.
+fn rounded_point<N: Num>(p: &Point3<Rational>) -> Result<Point3<N>, Yin3Error> {
+    let f = |v: &Rational| N::from_f64(v.to_f64()).map_err(|e| unrepresentable(&e));
+    Ok(Point3::new(f(&p.x)?, f(&p.y)?, f(&p.z)?))
 }
 
 /// The nearest `f64` points.
 fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>, Yin3Error> {
-    let f = |v: &Rational| N::from_f64(v.to_f64()).map_err(|e| unrepresentable(&e));
-    points
-        .iter()
-        .map(|p| Ok(Point3::new(f(&p.x)?, f(&p.y)?, f(&p.z)?)))
-        .collect()
+    points.iter().map(rounded_point).collect()
 }
 
 /// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
@@ -176,7 +172,8 @@ fn rounded_boundary<N: Num>(
             .collect();
         let on_values =
             Brep::<Rational>::assemble(values, tris.clone()).map_err(|e| unrepresentable(&e))?;
-        let brep = on_values.clone().map_points(nearest);
+        let brep = (on_values.clone())
+            .map_points(|p| rounded_point(p).expect("the values of rounded points are f64s"));
         // Assembling a compact boundary keeps its numbering, so `moved` still applies.
         let same = brep.tris == tris;
         if same && conforming_after_moves(&brep, moved) {

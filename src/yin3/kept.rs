@@ -8,6 +8,7 @@ use super::glue::corner_cycles;
 use super::set::Brep;
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
+use crate::union_find::UnionFind;
 use std::cell::OnceCell;
 
 /// What rounding must keep of a set: the [`Invariants`] of the set and of its complement. The
@@ -147,20 +148,25 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> 
             .iter()
             .zip(&boxes)
             .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
-        && links_kept(b, exact, pinched)
+        && links_kept(b, exact, pinched, cycles)
 }
 
 /// True if at each of the vertices `pinched` (with several corner cycles; duplicates allowed)
 /// the link term 2 r_p − l_p of `b` is the same on its exact points `exact` and on its rounded
-/// ones ([`Links::term`]); everywhere else r_p = l_p on both.
-fn links_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>], mut pinched: Vec<usize>) -> bool {
+/// ones ([`Links::term`]); everywhere else r_p = l_p on both. `cycles` are `b`'s 𝒴-cycles.
+fn links_kept<N: Num>(
+    b: &Brep<N>,
+    exact: &[Point3<Rational>],
+    mut pinched: Vec<usize>,
+    cycles: UnionFind,
+) -> bool {
     if pinched.is_empty() {
         return true;
     }
     pinched.sort_unstable();
     pinched.dedup();
     let at = corners_at(&b.tris, pinched.len(), |v| pinched.binary_search(&v).ok());
-    let mut links = Links::new(&b.tris, &b.table);
+    let mut links = Links::new(&b.tris, &b.table, cycles);
     (pinched.iter().zip(&at)).all(|(&p, corners)| {
         links.term(exact, &b.tris, p, corners) == links.term(&b.points, &b.tris, p, corners)
     })

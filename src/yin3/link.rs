@@ -146,10 +146,14 @@ impl<S: Scalar> Wedge<S> {
     ) -> Self {
         let (t, k) = (tris[c / 3], c % 3);
         let o = &points[p];
-        let (u, v) = (
+        Wedge::of(
             direction(o, &points[t[(k + 1) % 3]]),
             direction(o, &points[t[(k + 2) % 3]]),
-        );
+        )
+    }
+
+    /// The wedge with the sides `u`, `v`.
+    fn of(u: Vector<S>, v: Vector<S>) -> Self {
         let n = cross(&u, &v);
         Wedge { u, v, n }
     }
@@ -189,9 +193,10 @@ fn face_holding<S: Scalar>(
 /// inside the wedge `end` (in its plane: β = 0 there, which no interval could tell), and
 /// whether `x` is on its +n side; `None` if the arc is degenerate (`x`, `y` parallel, the arc
 /// along a wedge's plane, through a wedge's edge, or through two wedges at once: exact signs
-/// only); [`Unsure`] if an interval sign does not tell. The arc meets the plane of a wedge where α = n·x and β = n·y
-/// differ in sign, at s = |α| / (|α| + |β|) of the way, in the direction z = |β|x + |α|y; z
-/// is inside the wedge iff z = λu + μv with λ, μ > 0, the signs of (z × v)·n and (u × z)·n.
+/// only); [`Unsure`] if an interval sign does not tell. The arc meets the plane of a wedge
+/// where α = n·x and β = n·y differ in sign, at s = |α| / (|α| + |β|) of the way, in the
+/// direction z = |β|x + |α|y; z is inside the wedge iff z = λu + μv with λ, μ > 0, the signs
+/// of (z × v)·n and (u × z)·n.
 fn first_hit<S: Scalar>(
     wedges: &[Wedge<S>],
     x: &Vector<S>,
@@ -305,11 +310,7 @@ mod tests {
     /// The wedges of the integer sides `c` in the numbers `S`.
     fn wedges<S: Scalar>(c: &Sides) -> Vec<Wedge<S>> {
         (c.iter())
-            .map(|(u, v)| {
-                let (u, v) = (u.map(S::of), v.map(S::of));
-                let n = cross(&u, &v);
-                Wedge { u, v, n }
-            })
+            .map(|(u, v)| Wedge::of(u.map(S::of), v.map(S::of)))
             .collect()
     }
 
