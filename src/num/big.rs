@@ -43,11 +43,15 @@ fn to_dashu(x: &BigUint) -> dashu_int::UBig {
 /// A `dashu-int` number as a `num-bigint` one, word by word (64-bit targets).
 #[cfg(target_pointer_width = "64")]
 fn from_dashu(x: &dashu_int::UBig) -> BigUint {
-    let halves: Vec<u32> = x
-        .as_words()
-        .iter()
-        .flat_map(|&w| [w as u32, (w >> 32) as u32])
-        .collect();
+    from_words(x.as_words())
+}
+
+/// The number of the 64-bit `words`, least significant first.
+pub(crate) fn from_words(words: &[u64]) -> BigUint {
+    let mut halves = Vec::with_capacity(2 * words.len());
+    for &w in words {
+        halves.extend([w as u32, (w >> 32) as u32]);
+    }
     BigUint::new(halves)
 }
 

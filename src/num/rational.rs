@@ -173,19 +173,24 @@ impl Rational {
                 return Rational::zero();
             }
             let g = small_gcd(&(&pv[k] - &pu[k]), &d);
-            let (mut n, mut d) = (big::exact_div(&numer, &g), big::exact_div(&d, &g));
-            // Times 2^scale: only the factors of two of the other side can cancel.
-            if scale > 0 {
-                let t = (scale as u64).min(d.trailing_zeros().unwrap_or(0));
-                n <<= scale as u64 - t;
-                d >>= t;
-            } else {
-                let t = (-scale as u64).min(n.trailing_zeros().unwrap_or(0));
-                n >>= t;
-                d <<= -scale as u64 - t;
-            }
-            from_big(BigRational::new_raw(n, d))
+            let (n, d) = (big::exact_div(&numer, &g), big::exact_div(&d, &g));
+            Rational::times_power_of_two(n, d, scale)
         })
+    }
+
+    /// (`n` / `d`) · 2^`scale` for `n` / `d` in lowest terms with `d` > 0: only the factors of
+    /// two of the other side can cancel.
+    pub(crate) fn times_power_of_two(mut n: BigInt, mut d: BigInt, scale: i32) -> Rational {
+        if scale > 0 {
+            let t = (scale as u64).min(d.trailing_zeros().unwrap_or(0));
+            n <<= scale as u64 - t;
+            d >>= t;
+        } else {
+            let t = (-scale as u64).min(n.trailing_zeros().unwrap_or(0));
+            n >>= t;
+            d <<= -scale as u64 - t;
+        }
+        from_big(BigRational::new_raw(n, d))
     }
 
     /// The integer `n`.

@@ -17,6 +17,7 @@ mod link;
 mod locate;
 mod meet;
 mod ops;
+mod pierce;
 mod set;
 pub mod shapes;
 mod transversal;

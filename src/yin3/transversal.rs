@@ -32,23 +32,21 @@
 //! the exact meet either way.
 
 use super::arrange::retriangulate;
-use super::contact::{contact, key, Contact, Edge, End};
+use super::contact::{contact, key, Contact, Edge, End, Planes};
 use super::fins::Fin;
 use super::float::{exact_point, exact_points};
 use super::geom::Chart;
-use super::link::{cross, dot, Vector};
 use super::locate::{ray_box, winding, TriBoxes};
+use super::pierce::pierce;
 use super::set::{compact, Brep};
 use crate::kernel::Point3;
-use crate::num::{common_grid, Num, PlaneF64, Rational};
+use crate::num::{Num, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet};
-use num_bigint::BigInt;
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
 use std::cell::{Cell, OnceCell};
-use std::sync::OnceLock;
 
 /// Where the boundaries meet, as edges of the pieces of the transversal meet.
 #[derive(Default)]
@@ -233,8 +231,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         .map(|t| AABB::from_points(t.map(|v| &f64s[v])))
         .collect();
     let (near_a, near_b) = near(&boxes, first_b);
-    // Each triangle's plane, prepared when a pair of boxes first needs it.
-    let planes: Vec<OnceLock<PlaneF64>> = (0..tris.len()).map(|_| OnceLock::new()).collect();
+    let planes = Planes::new(tris.len(), near_a.iter().chain(&near_b).copied());
     // The R-tree holds the operand with fewer near triangles, the other's query it.
     let flip = near_b.len() > near_a.len();
     let (near, indexed) = match flip {
@@ -524,22 +521,6 @@ fn exact_complex<N: Num>(ops: [&Brep<N>; 2], tris: Vec<[usize; 3]>) -> Complex {
         .collect();
     let (points, tris) = compact(all, tris);
     (exact_points(&points), tris)
-}
-
-/// The point where the edge `(u, v)` pierces the plane of the triangle `tri` (indices into the
-/// `f64` points `p`), exactly: (du·V − dv·U) / (du − dv), du and dv the plane's values at U and
-/// V, in integers after scaling every coordinate by one power of two
-/// ([`Rational::section_point`]); the same value whichever triangle of the edge asks.
-fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
-    let corners = [u, v, tri[0], tri[1], tri[2]];
-    let (parts, low) = common_grid::<15>(std::array::from_fn(|k| p[corners[k / 3]][k % 3]));
-    let int = |(m, shift): (i64, u32)| BigInt::from(m) << shift;
-    let [pu, pv, a, b, c] = [0, 1, 2, 3, 4].map(|i| [0, 1, 2].map(|k| int(parts[3 * i + k])));
-    let sub = |x: &Vector, y: &Vector| [0, 1, 2].map(|k| &x[k] - &y[k]);
-    let n = cross(&sub(&b, &a), &sub(&c, &a));
-    let value = |x: &Vector| dot(&n, &sub(x, &a));
-    let [x, y, z] = Rational::section_point(&value(&pu), &value(&pv), [&pu, &pv], low);
-    Point3::new(x, y, z)
 }
 
 /// The fins `(edge, piece)` grouped by edge, as `(start, grouped)`: for each vertex u, the
@@ -1032,7 +1013,7 @@ mod tests {
         let tris: Vec<[usize; 3]> = (x.tris.iter().copied())
             .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
             .collect();
-        let planes: Vec<OnceLock<PlaneF64>> = tris.iter().map(|_| OnceLock::new()).collect();
+        let planes = Planes::new(tris.len(), 0..tris.len());
         let (mut kinds, mut edge_touch, mut cross) = ([false; 5], false, false);
         for t in 0..x.tris.len() {
             for s in x.tris.len()..tris.len() {

@@ -1,0 +1,210 @@
+//! The point where an edge pierces the plane of a triangle (the transversal meet's pierce
+//! points, [`super::transversal`]), exactly, from the `f64` corners on their common
+//! power-of-two grid: on 384-bit integers on the stack where the grid integers are narrow
+//! enough (every pair of ../shared/data/3d), on big integers otherwise — the same value either
+//! way.
+
+use super::link::{cross, dot, Scalar, Vector};
+use crate::kernel::Point3;
+use crate::num::{common_grid, from_words, Num, Rational};
+use bnum::{BInt, BUint};
+use num_bigint::{BigInt, Sign};
+use num_integer::Integer;
+use std::cmp::Ordering;
+
+/// Signed 384-bit integers: the stack integers of the narrow path.
+type Wide = BInt<6>;
+
+/// Grid integers below 2^`NARROW` in magnitude take the stack path: then every value it forms
+/// is below 2^(4·`NARROW` + 7) = 2^383 (differences 2^(B+1), the normal 2^(2B+3), the plane's
+/// values 2^(3B+6), the section's numerators 2^(4B+7)), and V − U fits in `u128`.
+const NARROW: u32 = 94;
+
+impl Scalar for Wide {
+    fn of(w: i64) -> Self {
+        Wide::from(w)
+    }
+    fn times(&self, o: &Self) -> Self {
+        *self * *o
+    }
+    fn sign(&self) -> Option<Ordering> {
+        Some(self.cmp(&Wide::ZERO))
+    }
+}
+
+/// The point where the edge `(u, v)` pierces the plane of the triangle `tri` (indices into the
+/// `f64` points `p`), exactly: (du·V − dv·U) / (du − dv), du and dv the plane's values at U and
+/// V, in integers after scaling every coordinate by one power of two; the same value whichever
+/// triangle of the edge asks.
+pub(super) fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
+    let corners = [u, v, tri[0], tri[1], tri[2]];
+    let (parts, low) = common_grid::<15>(std::array::from_fn(|k| p[corners[k / 3]][k % 3]));
+    let narrow = parts
+        .iter()
+        .all(|&(m, shift)| m == 0 || 64 - m.unsigned_abs().leading_zeros() + shift <= NARROW);
+    let [x, y, z] = match narrow {
+        true => on_stack(points(parts.map(|(m, shift)| Wide::from(m) << shift)), low),
+        false => {
+            let int = |(m, shift): (i64, u32)| BigInt::from(m) << shift;
+            let [pu, pv, a, b, c] = points(parts.map(int));
+            let (du, dv) = plane_values([&pu, &pv], [a, b, c]);
+            Rational::section_point(&du, &dv, [&pu, &pv], low)
+        }
+    };
+    Point3::new(x, y, z)
+}
+
+/// The five points U, V, A, B, C of the 15 grid integers.
+fn points<S: Scalar>(ints: [S; 15]) -> [Vector<S>; 5] {
+    let mut ints = ints.into_iter();
+    std::array::from_fn(|_| std::array::from_fn(|_| ints.next().expect("15 integers")))
+}
+
+/// The values at `pu` and `pv` of the plane through a, b, c: n · (x − a), n = (b − a) × (c − a).
+fn plane_values<S: Scalar>(at: [&Vector<S>; 2], [a, b, c]: [Vector<S>; 3]) -> (S, S) {
+    let sub = |x: &Vector<S>, y: &Vector<S>| [0, 1, 2].map(|k| x[k].clone() - y[k].clone());
+    let n = cross(&sub(&b, &a), &sub(&c, &a));
+    let value = |x: &Vector<S>| dot(&n, &sub(x, &a));
+    (value(at[0]), value(at[1]))
+}
+
+/// [`Rational::section_point`] on stack integers: the point (u·V − v·U) / (u − v) · 2^`scale`
+/// of the line through U = `pu` and V = `pv`, with u and v the plane's values there, each
+/// coordinate in lowest terms by the same gcds (h = gcd(u, v), then gcd(V − U, d) with the
+/// small V − U).
+fn on_stack([pu, pv, a, b, c]: [Vector<Wide>; 5], scale: i32) -> [Rational; 3] {
+    let (u, v) = plane_values([&pu, &pv], [a, b, c]);
+    let h = gcd(u.unsigned_abs(), v.unsigned_abs()).cast_signed();
+    let (u, v) = match h == Wide::ONE {
+        true => (u, v),
+        false => (u / h, v / h),
+    };
+    let (u, v) = if u < v { (-u, -v) } else { (u, v) };
+    let d = u - v;
+    [0, 1, 2].map(|k| {
+        let numer = u * pv[k] - v * pu[k];
+        if numer.is_zero() {
+            return <Rational as Num>::zero();
+        }
+        let w = u128::try_from((pv[k] - pu[k]).unsigned_abs()).expect("V − U below 2^95");
+        let g = match w {
+            0 => d,
+            w => {
+                let r = d.unsigned_abs() % BUint::<6>::from(w);
+                let r = u128::try_from(r).expect("a remainder below w");
+                Wide::from(w.gcd(&r))
+            }
+        };
+        let (n, d) = match g == Wide::ONE {
+            true => (numer, d),
+            false => (numer / g, d / g),
+        };
+        Rational::times_power_of_two(big(n), big(d), scale)
+    })
+}
+
+/// gcd(a, b) by Lehmer's algorithm (`dashu-int`; a binary gcd on 384 bits costs more than all
+/// the rest of a pierce point).
+fn gcd(a: BUint<6>, b: BUint<6>) -> BUint<6> {
+    let of = |x: &BUint<6>| dashu_int::UBig::from_words(x.digits());
+    let g = dashu_int::ops::Gcd::gcd(&of(&a), &of(&b));
+    let mut digits = [0u64; 6];
+    digits[..g.as_words().len()].copy_from_slice(g.as_words());
+    BUint::from_digits(digits)
+}
+
+/// `x` as a big integer.
+fn big(x: Wide) -> BigInt {
+    let sign = match x.cmp(&Wide::ZERO) {
+        Ordering::Less => Sign::Minus,
+        Ordering::Equal => Sign::NoSign,
+        Ordering::Greater => Sign::Plus,
+    };
+    BigInt::from_biguint(sign, from_words(&x.unsigned_abs().digits()[..]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::rngs::StdRng;
+    use rand::{RngExt, SeedableRng};
+
+    /// The pierce point by rational arithmetic on the corners' exact values, independent of
+    /// the grid and the gcd shortcuts: U + t·(V − U), t = du / (du − dv).
+    fn oracle(p: &[[f64; 3]; 5]) -> [Rational; 3] {
+        let q = p.map(|x| x.map(|c| Rational::from_float(c).expect("finite")));
+        let sub =
+            |x: &[Rational; 3], y: &[Rational; 3]| [0, 1, 2].map(|k| x[k].clone() - y[k].clone());
+        let (e, f) = (sub(&q[3], &q[2]), sub(&q[4], &q[2]));
+        let n = [0, 1, 2].map(|k| {
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            e[i].clone() * f[j].clone() - e[j].clone() * f[i].clone()
+        });
+        let value = |x: &[Rational; 3]| {
+            let w = sub(x, &q[2]);
+            (0..3)
+                .map(|k| n[k].clone() * w[k].clone())
+                .sum::<Rational>()
+        };
+        let (du, dv) = (value(&q[0]), value(&q[1]));
+        let t = du.clone() / (du - dv);
+        [0, 1, 2].map(|k| q[0][k].clone() + t.clone() * (q[1][k].clone() - q[0][k].clone()))
+    }
+
+    /// A coordinate: a random mantissa of 1 to 53 bits times 2^e, e in `exp`, either sign, or
+    /// a small integer (shared factors, equal coordinates).
+    fn coordinate(rng: &mut StdRng, exp: std::ops::Range<i32>) -> f64 {
+        if rng.random_range(0..4) == 0 {
+            return rng.random_range(-3..=3) as f64;
+        }
+        let bits = rng.random_range(1..=53);
+        let m = rng.random_range(0..1u64 << bits) as f64;
+        let s = if rng.random() { -1.0 } else { 1.0 };
+        s * m * 2f64.powi(rng.random_range(exp))
+    }
+
+    /// On random edges and triangles whose grid is narrow (the stack path) and wide (past
+    /// 2^94: the big path), with small integer coordinates mixed in, the pierce point is the
+    /// rational construction's, wherever the edge's ends lie on opposite sides of the plane.
+    #[test]
+    fn pierce_points_are_the_rational_construction() {
+        let mut rng = StdRng::seed_from_u64(7);
+        let mut seen = [0usize; 2];
+        for round in 0..4000 {
+            // Grids of up to 82 bits, 98 bits (either side of NARROW) and 203 bits.
+            let exp = match round % 3 {
+                0 => -20..10,
+                1 => -45..0,
+                _ => -90..60,
+            };
+            let p: [[f64; 3]; 5] =
+                std::array::from_fn(|_| std::array::from_fn(|_| coordinate(&mut rng, exp.clone())));
+            let q = p.map(|x| x.map(|c| Rational::from_float(c).expect("finite")));
+            let side = |x: &[Rational; 3]| {
+                Rational::orient3d(
+                    q[2].each_ref(),
+                    q[3].each_ref(),
+                    q[4].each_ref(),
+                    x.each_ref(),
+                    &(),
+                )
+            };
+            let (su, sv) = (side(&q[0]), side(&q[1]));
+            if su == Ordering::Equal || sv == Ordering::Equal || su == sv {
+                continue;
+            }
+            let (parts, _) = common_grid::<15>(std::array::from_fn(|k| p[k / 3][k % 3]));
+            let narrow = parts
+                .iter()
+                .all(|&(m, s)| m == 0 || 64 - m.unsigned_abs().leading_zeros() + s <= NARROW);
+            seen[usize::from(narrow)] += 1;
+            let got = pierce(&p, (0, 1), [2, 3, 4]);
+            let [x, y, z] = oracle(&p);
+            assert_eq!(got, Point3::new(x, y, z), "corners {p:?}");
+        }
+        assert!(
+            seen[0] > 300 && seen[1] > 300,
+            "wide and narrow grids: {seen:?}"
+        );
+    }
+}
