@@ -103,14 +103,21 @@ fn on_stack([pu, pv, a, b, c]: [Vector<Wide>; 5], scale: i32) -> [Rational; 3] {
     })
 }
 
-/// gcd(a, b) by Lehmer's algorithm (`dashu-int`; a binary gcd on 384 bits costs more than all
-/// the rest of a pierce point).
+/// gcd(a, b) by Lehmer's algorithm (`dashu-int`, word by word on 64-bit targets; a binary gcd
+/// on 384 bits costs more than all the rest of a pierce point).
+#[cfg(target_pointer_width = "64")]
 fn gcd(a: BUint<6>, b: BUint<6>) -> BUint<6> {
     let of = |x: &BUint<6>| dashu_int::UBig::from_words(x.digits());
     let g = dashu_int::ops::Gcd::gcd(&of(&a), &of(&b));
     let mut digits = [0u64; 6];
     digits[..g.as_words().len()].copy_from_slice(g.as_words());
     BUint::from_digits(digits)
+}
+
+/// gcd(a, b), by `bnum`'s binary gcd.
+#[cfg(not(target_pointer_width = "64"))]
+fn gcd(a: BUint<6>, b: BUint<6>) -> BUint<6> {
+    a.gcd(&b)
 }
 
 /// `x` as a big integer.
