@@ -54,31 +54,8 @@ pub(super) fn key(u: usize, v: usize) -> Edge {
     (u.min(v), u.max(v))
 }
 
-/// The planes of the triangles that can meet a triangle of the other operand, each prepared
-/// when a pair first needs it: a slot per such triangle (a slot per triangle of the operands
-/// was the largest table of a float meet, faulted in on every call).
-pub(super) struct Planes {
-    /// Each triangle's slot in `planes` (unused for the others).
-    slot: Vec<u32>,
-    planes: Vec<OnceLock<PlaneF64>>,
-}
-
-impl Planes {
-    /// Slots for the triangles `near`, among `tris` triangles.
-    pub(super) fn new(tris: usize, near: impl Iterator<Item = usize>) -> Planes {
-        let mut slot = vec![0; tris];
-        let mut planes = Vec::with_capacity(near.size_hint().0);
-        for t in near {
-            slot[t] = u32::try_from(planes.len()).expect("fewer than 2^32 triangles");
-            planes.push(OnceLock::new());
-        }
-        Planes { slot, planes }
-    }
-}
-
 /// How triangles `t` (operand 0) and `s` (operand 1) meet, as indices into `p`, the `f64`
-/// values of `corners`, with their global indices `ti`, `si` and their planes in `planes`
-/// (slots for both).
+/// values of `corners`, with their global indices `ti`, `si` and their planes in `planes`.
 /// Triangles with a vertex on the other's plane go to [`touch`]. Else each plane must separate
 /// the other's vertices strictly; the line of the planes meets each triangle in a segment
 /// between its straddling edges' pierce points, and the sign of orient3d(e₀, e₁, f₀, f₁) — for
@@ -88,14 +65,13 @@ impl Planes {
 /// roles swapped (the permutation is even), so four orientations settle the overlap.
 pub(super) fn contact<N: Num>(
     p: &[[f64; 3]],
-    planes: &Planes,
+    planes: &[OnceLock<PlaneF64>],
     corners: &[&Point3<N>],
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
 ) -> Contact {
-    let plane = |i: usize, [u, v, w]: [usize; 3]| {
-        planes.planes[planes.slot[i] as usize].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]))
-    };
+    let plane =
+        |i: usize, [u, v, w]: [usize; 3]| planes[i].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]));
     let t_plane = plane(ti, t);
     let s_sides = s.map(|v| t_plane.side(p[v]));
     if one_side(&s_sides) {
@@ -345,13 +321,8 @@ mod tests {
             .map(|[x, y, z]| Point3::new(x, y, z))
             .collect();
         let corners: Vec<&Point3<Float>> = points.iter().collect();
-        contact(
-            &p,
-            &Planes::new(2, 0..2),
-            &corners,
-            (0, [0, 1, 2]),
-            (1, [3, 4, 5]),
-        )
+        let planes = [OnceLock::new(), OnceLock::new()];
+        contact(&p, &planes, &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
     }
 
     /// Triangles sharing a corner or an edge touch only where they meet in nothing else:

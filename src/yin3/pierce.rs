@@ -1,8 +1,8 @@
 //! The point where an edge pierces the plane of a triangle (the transversal meet's pierce
 //! points, [`super::transversal`]), exactly, from the `f64` corners on their common
-//! power-of-two grid: on 384-bit integers on the stack where the grid integers are narrow
-//! enough (every pair of ../shared/data/3d), on big integers otherwise — the same value either
-//! way.
+//! power-of-two grid: on 256- or 384-bit integers on the stack where the grid integers are
+//! narrow enough (every pair of ../shared/data/3d), on big integers otherwise — the same value
+//! either way.
 
 use super::link::{cross, dot, Scalar, Vector};
 use crate::kernel::Point3;
@@ -12,23 +12,23 @@ use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use std::cmp::Ordering;
 
-/// Signed 384-bit integers: the stack integers of the narrow path.
-type Wide = BInt<6>;
+/// The widest grid integers, in bits, that the stack path takes on `words` 64-bit words: for
+/// grid integers below 2^B every value it forms is below 2^(4B + 7) (differences 2^(B+1), the
+/// normal 2^(2B+3), the plane's values 2^(3B+6), the section's numerators 2^(4B+7)), which
+/// must stay below 2^(64·words − 1); V − U then fits in `u128`.
+const fn narrow(words: u32) -> u32 {
+    (64 * words - 8) / 4
+}
 
-/// Grid integers below 2^`NARROW` in magnitude take the stack path: then every value it forms
-/// is below 2^(4·`NARROW` + 7) = 2^383 (differences 2^(B+1), the normal 2^(2B+3), the plane's
-/// values 2^(3B+6), the section's numerators 2^(4B+7)), and V − U fits in `u128`.
-const NARROW: u32 = 94;
-
-impl Scalar for Wide {
+impl<const W: usize> Scalar for BInt<W> {
     fn of(w: i64) -> Self {
-        Wide::from(w)
+        BInt::from(w)
     }
     fn times(&self, o: &Self) -> Self {
         *self * *o
     }
     fn sign(&self) -> Option<Ordering> {
-        Some(self.cmp(&Wide::ZERO))
+        Some(self.cmp(&BInt::ZERO))
     }
 }
 
@@ -39,12 +39,10 @@ impl Scalar for Wide {
 pub(super) fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
     let corners = [u, v, tri[0], tri[1], tri[2]];
     let (parts, low) = common_grid::<15>(std::array::from_fn(|k| p[corners[k / 3]][k % 3]));
-    let narrow = parts
-        .iter()
-        .all(|&(m, shift)| m == 0 || 64 - m.unsigned_abs().leading_zeros() + shift <= NARROW);
-    let [x, y, z] = match narrow {
-        true => on_stack(points(parts.map(|(m, shift)| Wide::from(m) << shift)), low),
-        false => {
+    let [x, y, z] = match width(&parts) {
+        w if w <= narrow(4) => on_stack::<4>(parts, low),
+        w if w <= narrow(6) => on_stack::<6>(parts, low),
+        _ => {
             let int = |(m, shift): (i64, u32)| BigInt::from(m) << shift;
             let [pu, pv, a, b, c] = points(parts.map(int));
             let (du, dv) = plane_values([&pu, &pv], [a, b, c]);
@@ -54,6 +52,14 @@ pub(super) fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) ->
     Point3::new(x, y, z)
 }
 
+/// The width in bits of the widest of the grid integers m·2^shift.
+fn width(parts: &[(i64, u32)]) -> u32 {
+    (parts.iter())
+        .map(|&(m, shift)| (64 - m.unsigned_abs().leading_zeros() + shift) * u32::from(m != 0))
+        .max()
+        .unwrap_or(0)
+}
+
 /// The five points U, V, A, B, C of the 15 grid integers.
 fn points<S: Scalar>(ints: [S; 15]) -> [Vector<S>; 5] {
     let mut ints = ints.into_iter();
@@ -61,8 +67,11 @@ fn points<S: Scalar>(ints: [S; 15]) -> [Vector<S>; 5] {
 }
 
 /// The values at `pu` and `pv` of the plane through a, b, c: n · (x − a), n = (b − a) × (c − a).
-fn plane_values<S: Scalar>(at: [&Vector<S>; 2], [a, b, c]: [Vector<S>; 3]) -> (S, S) {
-    let sub = |x: &Vector<S>, y: &Vector<S>| [0, 1, 2].map(|k| x[k].clone() - y[k].clone());
+fn plane_values<S: Scalar>(at: [&Vector<S>; 2], [a, b, c]: [Vector<S>; 3]) -> (S, S)
+where
+    for<'x> &'x S: std::ops::Sub<&'x S, Output = S>,
+{
+    let sub = |x: &Vector<S>, y: &Vector<S>| [0, 1, 2].map(|k| &x[k] - &y[k]);
     let n = cross(&sub(&b, &a), &sub(&c, &a));
     let value = |x: &Vector<S>| dot(&n, &sub(x, &a));
     (value(at[0]), value(at[1]))
@@ -72,10 +81,11 @@ fn plane_values<S: Scalar>(at: [&Vector<S>; 2], [a, b, c]: [Vector<S>; 3]) -> (S
 /// of the line through U = `pu` and V = `pv`, with u and v the plane's values there, each
 /// coordinate in lowest terms by the same gcds (h = gcd(u, v), then gcd(V − U, d) with the
 /// small V − U).
-fn on_stack([pu, pv, a, b, c]: [Vector<Wide>; 5], scale: i32) -> [Rational; 3] {
+fn on_stack<const W: usize>(parts: [(i64, u32); 15], scale: i32) -> [Rational; 3] {
+    let [pu, pv, a, b, c] = points(parts.map(|(m, shift)| BInt::<W>::from(m) << shift));
     let (u, v) = plane_values([&pu, &pv], [a, b, c]);
     let h = gcd(u.unsigned_abs(), v.unsigned_abs()).cast_signed();
-    let (u, v) = match h == Wide::ONE {
+    let (u, v) = match h == BInt::ONE {
         true => (u, v),
         false => (u / h, v / h),
     };
@@ -86,16 +96,16 @@ fn on_stack([pu, pv, a, b, c]: [Vector<Wide>; 5], scale: i32) -> [Rational; 3] {
         if numer.is_zero() {
             return <Rational as Num>::zero();
         }
-        let w = u128::try_from((pv[k] - pu[k]).unsigned_abs()).expect("V − U below 2^95");
+        let w = u128::try_from((pv[k] - pu[k]).unsigned_abs()).expect("V − U below 2^96");
         let g = match w {
             0 => d,
             w => {
-                let r = d.unsigned_abs() % BUint::<6>::from(w);
+                let r = d.unsigned_abs() % BUint::<W>::from(w);
                 let r = u128::try_from(r).expect("a remainder below w");
-                Wide::from(w.gcd(&r))
+                BInt::from(w.gcd(&r))
             }
         };
-        let (n, d) = match g == Wide::ONE {
+        let (n, d) = match g == BInt::ONE {
             true => (numer, d),
             false => (numer / g, d / g),
         };
@@ -106,23 +116,23 @@ fn on_stack([pu, pv, a, b, c]: [Vector<Wide>; 5], scale: i32) -> [Rational; 3] {
 /// gcd(a, b) by Lehmer's algorithm (`dashu-int`, word by word on 64-bit targets; a binary gcd
 /// on 384 bits costs more than all the rest of a pierce point).
 #[cfg(target_pointer_width = "64")]
-fn gcd(a: BUint<6>, b: BUint<6>) -> BUint<6> {
-    let of = |x: &BUint<6>| dashu_int::UBig::from_words(x.digits());
+fn gcd<const W: usize>(a: BUint<W>, b: BUint<W>) -> BUint<W> {
+    let of = |x: &BUint<W>| dashu_int::UBig::from_words(x.digits());
     let g = dashu_int::ops::Gcd::gcd(&of(&a), &of(&b));
-    let mut digits = [0u64; 6];
+    let mut digits = [0u64; W];
     digits[..g.as_words().len()].copy_from_slice(g.as_words());
     BUint::from_digits(digits)
 }
 
 /// gcd(a, b), by `bnum`'s binary gcd.
 #[cfg(not(target_pointer_width = "64"))]
-fn gcd(a: BUint<6>, b: BUint<6>) -> BUint<6> {
+fn gcd<const W: usize>(a: BUint<W>, b: BUint<W>) -> BUint<W> {
     a.gcd(&b)
 }
 
 /// `x` as a big integer.
-fn big(x: Wide) -> BigInt {
-    let sign = match x.cmp(&Wide::ZERO) {
+fn big<const W: usize>(x: BInt<W>) -> BigInt {
+    let sign = match x.cmp(&BInt::ZERO) {
         Ordering::Less => Sign::Minus,
         Ordering::Equal => Sign::NoSign,
         Ordering::Greater => Sign::Plus,
@@ -170,20 +180,18 @@ mod tests {
         s * m * 2f64.powi(rng.random_range(exp))
     }
 
-    /// On random edges and triangles whose grid is narrow (the stack path) and wide (past
-    /// 2^94: the big path), with small integer coordinates mixed in, the pierce point is the
-    /// rational construction's, wherever the edge's ends lie on opposite sides of the plane.
+    /// On random edges and triangles whose grid integers take each path — up to 62 bits (256-bit
+    /// stack integers), 63 to 94 bits (384-bit), wider (big integers) —, with small integer
+    /// coordinates mixed in (shared factors, V − U = 0), the pierce point is the rational
+    /// construction's, wherever the edge's ends lie on opposite sides of the plane.
     #[test]
     fn pierce_points_are_the_rational_construction() {
         let mut rng = StdRng::seed_from_u64(7);
-        let mut seen = [0usize; 2];
-        for round in 0..4000 {
-            // Grids of up to 82 bits, 98 bits (either side of NARROW) and 203 bits.
-            let exp = match round % 3 {
-                0 => -20..10,
-                1 => -45..0,
-                _ => -90..60,
-            };
+        let mut seen = [0usize; 3];
+        let mut near_bounds = 0;
+        for round in 0..6000 {
+            // Grids of up to 63, 82, 98 (either side of 94) and 203 bits.
+            let exp = [-5..5, -20..10, -45..0, -90..60][round % 4].clone();
             let p: [[f64; 3]; 5] =
                 std::array::from_fn(|_| std::array::from_fn(|_| coordinate(&mut rng, exp.clone())));
             let q = p.map(|x| x.map(|c| Rational::from_float(c).expect("finite")));
@@ -201,17 +209,94 @@ mod tests {
                 continue;
             }
             let (parts, _) = common_grid::<15>(std::array::from_fn(|k| p[k / 3][k % 3]));
-            let narrow = parts
-                .iter()
-                .all(|&(m, s)| m == 0 || 64 - m.unsigned_abs().leading_zeros() + s <= NARROW);
-            seen[usize::from(narrow)] += 1;
+            let w = width(&parts);
+            seen[usize::from(w > narrow(4)) + usize::from(w > narrow(6))] += 1;
+            near_bounds += usize::from([narrow(4), narrow(6)].iter().any(|&n| n.abs_diff(w) <= 1));
             let got = pierce(&p, (0, 1), [2, 3, 4]);
             let [x, y, z] = oracle(&p);
             assert_eq!(got, Point3::new(x, y, z), "corners {p:?}");
         }
-        assert!(
-            seen[0] > 300 && seen[1] > 300,
-            "wide and narrow grids: {seen:?}"
-        );
+        assert!(seen.iter().all(|&n| n > 300), "paths taken: {seen:?}");
+        assert!(near_bounds > 30, "grids at a path's bound: {near_bounds}");
+    }
+
+    /// Corners one bit past each stack path's bound (63 and 95 bits) whose section numerators
+    /// need the whole width of the path below plus a bit (256 and 384 bits before the division
+    /// by the small gcd; found by a hill-climbing search over f64 corners): they take the next
+    /// path and pierce exactly. (Random corners stay far below the bound, 4B + 7 bits.)
+    #[test]
+    fn corners_past_a_bound_take_the_next_path() {
+        let cases: [(u32, [[f64; 3]; 5]); 2] = [
+            (
+                63,
+                [
+                    [
+                        9055315173615903744.0,
+                        9107482703943990272.0,
+                        9077110266289732608.0,
+                    ],
+                    [
+                        -8941048411866082304.0,
+                        -9214067086600690688.0,
+                        9220341277975477248.0,
+                    ],
+                    [
+                        -9222637362244305920.0,
+                        9168468029038298112.0,
+                        -8429363278516539.0,
+                    ],
+                    [
+                        8479138915574279.0,
+                        -9034736414205135872.0,
+                        9174084418030732288.0,
+                    ],
+                    [
+                        9015369827622544384.0,
+                        -8877480577800155.0,
+                        -9152374054353077248.0,
+                    ],
+                ],
+            ),
+            (
+                95,
+                [
+                    [
+                        38892282525652868645963956224.0,
+                        39116340362325088433982144512.0,
+                        38985891735900252811944787968.0,
+                    ],
+                    [
+                        -38401510520917561827324329984.0,
+                        -39574116800099966315971739648.0,
+                        39601064246863519870152081408.0,
+                    ],
+                    [
+                        -39610925853706999088619192320.0,
+                        39378270339141068722538545152.0,
+                        -8429363278516539.0,
+                    ],
+                    [
+                        8479138915574279.0,
+                        -38803897426991368405476442112.0,
+                        39402392546185187899891253248.0,
+                    ],
+                    [
+                        38720718570983985561588465664.0,
+                        -8877480577800155.0,
+                        -39309147244205393217121681408.0,
+                    ],
+                ],
+            ),
+        ];
+        for (bits, p) in cases {
+            let (parts, _) = common_grid::<15>(std::array::from_fn(|k| p[k / 3][k % 3]));
+            assert_eq!(width(&parts), bits);
+            let [x, y, z] = oracle(&p);
+            assert_eq!(
+                pierce(&p, (0, 1), [2, 3, 4]),
+                Point3::new(x, y, z),
+                "{bits} bits"
+            );
+        }
     }
 }
