@@ -230,13 +230,16 @@ impl<'a, N: Num> Mesh<'a, N> {
                 "the corners are not counterclockwise",
             ));
         }
+        // Sized for n points: at most 2n − 5 current triangles, 6n − 15 directed edges, and a
+        // few times as many made in all (no rehashing: the tables are small and built often).
+        let n = points.len();
         let mut mesh = Mesh {
             points,
             ctx,
-            tris: Vec::new(),
-            alive: Vec::new(),
-            children: Vec::new(),
-            edges: HashMap::new(),
+            tris: Vec::with_capacity(4 * n),
+            alive: Vec::with_capacity(4 * n),
+            children: Vec::with_capacity(4 * n),
+            edges: HashMap::with_capacity(6 * n),
         };
         mesh.add(corners);
         Ok(mesh)
