@@ -47,10 +47,14 @@ pub(crate) fn hasse<N: Num>(
     }
     let corners = |t: usize| tris[t].map(|v| &points[v]);
     let volumes = Volumes::new(&members, &corners);
-    let boxes: Vec<BBox3<N>> = members
-        .iter()
-        .map(|m| BBox3::of(m.iter().flat_map(|&t| corners(t))).expect("a surface has triangles"))
-        .collect();
+    // Each surface's box, once a larger surface is tried as its parent or as another's (a
+    // single surface, as most meets have, never needs one).
+    let boxes: Vec<OnceCell<BBox3<N>>> = (0..count).map(|_| OnceCell::new()).collect();
+    let bbox = |s: usize| {
+        boxes[s].get_or_init(|| {
+            BBox3::of(members[s].iter().flat_map(|&t| corners(t))).expect("a surface has triangles")
+        })
+    };
     let mut parent = vec![None; count];
     for l in 0..count {
         let q = {
@@ -61,8 +65,8 @@ pub(crate) fn hasse<N: Num>(
         for k in 0..count {
             if k == l
                 || volumes.cmp_abs(k, l) != Ordering::Greater
-                || !boxes[k].contains(&boxes[l].min)
-                || !boxes[k].contains(&boxes[l].max)
+                || !bbox(k).contains(&bbox(l).min)
+                || !bbox(k).contains(&bbox(l).max)
             {
                 continue;
             }
