@@ -62,7 +62,7 @@ pub(crate) fn hasse<N: Num>(
             Point3::centroid(a, b, c)
         };
         let mut best: Option<usize> = None;
-        for k in 0..count {
+        for (k, member) in members.iter().enumerate() {
             if k == l
                 || volumes.cmp_abs(k, l) != Ordering::Greater
                 || !bbox(k).contains(&bbox(l).min)
@@ -73,7 +73,7 @@ pub(crate) fn hasse<N: Num>(
             if best.is_some_and(|b| volumes.cmp_abs(b, k) != Ordering::Greater) {
                 continue;
             }
-            if winding(members[k].iter().map(|&t| corners(t)), &q, ctx) != 0 {
+            if winding(member.iter().map(|&t| corners(t)), &q, ctx) != 0 {
                 best = Some(k);
             }
         }
