@@ -181,6 +181,9 @@ impl Rational {
     /// (`n` / `d`) · 2^`scale` for `n` / `d` in lowest terms with `d` > 0: only the factors of
     /// two of the other side can cancel.
     pub(crate) fn times_power_of_two(mut n: BigInt, mut d: BigInt, scale: i32) -> Rational {
+        if n.is_zero() {
+            return Rational::zero();
+        }
         if scale > 0 {
             let t = (scale as u64).min(d.trailing_zeros().unwrap_or(0));
             n <<= scale as u64 - t;

@@ -23,6 +23,8 @@ pub(super) type Vector<S = BigInt> = [S; 3];
 
 /// The numbers the link is walked in: exact integers, or intervals around exact values that
 /// tell a sign only where it is certain — the filter tried first, as in CGAL's lazy kernel.
+/// (The pierce points' plane values are formed in it too, on big or stack integers:
+/// [`super::pierce`].)
 pub(super) trait Scalar:
     Clone + Add<Output = Self> + Sub<Output = Self> + Neg<Output = Self>
 {
