@@ -12,6 +12,7 @@ use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, PlaneF64};
 use std::cmp::Ordering::{self, Equal};
+use std::sync::OnceLock;
 
 /// An edge of one operand: its ends' global point indices, the smaller first.
 pub(super) type Edge = (usize, usize);
@@ -64,17 +65,19 @@ pub(super) fn key(u: usize, v: usize) -> Edge {
 /// roles swapped (the permutation is even), so four orientations settle the overlap.
 pub(super) fn contact<N: Num>(
     p: &[[f64; 3]],
+    planes: &[OnceLock<PlaneF64>],
     corners: &[&Point3<N>],
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
 ) -> Contact {
-    let plane = |[u, v, w]: [usize; 3]| PlaneF64::new(p[u], p[v], p[w]);
-    let t_plane = plane(t);
+    let plane =
+        |i: usize, [u, v, w]: [usize; 3]| planes[i].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]));
+    let t_plane = plane(ti, t);
     let s_sides = s.map(|v| t_plane.side(p[v]));
     if one_side(&s_sides) {
         return Contact::Apart;
     }
-    let s_plane = plane(s);
+    let s_plane = plane(si, s);
     let t_sides = t.map(|v| s_plane.side(p[v]));
     if one_side(&t_sides) {
         return Contact::Apart;
@@ -318,7 +321,8 @@ mod tests {
             .map(|[x, y, z]| Point3::new(x, y, z))
             .collect();
         let corners: Vec<&Point3<Float>> = points.iter().collect();
-        contact(&p, &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
+        let planes = [OnceLock::new(), OnceLock::new()];
+        contact(&p, &planes, &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
     }
 
     /// Triangles sharing a corner or an edge touch only where they meet in nothing else:

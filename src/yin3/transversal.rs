@@ -40,13 +40,14 @@ use super::locate::{ray_box, winding, TriBoxes};
 use super::pierce::pierce;
 use super::set::{compact, Brep};
 use crate::kernel::Point3;
-use crate::num::{Num, Rational};
+use crate::num::{Num, PlaneF64, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet};
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
 use std::cell::{Cell, OnceCell};
+use std::sync::OnceLock;
 
 /// Where the boundaries meet, as edges of the pieces of the transversal meet.
 #[derive(Default)]
@@ -231,6 +232,8 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         .map(|t| AABB::from_points(t.map(|v| &f64s[v])))
         .collect();
     let (near_a, near_b) = near(&boxes, first_b);
+    // Each triangle's plane, prepared when a pair of boxes first needs it.
+    let planes: Vec<OnceLock<PlaneF64>> = (0..tris.len()).map(|_| OnceLock::new()).collect();
     // The R-tree holds the operand with fewer near triangles, the other's query it.
     let flip = near_b.len() > near_a.len();
     let (near, indexed) = match flip {
@@ -251,7 +254,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     let search = |(mut crossing, mut touching): Found, q: usize| -> Option<Found> {
         let generic = meeting_boxes(tree.root(), &boxes[q], &mut |g| {
             let (t, s) = if flip { (g, q) } else { (q, g) };
-            match contact(&f64s, &corners, (t, tris[t]), (s, tris[s])) {
+            match contact(&f64s, &planes, &corners, (t, tris[t]), (s, tris[s])) {
                 Contact::Apart => {}
                 Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
@@ -1012,10 +1015,11 @@ mod tests {
         let tris: Vec<[usize; 3]> = (x.tris.iter().copied())
             .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
             .collect();
+        let planes: Vec<OnceLock<PlaneF64>> = tris.iter().map(|_| OnceLock::new()).collect();
         let (mut kinds, mut edge_touch, mut cross) = ([false; 5], false, false);
         for t in 0..x.tris.len() {
             for s in x.tris.len()..tris.len() {
-                match contact(&p, &corners, (t, tris[t]), (s, tris[s])) {
+                match contact(&p, &planes, &corners, (t, tris[t]), (s, tris[s])) {
                     Contact::Cross(ends) => {
                         cross = true;
                         for end in ends {
