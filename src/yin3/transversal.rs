@@ -232,29 +232,35 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         .map(|t| AABB::from_points(t.map(|v| &f64s[v])))
         .collect();
     let (near_a, near_b) = near(&boxes, first_b);
-    // Each triangle's plane, prepared when a pair of boxes first needs it.
-    let planes: Vec<OnceLock<PlaneF64>> = (0..tris.len()).map(|_| OnceLock::new()).collect();
-    // The R-tree holds the operand with fewer near triangles, the other's query it.
+    // The R-tree holds the operand with fewer near triangles (by their place in `indexed`), the
+    // other's query it.
     let flip = near_b.len() > near_a.len();
     let (near, indexed) = match flip {
         false => (near_a, near_b),
         true => (near_b, near_a),
     };
     let tree = RTree::bulk_load(
-        indexed
-            .into_iter()
-            .map(|s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s))
+        (indexed.iter().enumerate())
+            .map(|(k, &s)| GeomWithData::new(Rectangle::from_aabb(boxes[s]), k))
             .collect(),
     );
+    // Each indexed triangle's plane, prepared when a pair of boxes first needs it (a querying
+    // triangle's is prepared once for its query): a table over the indexed triangles only.
+    let planes: Vec<OnceLock<PlaneF64>> = indexed.iter().map(|_| OnceLock::new()).collect();
     // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
     // ends it.
     // The crossing and the touching pairs found so far, to which `search` adds those of the
     // triangle q.
     type Found = (Vec<(usize, usize, [End; 2])>, Vec<[[usize; 2]; 2]>);
     let search = |(mut crossing, mut touching): Found, q: usize| -> Option<Found> {
-        let generic = meeting_boxes(tree.root(), &boxes[q], &mut |g| {
-            let (t, s) = if flip { (g, q) } else { (q, g) };
-            match contact(&f64s, &planes, &corners, (t, tris[t]), (s, tris[s])) {
+        let own = OnceLock::new();
+        let generic = meeting_boxes(tree.root(), &boxes[q], &mut |k| {
+            let g = indexed[k];
+            let (t, s, cells) = match flip {
+                true => (g, q, [&planes[k], &own]),
+                false => (q, g, [&own, &planes[k]]),
+            };
+            match contact(&f64s, cells, &corners, (t, tris[t]), (s, tris[s])) {
                 Contact::Apart => {}
                 Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
@@ -1019,7 +1025,13 @@ mod tests {
         let (mut kinds, mut edge_touch, mut cross) = ([false; 5], false, false);
         for t in 0..x.tris.len() {
             for s in x.tris.len()..tris.len() {
-                match contact(&p, &planes, &corners, (t, tris[t]), (s, tris[s])) {
+                match contact(
+                    &p,
+                    [&planes[t], &planes[s]],
+                    &corners,
+                    (t, tris[t]),
+                    (s, tris[s]),
+                ) {
                     Contact::Cross(ends) => {
                         cross = true;
                         for end in ends {
