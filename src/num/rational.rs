@@ -169,17 +169,14 @@ impl Rational {
         [0, 1, 2].map(|k| {
             let numer: BigInt = &u * &pv[k] - &v * &pu[k];
             let numer = if flip { -numer } else { numer };
-            if numer.is_zero() {
-                return Rational::zero();
-            }
             let g = small_gcd(&(&pv[k] - &pu[k]), &d);
             let (n, d) = (big::exact_div(&numer, &g), big::exact_div(&d, &g));
             Rational::times_power_of_two(n, d, scale)
         })
     }
 
-    /// (`n` / `d`) · 2^`scale` for `n` / `d` in lowest terms with `d` > 0: only the factors of
-    /// two of the other side can cancel.
+    /// (`n` / `d`) · 2^`scale` for `n` / `d` in lowest terms with `d` > 0 (0 for n = 0): only
+    /// the factors of two of the other side can cancel.
     pub(crate) fn times_power_of_two(mut n: BigInt, mut d: BigInt, scale: i32) -> Rational {
         if n.is_zero() {
             return Rational::zero();

@@ -6,7 +6,7 @@
 
 use super::link::{cross, dot, Scalar, Vector};
 use crate::kernel::Point3;
-use crate::num::{common_grid, from_words, Num, Rational};
+use crate::num::{common_grid, from_words, Rational};
 use bnum::{BInt, BUint};
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
@@ -94,9 +94,6 @@ fn on_stack<const W: usize>(parts: [(i64, u32); 15], scale: i32) -> [Rational; 3
     let d = u - v;
     [0, 1, 2].map(|k| {
         let numer = u * pv[k] - v * pu[k];
-        if numer.is_zero() {
-            return <Rational as Num>::zero();
-        }
         let w = u128::try_from((pv[k] - pu[k]).unsigned_abs()).expect("V − U below 2^95");
         let g = match w {
             0 => d,
@@ -144,6 +141,7 @@ fn big<const W: usize>(x: BInt<W>) -> BigInt {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::Num;
     use rand::rngs::StdRng;
     use rand::{RngExt, SeedableRng};
 
