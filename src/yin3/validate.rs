@@ -316,26 +316,29 @@ pub(crate) fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yi
     }
     let (label, count) = uf.classes();
     let expected = if b.bounded { 0 } else { -1 };
-    // Each triangle's box on its corners rounded to f64, each point rounded once.
+    // Each triangle's box on its corners rounded to f64, each point rounded once, each box
+    // made once for the rays of all the surfaces.
     let rounded: Vec<[f64; 3]> = b.points.iter().map(Point3::to_f64).collect();
-    let near =
-        |u: usize, ray: &AABB<[f64; 3]>| widened_box(b.tris[u].map(|v| rounded[v])).intersects(ray);
-    for c in 0..count {
-        // A triangle whose normal has a nonzero x (the orientation of its projection to the
-        // yz-plane): the ray along +x leaves it to one side.
-        let yz = |p: &Point3<N>| Point::new(p.y.clone(), p.z.clone());
-        let Some((t, nx)) = (0..b.tris.len()).filter(|&t| label[t] == c).find_map(|t| {
+    let boxes: Vec<AABB<[f64; 3]>> = (b.tris.iter())
+        .map(|t| widened_box(t.map(|v| rounded[v])))
+        .collect();
+    // For each surface, a triangle whose normal has a nonzero x (the orientation of its
+    // projection to the yz-plane): the ray along +x leaves it to one side.
+    let yz = |p: &Point3<N>| Point::new(p.y.clone(), p.z.clone());
+    let mut leaving: Vec<Option<(usize, Ordering)>> = vec![None; count];
+    for (t, &c) in label.iter().enumerate() {
+        if leaving[c].is_none() {
             let [p, q, r] = b.corners(t);
             let s = orient(&yz(p), &yz(q), &yz(r), ctx);
-            (s != Ordering::Equal).then_some((t, s))
-        }) else {
-            continue;
-        };
+            leaving[c] = (s != Ordering::Equal).then_some((t, s));
+        }
+    }
+    for (t, nx) in leaving.into_iter().flatten() {
         let [p, q, r] = b.corners(t);
         let centroid = Point3::centroid(p, q, r);
         let ray = ray_box(&centroid);
         let others = (0..b.tris.len())
-            .filter(|&u| u != t && near(u, &ray))
+            .filter(|&u| u != t && boxes[u].intersects(&ray))
             .map(|u| b.corners(u));
         let w = winding(others, &centroid, ctx);
         // The ray runs into the +n side if the normal's x is positive; the −n side has one more.
