@@ -46,7 +46,9 @@ pub(crate) fn hasse<N: Num>(
         members[l].push(t);
     }
     let corners = |t: usize| tris[t].map(|v| &points[v]);
-    let volumes = Volumes::new(&members, &corners);
+    // Each point rounded to f64 once (a point is a corner of about six triangles).
+    let rounded: Vec<[f64; 3]> = points.iter().map(Point3::to_f64).collect();
+    let volumes = Volumes::new(&members, &corners, |t| tris[t].map(|v| rounded[v]));
     // Each surface's box, once a larger surface is tried as its parent or as another's (a
     // single surface, as most meets have, never needs one).
     let boxes: Vec<OnceCell<BBox3<N>>> = (0..count).map(|_| OnceCell::new()).collect();
@@ -124,11 +126,16 @@ struct Volumes<'a, N: Num, F> {
 }
 
 impl<'a, N: Num, F: Fn(usize) -> [&'a Point3<N>; 3]> Volumes<'a, N, F> {
-    /// The filtered volumes of the surfaces `members` (triangle lists).
-    fn new(members: &'a [Vec<usize>], corners: &'a F) -> Self {
+    /// The filtered volumes of the surfaces `members` (triangle lists), with `rounded` the
+    /// corners of a triangle rounded to the nearest `f64`s.
+    fn new(
+        members: &'a [Vec<usize>],
+        corners: &'a F,
+        rounded: impl Fn(usize) -> [[f64; 3]; 3],
+    ) -> Self {
         let approx = members
             .iter()
-            .map(|m| det3_sum_f64(m.iter().map(|&t| corners(t).map(Point3::to_f64))))
+            .map(|m| det3_sum_f64(m.iter().map(|&t| rounded(t))))
             .collect();
         Volumes {
             members,
