@@ -46,13 +46,19 @@ fn from_dashu(x: &dashu_int::UBig) -> BigUint {
     from_words(x.as_words())
 }
 
-/// The number of the 64-bit `words`, least significant first.
+/// The number of the 64-bit `words`, least significant first (up to eight words through a
+/// buffer on the stack: one allocation, the number's own).
 pub(crate) fn from_words(words: &[u64]) -> BigUint {
-    let mut halves = Vec::with_capacity(2 * words.len());
-    for &w in words {
-        halves.extend([w as u32, (w >> 32) as u32]);
+    let halves = words.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]);
+    if words.len() <= 8 {
+        let mut buffer = [0u32; 16];
+        for (slot, half) in buffer.iter_mut().zip(halves) {
+            *slot = half;
+        }
+        BigUint::from_slice(&buffer[..2 * words.len()])
+    } else {
+        BigUint::new(halves.collect())
     }
-    BigUint::new(halves)
 }
 
 /// A `dashu-int` number as a `num-bigint` one, through its bytes.

@@ -181,6 +181,9 @@ impl Rational {
         if n.is_zero() {
             return Rational::zero();
         }
+        if scale == 0 {
+            return from_big(BigRational::new_raw(n, d));
+        }
         if scale > 0 {
             let t = (scale as u64).min(d.trailing_zeros().unwrap_or(0));
             n <<= scale as u64 - t;

@@ -107,8 +107,32 @@ fn on_stack<const W: usize>(parts: [(i64, u32); 15], scale: i32) -> [Rational; 3
             true => (numer, d),
             false => (numer / g, d / g),
         };
+        let (n, d, scale) = scaled(n, d, scale);
         Rational::times_power_of_two(big(n), big(d), scale)
     })
+}
+
+/// n/d · 2^`scale` (n/d in lowest terms, d > 0) as n′/d′ · 2^`rest` in lowest terms, with the
+/// common powers of two cancelled and the rest applied on the stack where the shifted term
+/// fits (`rest` = 0), the rest left for big integers otherwise.
+fn scaled<const W: usize>(n: BInt<W>, d: BInt<W>, scale: i32) -> (BInt<W>, BInt<W>, i32) {
+    let fits = |x: &BInt<W>, k: u32| x.unsigned_abs().bits() + k < 64 * W as u32;
+    let k = scale.unsigned_abs();
+    if n == BInt::ZERO {
+        (n, d, 0)
+    } else if scale < 0 {
+        let t = k.min(n.trailing_zeros());
+        match fits(&d, k - t) {
+            true => (n >> t, d << (k - t), 0),
+            false => (n >> t, d, scale + t as i32),
+        }
+    } else {
+        let t = k.min(d.trailing_zeros());
+        match fits(&n, k - t) {
+            true => (n << (k - t), d >> t, 0),
+            false => (n, d >> t, scale - t as i32),
+        }
+    }
 }
 
 /// gcd(a, b) by Lehmer's algorithm (`dashu-int`, word by word on 64-bit targets; a binary gcd
@@ -316,5 +340,53 @@ mod tests {
                 "{bits} bits"
             );
         }
+    }
+    /// `scaled` keeps the value n/d · 2^scale and lowest terms, and leaves a power of two to
+    /// big integers only where the shifted term would not fit: on numerators and denominators
+    /// with up to 40 factors of two (one of them odd), widths from a few bits to 250, and scales
+    /// of either sign up to 300 (past the stack width). The oracle multiplies rationals.
+    #[test]
+    fn scaled_keeps_the_value_in_lowest_terms() {
+        let mut rng = StdRng::seed_from_u64(11);
+        let mut kinds = [0usize; 4];
+        for _ in 0..4000 {
+            let odd = |rng: &mut StdRng, bits: u32| {
+                let words: [u64; 4] = std::array::from_fn(|_| rng.random());
+                let x = BUint::<4>::from_digits(words) >> (256 - bits);
+                (x | BUint::ONE).cast_signed()
+            };
+            let twos = rng.random_range(0..=40);
+            let (a, b) = match rng.random() {
+                true => (twos, 0),
+                false => (0, twos),
+            };
+            let (bn, bd) = (rng.random_range(1..=250 - a), rng.random_range(1..=250 - b));
+            let n = odd(&mut rng, bn) << a;
+            let n = if rng.random() { -n } else { n };
+            let d = odd(&mut rng, bd) << b;
+            if big(n).gcd(&big(d)) != BigInt::from(1) {
+                continue;
+            }
+            let scale = rng.random_range(-300..=300);
+            let (m, e, rest) = scaled(n, d, scale);
+            let power = |k: i32| {
+                let p = Rational::from_integer(BigInt::from(1) << k.unsigned_abs());
+                if k >= 0 {
+                    p
+                } else {
+                    Rational::from_i64(1) / p
+                }
+            };
+            let value = |n, d, k| Rational::new(big(n), big(d)) * power(k);
+            assert_eq!(
+                value(m, e, rest),
+                value(n, d, scale),
+                "{n} / {d} · 2^{scale}"
+            );
+            assert_eq!(big(m).gcd(&big(e)), BigInt::from(1));
+            assert!(e > BInt::ZERO);
+            kinds[usize::from(scale > 0) * 2 + usize::from(rest != 0)] += 1;
+        }
+        assert!(kinds.iter().all(|&k| k > 200), "{kinds:?}");
     }
 }
