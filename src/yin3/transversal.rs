@@ -172,7 +172,8 @@ pub(crate) enum Transversal {
     /// inside the other operand (one ray per surface).
     Apart([Vec<bool>; 2]),
     /// They cross or touch: the meet's triangles (a conforming complex, as the validator
-    /// would rebuild it) over a table of exact points, some of which may be unused.
+    /// would rebuild it) over a table of exact points, some of which may be unused (and then
+    /// need not be the operands' values).
     Crossing(Complex),
 }
 
@@ -331,8 +332,10 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         }
     }
     let (on_edge, extra) = (&sites.on_edge, &sites.extra);
+    // The corners' exact values are made where a triangle that is cut or kept uses them (a
+    // meet keeps a part of each operand); the others stay zero and unused.
     let mut points = Vec::with_capacity(corners.len() + sites.made.len());
-    points.extend(corners.iter().map(|&p| exact_point(p)));
+    points.resize(corners.len(), Point3::int(0, 0, 0));
     points.extend(map_all(&sites.made, parallel, |&(edge, tri)| {
         pierce(&f64s, edge, tris[tri])
     }));
@@ -359,6 +362,21 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         !extra[t].is_empty() || tris[t].iter().filter(|&&v| ends[v]).count() >= 2 && on_sides()
     };
     let cut: Vec<usize> = (0..tris.len()).filter(|&t| has_points(t)).collect();
+    let mut exact = vec![false; corners.len()];
+    let mut make_exact = |points: &mut [Point3<Rational>],
+                          used: &mut dyn Iterator<Item = usize>| {
+        for v in used.filter(|&v| v < corners.len()) {
+            if !exact[v] {
+                (points[v], exact[v]) = (exact_point(corners[v]), true);
+            }
+        }
+    };
+    for &t in &cut {
+        // A cut triangle's corners and the other operand's corners inside it: the points on
+        // its sides are all constructed, and its cuts end at these or at constructed points.
+        let mut used = tris[t].into_iter().chain(extra[t].iter().copied());
+        make_exact(&mut points, &mut used);
+    }
     let parts: Vec<Vec<[usize; 3]>> = map_all(&cut, parallel, |&t| {
         let chart = Chart::of_f64_triangle(tris[t].map(|v| f64s[v]))?;
         let extra = extra[t].iter().copied();
@@ -380,10 +398,11 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     }
     let inside = inside(&pieces, &whole, &seams, &rays)?;
     let rename = |v: usize| *seams.same.get(&v).unwrap_or(&v);
-    let kept = kept(&pieces, &inside)
+    let kept: Vec<[usize; 3]> = kept(&pieces, &inside)
         .into_iter()
         .map(|t| t.map(rename))
         .collect();
+    make_exact(&mut points, &mut kept.iter().flatten().copied());
     Some(Transversal::Crossing((points, kept)))
 }
 
