@@ -47,6 +47,9 @@ pub(crate) fn triangulate<N: Num>(
     if let Some(pieces) = one_cut(points.len(), corners, sides, constraints) {
         return Ok(pieces);
     }
+    if let Some(pieces) = by_chains(points, corners, sides, constraints, ctx) {
+        return Ok(pieces);
+    }
     let mut mesh = Mesh::new(points, corners, ctx)?;
     let mut placed = vec![false; points.len()];
     for (k, side) in sides.iter().enumerate() {
@@ -124,6 +127,116 @@ fn one_cut(
         }
         _ => None,
     }
+}
+
+/// The pieces where the constraints form chains across the triangle (most triangles that a
+/// transversal meet cuts more than once): each chain runs from a corner or a point inside a
+/// side, through other points each on exactly two constraints, to another; no corner or side
+/// point ends two chains, and every point is on a side or a chain. The chains split the
+/// triangle's boundary cycle into polygons, one chain at a time, and each polygon is
+/// ear-clipped. `None` for anything else — a closed ring, a branching point, a point on no
+/// constraint, a chain whose ends no polygon holds, a polygon without an ear —, which
+/// the general path takes (and reports crossings and points outside).
+///
+/// The result needs no further check: every piece is counterclockwise (ear clipping emits
+/// only those), and every edge is either a step of the boundary cycle or met once each way
+/// (a chain's edges by the polygons on its two sides, a diagonal by the ears on its two), so
+/// the pieces cover each point inside the triangle as often as the boundary winds around it
+/// (once) and none outside. Chains that crossed, or a point outside, on a side it was not
+/// declared on, or inside a piece or an edge, would cover some point twice or outside.
+fn by_chains<N: Num>(
+    points: &[Point<N>],
+    corners: [usize; 3],
+    sides: [&[usize]; 3],
+    constraints: &[(usize, usize)],
+    ctx: &N::Ctx,
+) -> Option<Vec<[usize; 3]>> {
+    let n = points.len();
+    // The triangle's boundary counterclockwise: each corner, then the points inside its side
+    // in their order along it (lexicographic from the side's smaller end).
+    let mut boundary = Vec::with_capacity(n);
+    for (k, side) in sides.iter().enumerate() {
+        let (x, y) = (corners[k], corners[(k + 1) % 3]);
+        boundary.push(x);
+        let start = boundary.len();
+        boundary.extend_from_slice(side);
+        boundary[start..].sort_by(|&p, &q| points[p].cmp(&points[q]));
+        if points[x] > points[y] {
+            boundary[start..].reverse();
+        }
+    }
+    let mut on_boundary = vec![false; n];
+    for &b in &boundary {
+        on_boundary[b] = true;
+    }
+    // Each point's constraint neighbours: at most two, and one on the boundary.
+    let mut next = vec![[usize::MAX; 2]; n];
+    let mut degree = vec![0usize; n];
+    for &(u, v) in constraints {
+        for (a, b) in [(u, v), (v, u)] {
+            let limit = if on_boundary[a] { 1 } else { 2 };
+            if a == b || degree[a] == limit {
+                return None;
+            }
+            next[a][degree[a]] = b;
+            degree[a] += 1;
+        }
+    }
+    if (0..n).any(|p| !on_boundary[p] && degree[p] != 2) {
+        return None;
+    }
+    // Each chain from its first end met along the boundary; every inner point on one.
+    let mut chains: Vec<Vec<usize>> = Vec::new();
+    let mut seen = vec![false; n];
+    for &end in &boundary {
+        if degree[end] == 0 || seen[end] {
+            continue;
+        }
+        let (mut chain, mut at) = (vec![end], end);
+        seen[end] = true;
+        let mut to = next[end][0];
+        while !on_boundary[to] {
+            seen[to] = true;
+            chain.push(to);
+            let step = next[to];
+            (at, to) = (to, if step[0] == at { step[1] } else { step[0] });
+        }
+        seen[to] = true;
+        chain.push(to);
+        chains.push(chain);
+    }
+    if (0..n).any(|p| !on_boundary[p] && !seen[p]) {
+        return None;
+    }
+    // Split the polygon that holds both ends of each chain (counterclockwise pieces).
+    let mut polygons = vec![boundary];
+    for chain in &chains {
+        let (a, b) = (chain[0], chain[chain.len() - 1]);
+        // (Were it a wrong one of two, no ear clipping could tile it: see above.)
+        let k = (polygons.iter()).position(|poly| poly.contains(&a) && poly.contains(&b))?;
+        let mut poly = std::mem::take(&mut polygons[k]);
+        let i = poly.iter().position(|&v| v == a)?;
+        poly.rotate_left(i);
+        let j = poly.iter().position(|&v| v == b)?;
+        let inner = &chain[1..chain.len() - 1];
+        // From a to b along the polygon, back along the chain; from b to a, on along it.
+        let first: Vec<usize> = (poly[..=j].iter().chain(inner.iter().rev()))
+            .copied()
+            .collect();
+        let second: Vec<usize> = (poly[j..].iter().chain([&a]).chain(inner))
+            .copied()
+            .collect();
+        if first.len() < 3 || second.len() < 3 {
+            return None;
+        }
+        polygons[k] = first;
+        polygons.push(second);
+    }
+    let mut pieces = Vec::with_capacity(n + chains.len());
+    for poly in &polygons {
+        pieces.extend(ear_clip(points, poly, ctx)?);
+    }
+    Some(pieces)
 }
 
 /// The undirected edge `ab` as a map key.
@@ -633,6 +746,129 @@ mod tests {
             2 * xy.len() - 2 - 102,
             "Euler: 2n − 2 − h triangles"
         );
+    }
+
+    /// Points, the points inside each side and the constraints.
+    type Chains = (Vec<Point<Rational>>, [Vec<usize>; 3], Vec<(usize, usize)>);
+
+    /// Chains across the triangle (0, 0), (60, 0), (30, 60), one in each of a few disjoint
+    /// horizontal bands (so that none crosses another): from a point inside the left side, or
+    /// from corner 0, through up to four points strictly inside with increasing x (collinear
+    /// ones among them), to a point inside the right side; a few points on the bottom side on
+    /// no chain. The point list is numbered corners first, then each chain's points in order.
+    fn banded_chains(rng: &mut rand::rngs::StdRng, bands: usize) -> Chains {
+        use rand::RngExt;
+        let r = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        let mut points = pts::<Rational>(&[(0, 0), (60, 0), (30, 60)]);
+        let (mut sides, mut constraints) = ([vec![], vec![], vec![]], vec![]);
+        for band in 0..bands {
+            let y = |rng: &mut rand::rngs::StdRng| 10 * band as i64 + rng.random_range(2..=8);
+            let mut chain = vec![];
+            if band == 0 && rng.random() {
+                chain.push(0);
+            } else {
+                let y0 = y(rng);
+                points.push(Point::new(r(y0, 2), r(y0, 1)));
+                sides[2].push(points.len() - 1);
+                chain.push(points.len() - 1);
+            }
+            let mut inner: Vec<(i64, i64)> = (0..rng.random_range(0..=4))
+                .map(|_| {
+                    let yi = y(rng);
+                    (rng.random_range(yi / 2 + 1..60 - yi / 2), yi)
+                })
+                .collect();
+            inner.sort();
+            inner.dedup_by_key(|p| p.0);
+            for (x, yi) in inner {
+                points.push(Point::int(x, yi));
+                chain.push(points.len() - 1);
+            }
+            let y1 = y(rng);
+            points.push(Point::new(r(120 - y1, 2), r(y1, 1)));
+            sides[1].push(points.len() - 1);
+            chain.push(points.len() - 1);
+            constraints.extend(chain.windows(2).map(|w| (w[0], w[1])));
+        }
+        for _ in 0..rng.random_range(0..3) {
+            let x = rng.random_range(1..60);
+            if !points.contains(&Point::int(x, 0)) {
+                points.push(Point::int(x, 0));
+                sides[0].push(points.len() - 1);
+            }
+        }
+        (points, sides, constraints)
+    }
+
+    /// On random banded chains (above), the chain path answers nearly always and its pieces
+    /// pass the independent check, as do `triangulate`'s.
+    #[test]
+    fn chains_across_the_triangle() {
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::StdRng::seed_from_u64(5);
+        let mut answered = 0;
+        for case in 0..400 {
+            let (points, sides, constraints) = banded_chains(&mut rng, 1 + case % 5);
+            let sides = [&sides[0][..], &sides[1][..], &sides[2][..]];
+            if let Some(tris) = by_chains(&points, [0, 1, 2], sides, &constraints, &()) {
+                check(&points, [0, 1, 2], &constraints, &tris, &());
+                answered += 1;
+            }
+            let tris = triangulate(&points, [0, 1, 2], sides, &constraints, &()).expect("valid");
+            check(&points, [0, 1, 2], &constraints, &tris, &());
+        }
+        assert!(answered > 300, "the chain path answered {answered} of 400");
+    }
+
+    /// Two chains that cross twice (their ends on the sides do not interleave, so one polygon
+    /// holds both ends of the second): no ear clipping can tile them, and the general path
+    /// reports the crossing.
+    #[test]
+    fn chains_that_cross_are_errors() {
+        let points = pts::<Rational>(&[
+            (0, 0),
+            (60, 0),
+            (30, 60),
+            (10, 20),
+            (50, 20),
+            (20, 10),
+            (40, 30),
+            (5, 10),
+            (55, 10),
+            (25, 30),
+        ]);
+        let sides: [&[usize]; 3] = [&[], &[4, 8], &[3, 7]];
+        // 3 → 5 → 6 → 4 dips below 7 → 9 → 8 and rises above it again.
+        let constraints = [(3, 5), (5, 6), (6, 4), (7, 9), (9, 8)];
+        assert_eq!(
+            by_chains(&points, [0, 1, 2], sides, &constraints, &()),
+            None
+        );
+        assert!(matches!(
+            triangulate(&points, [0, 1, 2], sides, &constraints, &()),
+            Err(TriangulateError::CrossingConstraints(..))
+        ));
+    }
+
+    /// Chains the chain path leaves to the general path: one touching a side at a point not
+    /// declared on it (a vertex of the pieces on both sides of it there), one along a side (a
+    /// polygon of two points), one that is a closed ring.
+    #[test]
+    fn chains_the_general_path_takes() {
+        let points = pts::<Rational>(&[(0, 0), (60, 0), (30, 60), (10, 20), (50, 20), (30, 0)]);
+        let sides: [&[usize]; 3] = [&[], &[4], &[3]];
+        let touching = [(3, 5), (5, 4)];
+        let points_on_bottom = pts::<Rational>(&[(0, 0), (60, 0), (30, 60), (20, 0), (50, 20)]);
+        let along: [&[usize]; 3] = [&[3], &[4], &[]];
+        for (points, sides, constraints) in [
+            (&points, sides, &touching[..]),
+            (&points_on_bottom, along, &[(0, 3)][..]),
+            (&pts::<Rational>(&RING_POINTS), NO_SIDES, &RING[..]),
+        ] {
+            assert_eq!(by_chains(points, [0, 1, 2], sides, constraints, &()), None);
+            let tris = triangulate(points, [0, 1, 2], sides, constraints, &()).expect("valid");
+            check(points, [0, 1, 2], constraints, &tris, &());
+        }
     }
 
     #[test]
