@@ -3,7 +3,7 @@
 
 use super::geom::det3;
 use super::locate::winding;
-use crate::kernel::{BBox3, Point3};
+use crate::kernel::Point3;
 use crate::num::Num;
 use std::cell::OnceCell;
 use std::cmp::Ordering;
@@ -49,13 +49,25 @@ pub(crate) fn hasse<N: Num>(
     // Each point rounded to f64 once (a point is a corner of about six triangles).
     let rounded: Vec<[f64; 3]> = points.iter().map(Point3::to_f64).collect();
     let volumes = Volumes::new(&members, &corners, |t| tris[t].map(|v| rounded[v]));
-    // Each surface's box, once a larger surface is tried as its parent or as another's (a
-    // single surface, as most meets have, never needs one).
-    let boxes: Vec<OnceCell<BBox3<N>>> = (0..count).map(|_| OnceCell::new()).collect();
+    // Each surface's box on the rounded points, once a larger surface is tried as its parent
+    // or as another's (a single surface, as most meets have, never needs one). Rounding to
+    // nearest keeps order, so a rounded box outside another's shows the exact one outside too.
+    let boxes: Vec<OnceCell<[[f64; 3]; 2]>> = (0..count).map(|_| OnceCell::new()).collect();
     let bbox = |s: usize| {
         boxes[s].get_or_init(|| {
-            BBox3::of(members[s].iter().flat_map(|&t| corners(t))).expect("a surface has triangles")
+            let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+            for v in members[s].iter().flat_map(|&t| tris[t]) {
+                for k in 0..3 {
+                    b[0][k] = b[0][k].min(rounded[v][k]);
+                    b[1][k] = b[1][k].max(rounded[v][k]);
+                }
+            }
+            b
         })
+    };
+    let inside = |l: usize, k: usize| {
+        let ([lo, hi], [klo, khi]) = (bbox(l), bbox(k));
+        (0..3).all(|i| klo[i] <= lo[i] && hi[i] <= khi[i])
     };
     let mut parent = vec![None; count];
     for l in 0..count {
@@ -65,11 +77,7 @@ pub(crate) fn hasse<N: Num>(
         };
         let mut best: Option<usize> = None;
         for (k, member) in members.iter().enumerate() {
-            if k == l
-                || volumes.cmp_abs(k, l) != Ordering::Greater
-                || !bbox(k).contains(&bbox(l).min)
-                || !bbox(k).contains(&bbox(l).max)
-            {
+            if k == l || volumes.cmp_abs(k, l) != Ordering::Greater || !inside(l, k) {
                 continue;
             }
             if best.is_some_and(|b| volumes.cmp_abs(b, k) != Ordering::Greater) {
