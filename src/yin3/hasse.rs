@@ -50,8 +50,8 @@ pub(crate) fn hasse<N: Num>(
     let rounded: Vec<[f64; 3]> = points.iter().map(Point3::to_f64).collect();
     let volumes = Volumes::new(&members, &corners, |t| tris[t].map(|v| rounded[v]));
     // Each surface's box on the rounded points, once a larger surface is tried as its parent
-    // or as another's (a single surface, as most meets have, never needs one). Rounding to
-    // nearest keeps order, so a rounded box outside another's shows the exact one outside too.
+    // or as another's (a single surface, as most meets have, never needs one). Rounding keeps
+    // order, so a rounded box outside another's shows the exact one outside too.
     let boxes: Vec<OnceCell<[[f64; 3]; 2]>> = (0..count).map(|_| OnceCell::new()).collect();
     let bbox = |s: usize| {
         boxes[s].get_or_init(|| {

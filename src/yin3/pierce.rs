@@ -385,6 +385,10 @@ mod tests {
             );
             assert_eq!(big(m).gcd(&big(e)), BigInt::from(1));
             assert!(e > BInt::ZERO);
+            // A power of two is left over only where shifting the term would overflow.
+            let shifted = if scale < 0 { e } else { m };
+            let width = shifted.unsigned_abs().bits() + rest.unsigned_abs();
+            assert!(rest == 0 || width >= 256, "{n} / {d} · 2^{scale}");
             kinds[usize::from(scale > 0) * 2 + usize::from(rest != 0)] += 1;
         }
         assert!(kinds.iter().all(|&k| k > 200), "{kinds:?}");

@@ -5,7 +5,9 @@
 //! are inserted one by one, each located by descending the history of splits; then every
 //! constraint, split at the points on it, is made an edge by removing the triangles its open
 //! segment crosses and ear-clipping the two pseudo-polygons on its sides. Every decision is an
-//! [`orient`] or the exact order of points: no Delaunay test, no floats, no ε of our own.
+//! [`orient`] or the exact order of points: no Delaunay test, no floats, no ε of our own. Two
+//! fast paths come first: a single cut between sides (no predicate at all), and cuts that form
+//! chains from side to side (the triangle split into polygons along them, each ear-clipped).
 
 use crate::kernel::{on_closed_segment, orient, Point};
 use crate::num::Num;
@@ -153,23 +155,20 @@ fn by_chains<N: Num>(
 ) -> Option<Vec<[usize; 3]>> {
     let n = points.len();
     // The triangle's boundary counterclockwise: each corner, then the points inside its side
-    // in their order along it (lexicographic from the side's smaller end).
+    // in their order along it.
     let mut boundary = Vec::with_capacity(n);
     for (k, side) in sides.iter().enumerate() {
         let (x, y) = (corners[k], corners[(k + 1) % 3]);
         boundary.push(x);
         let start = boundary.len();
         boundary.extend_from_slice(side);
-        boundary[start..].sort_by(|&p, &q| points[p].cmp(&points[q]));
-        if points[x] > points[y] {
-            boundary[start..].reverse();
-        }
+        along_side(points, x, y, &mut boundary[start..]);
     }
     let mut on_boundary = vec![false; n];
     for &b in &boundary {
         on_boundary[b] = true;
     }
-    // Each point's constraint neighbours: at most two, and one on the boundary.
+    // Each point's constraint neighbours: at most two, at most one for a boundary point.
     let mut next = vec![[usize::MAX; 2]; n];
     let mut degree = vec![0usize; n];
     for &(u, v) in constraints {
@@ -212,7 +211,6 @@ fn by_chains<N: Num>(
     let mut polygons = vec![boundary];
     for chain in &chains {
         let (a, b) = (chain[0], chain[chain.len() - 1]);
-        // (Were it a wrong one of two, no ear clipping could tile it: see above.)
         let k = (polygons.iter()).position(|poly| poly.contains(&a) && poly.contains(&b))?;
         let mut poly = std::mem::take(&mut polygons[k]);
         let i = poly.iter().position(|&v| v == a)?;
@@ -237,6 +235,15 @@ fn by_chains<N: Num>(
         pieces.extend(ear_clip(points, poly, ctx)?);
     }
     Some(pieces)
+}
+
+/// Sort the points `on` of the segment from `x` to `y` nearest to `x` first: points of a
+/// segment are in lexicographic order from its smaller end.
+fn along_side<N: Num>(points: &[Point<N>], x: usize, y: usize, on: &mut [usize]) {
+    on.sort_by(|&p, &q| points[p].cmp(&points[q]));
+    if points[x] > points[y] {
+        on.reverse();
+    }
 }
 
 /// The undirected edge `ab` as a map key.
@@ -421,12 +428,7 @@ impl<'a, N: Num> Mesh<'a, N> {
     /// first, each splitting the triangle on the side's remaining piece.
     fn split_side(&mut self, x: usize, y: usize, on: &[usize]) -> Result<(), TriangulateError> {
         let mut on = on.to_vec();
-        // Points of a segment are in lexicographic order from its smaller end.
-        let (px, py) = (&self.points[x], &self.points[y]);
-        on.sort_by(|&p, &q| self.points[p].cmp(&self.points[q]));
-        if px > py {
-            on.reverse();
-        }
+        along_side(self.points, x, y, &mut on);
         let mut from = x;
         for p in on {
             let missing = TriangulateError::Inconsistent("a side point is not inside its side");
@@ -753,9 +755,10 @@ mod tests {
 
     /// Chains across the triangle (0, 0), (60, 0), (30, 60), one in each of a few disjoint
     /// horizontal bands (so that none crosses another): from a point inside the left side, or
-    /// from corner 0, through up to four points strictly inside with increasing x (collinear
-    /// ones among them), to a point inside the right side; a few points on the bottom side on
-    /// no chain. The point list is numbered corners first, then each chain's points in order.
+    /// from corner 0, through up to four points strictly inside in order of x (the first may
+    /// lie left of the start, and a chain may fold back along itself: the general path's
+    /// cases), to a point inside the right side; a few points on the bottom side on no chain.
+    /// The point list is numbered corners first, then each chain's points in order.
     fn banded_chains(rng: &mut rand::rngs::StdRng, bands: usize) -> Chains {
         use rand::RngExt;
         let r = |n: i64, d: i64| Rational::new(n.into(), d.into());
@@ -818,6 +821,42 @@ mod tests {
             check(&points, [0, 1, 2], &constraints, &tris, &());
         }
         assert!(answered > 300, "the chain path answered {answered} of 400");
+    }
+
+    /// Chains nested on one side, and chains ending at corners 1 and 2 and on the bottom side:
+    /// the chain path answers, and its pieces pass the independent check.
+    #[test]
+    fn nested_chains_and_chains_from_corners() {
+        let points = pts::<Rational>(&[
+            (0, 0),
+            (60, 0),
+            (30, 60),
+            (58, 4),
+            (54, 12),
+            (46, 28),
+            (42, 36),
+            (44, 16),
+            (30, 10),
+            (30, 30),
+            (10, 20),
+            (25, 40),
+            (20, 0),
+            (40, 5),
+        ]);
+        let sides: [&[usize]; 3] = [&[12], &[6, 3, 5, 4], &[10]];
+        let constraints = [
+            (4, 7),
+            (7, 5),
+            (3, 8),
+            (8, 9),
+            (9, 6),
+            (2, 11),
+            (11, 10),
+            (12, 13),
+            (13, 1),
+        ];
+        let tris = by_chains(&points, [0, 1, 2], sides, &constraints, &()).expect("chains");
+        check(&points, [0, 1, 2], &constraints, &tris, &());
     }
 
     /// Two chains that cross twice (their ends on the sides do not interleave, so one polygon
