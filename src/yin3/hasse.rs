@@ -1,10 +1,11 @@
 //! Orientation of glued surfaces, boundedness, the Hasse diagram of inclusion and the atoms
 //! (seed 003 Def. 7.3–7.6, Thm 7.10, Cor. 7.11; DESIGN-3D §2.8).
 
-use super::geom::det3;
+use super::geom::{det3, widened_box};
 use super::locate::winding;
 use crate::kernel::Point3;
 use crate::num::Num;
+use rstar::{Envelope, AABB};
 use std::cell::OnceCell;
 use std::cmp::Ordering;
 
@@ -49,26 +50,16 @@ pub(crate) fn hasse<N: Num>(
     // Each point rounded to f64 once (a point is a corner of about six triangles).
     let rounded: Vec<[f64; 3]> = points.iter().map(Point3::to_f64).collect();
     let volumes = Volumes::new(&members, &corners, |t| tris[t].map(|v| rounded[v]));
-    // Each surface's box on the rounded points, once a larger surface is tried as its parent
-    // or as another's (a single surface, as most meets have, never needs one). Rounding keeps
-    // order, so a rounded box outside another's shows the exact one outside too.
-    let boxes: Vec<OnceCell<[[f64; 3]; 2]>> = (0..count).map(|_| OnceCell::new()).collect();
+    // Each surface's widened box on the rounded points, once a larger surface is tried as its
+    // parent or as another's (a single surface, as most meets have, never needs one). Rounding
+    // and widening keep order, so such a box outside another's shows the exact one outside too.
+    let boxes: Vec<OnceCell<AABB<[f64; 3]>>> = (0..count).map(|_| OnceCell::new()).collect();
     let bbox = |s: usize| {
         boxes[s].get_or_init(|| {
-            let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
-            for v in members[s].iter().flat_map(|&t| tris[t]) {
-                for k in 0..3 {
-                    b[0][k] = b[0][k].min(rounded[v][k]);
-                    b[1][k] = b[1][k].max(rounded[v][k]);
-                }
-            }
-            b
+            widened_box(members[s].iter().flat_map(|&t| tris[t].map(|v| rounded[v])))
         })
     };
-    let inside = |l: usize, k: usize| {
-        let ([lo, hi], [klo, khi]) = (bbox(l), bbox(k));
-        (0..3).all(|i| klo[i] <= lo[i] && hi[i] <= khi[i])
-    };
+    let inside = |l: usize, k: usize| bbox(k).contains_envelope(bbox(l));
     let mut parent = vec![None; count];
     for l in 0..count {
         let q = {

@@ -112,9 +112,9 @@ fn on_stack<const W: usize>(parts: [(i64, u32); 15], scale: i32) -> [Rational; 3
     })
 }
 
-/// n/d · 2^`scale` (n/d in lowest terms, d > 0) as n′/d′ · 2^`rest` in lowest terms, with the
-/// common powers of two cancelled and the rest applied on the stack where the shifted term
-/// fits (`rest` = 0), the rest left for big integers otherwise.
+/// n/d · 2^`scale` (n/d in lowest terms, d > 0) as n′/d′ · 2^`rest` in lowest terms: the
+/// power of two applied on the stack where the shifted term fits (the common powers of two
+/// cancelled, `rest` = 0), else left whole to [`Rational::times_power_of_two`] on big integers.
 fn scaled<const W: usize>(n: BInt<W>, d: BInt<W>, scale: i32) -> (BInt<W>, BInt<W>, i32) {
     let fits = |x: &BInt<W>, k: u32| x.unsigned_abs().bits() + k < 64 * W as u32;
     let k = scale.unsigned_abs();
@@ -124,13 +124,13 @@ fn scaled<const W: usize>(n: BInt<W>, d: BInt<W>, scale: i32) -> (BInt<W>, BInt<
         let t = k.min(n.trailing_zeros());
         match fits(&d, k - t) {
             true => (n >> t, d << (k - t), 0),
-            false => (n >> t, d, scale + t as i32),
+            false => (n, d, scale),
         }
     } else {
         let t = k.min(d.trailing_zeros());
         match fits(&n, k - t) {
             true => (n << (k - t), d >> t, 0),
-            false => (n, d >> t, scale - t as i32),
+            false => (n, d, scale),
         }
     }
 }
