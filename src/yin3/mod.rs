@@ -20,6 +20,7 @@ mod ops;
 mod pierce;
 mod set;
 pub mod shapes;
+mod sweep;
 mod transversal;
 mod tri;
 mod triangulate;

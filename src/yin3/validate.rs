@@ -7,14 +7,15 @@ use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::{exact_points, rounded_brep};
 use super::geom::{collinear, f64_box, normal, widened_box, Chart};
-use super::locate::{ray_box, winding, TriBoxes};
+use super::locate::{ray_box, winding};
 use super::set::{Brep, YinSet3};
+use super::sweep::MeetingBoxes;
+use super::transversal::PARALLEL_FROM;
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
 use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, Num, PlaneF64};
 use crate::union_find::UnionFind;
-use rayon::prelude::*;
 use rstar::{Envelope, AABB};
 use std::cmp::Ordering;
 
@@ -116,16 +117,11 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// plane ([`off_plane_but_shared`]), then on images in a coordinate plane; a pair without a
 /// shared vertex that they cannot tell apart is intersected exactly, as the validator would;
 /// other pairs they cannot tell make it false, and then the caller validates in full. Every
-/// other pair meets as it did. On rayon's threads.
+/// other pair meets as it did. The pairs come from [`MeetingBoxes`], on rayon's threads
+/// from [`PARALLEL_FROM`] triangles.
 pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
     let exact = &N::exact_ctx();
     let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
-    // Usually few triangles moved: their boxes are indexed, and every triangle asks them.
-    let boxes = TriBoxes::new(
-        (0..b.tris.len())
-            .filter(|&t| touched[t])
-            .map(|t| (t, b.corners(t))),
-    );
     // Float points are their `f64` values: the moved triangles' planes, prepared once, tell
     // most pairs apart with a few dot products before anything is projected.
     let f64s: Vec<[f64; 3]> = match N::EXACT {
@@ -136,6 +132,7 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
     let planes: Vec<Option<PlaneF64>> = (0..b.tris.len())
         .map(|t| (!N::EXACT && touched[t]).then(|| plane(b.tris[t])))
         .collect();
+    // The moved triangle `ti` and another, `ui`.
     let meet_in_shared = |ti: usize, ui: usize| {
         let (t, s) = (b.tris[ti], b.tris[ui]);
         if let Some(pt) = &planes[ti] {
@@ -153,11 +150,12 @@ pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> boo
             apart(t, s, exact) || intersect(t, s, exact).is_none()
         }
     };
-    // Each pair of a moved triangle t and another u once: a moved u asks only for t > u.
-    (0..b.tris.len()).into_par_iter().all(|u| {
-        boxes
-            .meeting(&f64_box(b.corners(u)))
-            .all(|t| t == u || (touched[u] && t < u) || meet_in_shared(t, u))
+    let boxes: Vec<AABB<[f64; 3]>> = (0..b.tris.len()).map(|t| f64_box(b.corners(t))).collect();
+    let parallel = boxes.len() >= PARALLEL_FROM;
+    MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| match (touched[t], touched[u]) {
+        (true, _) => meet_in_shared(t, u),
+        (false, true) => meet_in_shared(u, t),
+        (false, false) => true,
     })
 }
 
