@@ -27,6 +27,15 @@ pub(super) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
     BigInt::from_biguint(Sign::Plus, from_dashu(&g))
 }
 
+/// gcd(a, b) of machine integers, by the `gcd` crate's binary algorithm, on `u64` where both
+/// fit.
+pub(crate) fn gcd_u128(a: u128, b: u128) -> u128 {
+    match (u64::try_from(a), u64::try_from(b)) {
+        (Ok(x), Ok(y)) => u128::from(gcd::binary_u64(x, y)),
+        _ => gcd::binary_u128(a, b),
+    }
+}
+
 /// `x` as a `dashu-int` number, word by word (64-bit targets, where dashu's word is `u64`).
 #[cfg(target_pointer_width = "64")]
 fn to_dashu(x: &BigUint) -> dashu_int::UBig {

@@ -17,7 +17,7 @@ mod literal;
 mod quotient;
 mod rational;
 
-pub(crate) use big::from_words;
+pub(crate) use big::{from_words, gcd_u128};
 pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance, PlaneF64};
 pub use float::{Float, Tolerance, TooFine};
 #[cfg(feature = "gmp")]

@@ -6,10 +6,9 @@
 
 use super::link::{cross, dot, Scalar, Vector};
 use crate::kernel::Point3;
-use crate::num::{common_grid, from_words, Rational};
+use crate::num::{common_grid, from_words, gcd_u128, Rational};
 use bnum::{BInt, BUint};
 use num_bigint::{BigInt, Sign};
-use num_integer::Integer;
 use std::cmp::Ordering;
 
 /// The widest grid integers, in bits, that the stack path takes on `words` 64-bit words: for
@@ -100,7 +99,7 @@ fn on_stack<const W: usize>(parts: [(i64, u32); 15], scale: i32) -> [Rational; 3
             w => {
                 let r = d.unsigned_abs() % BUint::<W>::from(w);
                 let r = u128::try_from(r).expect("a remainder below w");
-                BInt::from(w.gcd(&r))
+                BInt::from(gcd_u128(w, r))
             }
         };
         let (n, d) = match g == BInt::ONE {
@@ -149,7 +148,7 @@ fn gcd<const W: usize>(a: BUint<W>, b: BUint<W>) -> BUint<W> {
 /// gcd(a, b), by `bnum`'s binary gcd.
 #[cfg(not(target_pointer_width = "64"))]
 fn gcd<const W: usize>(a: BUint<W>, b: BUint<W>) -> BUint<W> {
-    a.gcd(&b)
+    num_integer::Integer::gcd(&a, &b)
 }
 
 /// `x` as a big integer.
@@ -165,6 +164,7 @@ fn big<const W: usize>(x: BInt<W>) -> BigInt {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_integer::Integer;
     use crate::num::Num;
     use rand::rngs::StdRng;
     use rand::{RngExt, SeedableRng};
