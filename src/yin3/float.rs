@@ -37,7 +37,7 @@ pub(crate) fn float_meet<N: Num>(
             let moved = moved(&rounded, &points);
             let exact = || Ok(Topology::of(&Brep::assemble(points.clone(), kept.clone())?));
             return Ok(YinSet3::from_brep(
-                rounded_complex(rounded, &moved, &points, kept.clone(), exact)?,
+                rounded_complex(rounded, moved, &points, kept.clone(), exact)?,
                 ctx,
             ));
         }
@@ -91,24 +91,25 @@ fn unrepresentable(e: &dyn std::fmt::Display) -> Yin3Error {
 pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Error> {
     let rounded = rounded_points::<N>(&b.points)?;
     let moved = moved(&rounded, &b.points);
-    if !moved.contains(&true) {
+    if moved.iter().all(Option::is_none) {
         // Distinct exact points, each an f64 already: the same boundary, no work to redo.
         let mut points = rounded.into_iter();
         return Ok(b
             .clone()
             .map_points(|_| points.next().expect("one rounded point per point")));
     }
-    rounded_complex(rounded, &moved, &b.points, b.tris.clone(), || {
+    rounded_complex(rounded, moved, &b.points, b.tris.clone(), || {
         Ok(Topology::of(b))
     })
 }
 
-/// For each exact point, whether its rounding in `rounded` differs from it.
-fn moved<N: Num>(rounded: &[Point3<N>], exact: &[Point3<Rational>]) -> Vec<bool> {
+/// For each exact point, the exact value of its rounding in `rounded` where that differs from
+/// it (where it moved).
+fn moved<N: Num>(rounded: &[Point3<N>], exact: &[Point3<Rational>]) -> Vec<Option<Point3<Rational>>> {
     rounded
         .iter()
         .zip(exact)
-        .map(|(q, p)| exact_point(q) != *p)
+        .map(|(q, p)| Some(exact_point(q)).filter(|v| v != p))
         .collect()
 }
 
@@ -125,7 +126,7 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 
 /// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
 /// and conforming, as the validator would rebuild it — with each point replaced by its rounding
-/// in `rounded` (`moved` where it differs). If none moved, it is the exact boundary. If no two
+/// in `rounded` (`moved`: its exact value where it differs). If none moved, it is the exact boundary. If no two
 /// points round to one, only the triangles at moved points are checked against their
 /// neighbours ([`conforming_after_moves`]), else the whole boundary is validated. Otherwise
 /// vertices that round to one point are merged, triangles that collapse to a segment or a
@@ -135,12 +136,12 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 /// [`Yin3Error::Unrepresentable`].
 fn rounded_complex<N: Num>(
     rounded: Vec<Point3<N>>,
-    moved: &[bool],
+    moved: Vec<Option<Point3<Rational>>>,
     exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
     keep: impl FnOnce() -> Result<Topology, Yin3Error>,
 ) -> Result<Brep<N>, Yin3Error> {
-    if !moved.contains(&true) {
+    if moved.iter().all(Option::is_none) {
         // Every point an `f64` already: the exact boundary itself, valid, with its topology.
         return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
     }
@@ -161,14 +162,15 @@ fn rounded_complex<N: Num>(
 /// has the triangles `tris` (no point merged, the numbering kept).
 fn rounded_boundary<N: Num>(
     rounded: Vec<Point3<N>>,
-    moved: &[bool],
+    moved: Vec<Option<Point3<Rational>>>,
     exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
 ) -> Result<(Brep<N>, bool), Yin3Error> {
     if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
+        let flags: Vec<bool> = moved.iter().map(Option::is_some).collect();
         // The rounded points' exact values: those that did not move are the exact points.
-        let values = (rounded.iter().zip(moved).zip(exact))
-            .map(|((q, &m), p)| if m { exact_point(q) } else { p.clone() })
+        let values = (moved.into_iter().zip(exact))
+            .map(|(m, p)| m.unwrap_or_else(|| p.clone()))
             .collect();
         let on_values =
             Brep::<Rational>::assemble(values, tris.clone()).map_err(|e| unrepresentable(&e))?;
@@ -176,7 +178,7 @@ fn rounded_boundary<N: Num>(
             .map_points(|p| rounded_point(p).expect("the values of rounded points are f64s"));
         // Assembling a compact boundary keeps its numbering, so `moved` still applies.
         let same = brep.tris == tris;
-        if same && conforming_after_moves(&brep, moved) {
+        if same && conforming_after_moves(&brep, &flags) {
             check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;
         } else {
             revalidate(on_values.points, &brep, ()).map_err(|e| unrepresentable(&e))?;

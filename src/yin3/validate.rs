@@ -122,24 +122,26 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
     let exact = &N::exact_ctx();
     let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
-    // Float points are their `f64` values: the moved triangles' planes, prepared once, tell
+    // Float points are their `f64` values: the triangles' planes, prepared once, tell
     // most pairs apart with a few dot products before anything is projected.
     let f64s: Vec<[f64; 3]> = match N::EXACT {
         true => Vec::new(),
         false => b.points.iter().map(|p| p.to_f64()).collect(),
     };
-    let plane = |t: [usize; 3]| PlaneF64::new(f64s[t[0]], f64s[t[1]], f64s[t[2]]);
-    let planes: Vec<Option<PlaneF64>> = (0..b.tris.len())
-        .map(|t| (!N::EXACT && touched[t]).then(|| plane(b.tris[t])))
-        .collect();
+    let planes: Vec<PlaneF64> = match N::EXACT {
+        true => Vec::new(),
+        false => (b.tris.iter())
+            .map(|t| PlaneF64::new(f64s[t[0]], f64s[t[1]], f64s[t[2]]))
+            .collect(),
+    };
     // The moved triangle `ti` and another, `ui`.
     let meet_in_shared = |ti: usize, ui: usize| {
         let (t, s) = (b.tris[ti], b.tris[ui]);
-        if let Some(pt) = &planes[ti] {
-            if off_plane_but_shared(pt, &f64s, t, s) || off_plane_but_shared(&plane(s), &f64s, s, t)
-            {
-                return true;
-            }
+        if !N::EXACT
+            && (off_plane_but_shared(&planes[ti], &f64s, t, s)
+                || off_plane_but_shared(&planes[ui], &f64s, s, t))
+        {
+            return true;
         }
         if images_meet_only_in_shared(&b.points, t, s, exact) {
             true
