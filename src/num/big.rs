@@ -171,5 +171,21 @@ mod tests {
             proptest::prop_assert_eq!(gcd(&a, &b), a.gcd(&b));
             proptest::prop_assert_eq!(gcd(&b, &a), a.gcd(&b));
         }
+
+        /// `gcd_u128` equals num-integer's gcd on both of its paths (both operands below 2⁶⁴,
+        /// or either above), with common factors, powers of two and zeros.
+        #[test]
+        fn gcd_u128_is_the_gcd(
+            x in proptest::num::u128::ANY,
+            y in proptest::num::u128::ANY,
+            common in 0u128..1000,
+            widths in (0u32..=128, 0u32..=128),
+        ) {
+            let narrow = |v: u128, bits: u32| v.checked_shr(128 - bits).unwrap_or(0);
+            let (a, b) = (narrow(x, widths.0), narrow(y, widths.1));
+            let (a, b) = (a.saturating_mul(common), b.saturating_mul(common));
+            proptest::prop_assert_eq!(gcd_u128(a, b), a.gcd(&b));
+            proptest::prop_assert_eq!(gcd_u128(b, a), a.gcd(&b));
+        }
     }
 }

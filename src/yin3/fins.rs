@@ -4,6 +4,7 @@
 use crate::kernel::{orient3d, Point3};
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt};
+use smallvec::SmallVec;
 use std::cmp::Ordering;
 
 /// A triangle seen from one of its edges (a "fin" of the edge).
@@ -24,7 +25,7 @@ pub(crate) struct FinTable {
     /// The edges `(a, b)` with `a < b`.
     pub edges: Vec<(usize, usize)>,
     /// The fins of each edge, in counterclockwise order about b − a.
-    pub fins: Vec<Vec<Fin>>,
+    pub fins: Vec<SmallVec<[Fin; 2]>>,
 }
 
 /// Which good pairing of the fins around an edge (seed 003 Lemma 5.13).
@@ -47,7 +48,7 @@ impl FinTable {
                 let key = (u.min(v), u.max(v));
                 let e = *index.entry(key).or_insert_with(|| {
                     table.edges.push(key);
-                    table.fins.push(Vec::new());
+                    table.fins.push(SmallVec::new());
                     table.edges.len() - 1
                 });
                 table.fins[e].push(Fin {

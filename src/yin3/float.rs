@@ -105,7 +105,10 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
 
 /// For each exact point, the exact value of its rounding in `rounded` where that differs from
 /// it (where it moved).
-fn moved<N: Num>(rounded: &[Point3<N>], exact: &[Point3<Rational>]) -> Vec<Option<Point3<Rational>>> {
+fn moved<N: Num>(
+    rounded: &[Point3<N>],
+    exact: &[Point3<Rational>],
+) -> Vec<Option<Point3<Rational>>> {
     rounded
         .iter()
         .zip(exact)
@@ -126,14 +129,14 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 
 /// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
 /// and conforming, as the validator would rebuild it — with each point replaced by its rounding
-/// in `rounded` (`moved`: its exact value where it differs). If none moved, it is the exact boundary. If no two
-/// points round to one, only the triangles at moved points are checked against their
-/// neighbours ([`conforming_after_moves`]), else the whole boundary is validated. Otherwise
-/// vertices that round to one point are merged, triangles that collapse to a segment or a
-/// point are dropped (each takes a pair of opposite fins off an edge, so closed surfaces stay
-/// closed), and the rounded boundary is validated exactly. The result must have the exact one's topology,
-/// computed by `keep` unless [`provably_kept`] shows it. Any failure is
-/// [`Yin3Error::Unrepresentable`].
+/// in `rounded` (`moved`: its exact value where it differs). If none moved, it is the exact
+/// boundary. If no two points round to one, only the triangles at moved points are checked
+/// against their neighbours ([`conforming_after_moves`]), else the whole boundary is validated.
+/// Otherwise vertices that round to one point are merged, triangles that collapse to a
+/// segment or a point are dropped (each takes a pair of opposite fins off an edge, so closed
+/// surfaces stay closed), and the rounded boundary is validated exactly. The result must have
+/// the exact one's topology, computed by `keep` unless [`provably_kept`] shows it. Any failure
+/// is [`Yin3Error::Unrepresentable`].
 fn rounded_complex<N: Num>(
     rounded: Vec<Point3<N>>,
     moved: Vec<Option<Point3<Rational>>>,

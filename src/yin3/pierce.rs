@@ -164,8 +164,8 @@ fn big<const W: usize>(x: BInt<W>) -> BigInt {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use num_integer::Integer;
     use crate::num::Num;
+    use num_integer::Integer;
     use rand::rngs::StdRng;
     use rand::{RngExt, SeedableRng};
 
