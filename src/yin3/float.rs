@@ -177,15 +177,22 @@ fn rounded_boundary<N: Num>(
             .collect();
         let on_values =
             Brep::<Rational>::assemble(values, tris.clone()).map_err(|e| unrepresentable(&e))?;
-        let brep = (on_values.clone())
-            .map_points(|p| rounded_point(p).expect("the values of rounded points are f64s"));
+        let points: Vec<Point3<N>> = (on_values.points.iter())
+            .map(|p| rounded_point(p).expect("the values of rounded points are f64s"))
+            .collect();
+        let on_points = |b: Brep<Rational>, points: Vec<Point3<N>>| {
+            let mut points = points.into_iter();
+            b.map_points(|_| points.next().expect("one rounded point per value"))
+        };
         // Assembling a compact boundary keeps its numbering, so `moved` still applies.
-        let same = brep.tris == tris;
-        if same && conforming_after_moves(&brep, &flags) {
+        let same = on_values.tris == tris;
+        if same && conforming_after_moves(&points, &on_values.tris, &flags) {
             check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;
-        } else {
-            revalidate(on_values.points, &brep, ()).map_err(|e| unrepresentable(&e))?;
+            return Ok((on_points(on_values, points), same));
         }
+        let values = on_values.points.clone();
+        let brep = on_points(on_values, points);
+        revalidate(values, &brep, ()).map_err(|e| unrepresentable(&e))?;
         return Ok((brep, same));
     }
     let mut index: HashMap<Point3<N>, usize> = HashMap::new();

@@ -109,50 +109,56 @@ pub(crate) fn revalidate<M: Num, N: Num>(
     Ok(())
 }
 
-/// True if the validator would rebuild the boundary `b` unchanged (I4 aside), knowing that it
-/// did before the vertices `moved` moved, each to a distinct point (a rounded result): every
-/// triangle with a moved vertex meets every other triangle exactly in their shared vertices
-/// and edges (a degenerate one fails against its neighbours across its edges). Decided by
-/// exact orientations of the points' values — for float points first by either triangle's
-/// plane ([`off_plane_but_shared`]), then on images in a coordinate plane; a pair without a
-/// shared vertex that they cannot tell apart is intersected exactly, as the validator would;
-/// other pairs they cannot tell make it false, and then the caller validates in full. Every
-/// other pair meets as it did. The pairs come from [`MeetingBoxes`], on rayon's threads
-/// from [`PARALLEL_FROM`] triangles.
-pub(crate) fn conforming_after_moves<N: Num>(b: &Brep<N>, moved: &[bool]) -> bool {
+/// True if the validator would rebuild the boundary of the triangles `tris` over `points`
+/// unchanged (I4 aside), knowing that it did before the vertices `moved` moved, each to a
+/// distinct point (a rounded result): every triangle with a moved vertex meets every other
+/// triangle exactly in their shared vertices and edges (a degenerate one fails against its
+/// neighbours across its edges). Decided by exact orientations of the points' values — for
+/// float points first by either triangle's plane ([`off_plane_but_shared`]), then on images
+/// in a coordinate plane; a pair without a shared vertex that they cannot tell apart is
+/// intersected exactly, as the validator would; other pairs they cannot tell make it false,
+/// and then the caller validates in full. Every other pair meets as it did. The pairs come
+/// from [`MeetingBoxes`], on rayon's threads from [`PARALLEL_FROM`] triangles.
+pub(crate) fn conforming_after_moves<N: Num>(
+    points: &[Point3<N>],
+    tris: &[[usize; 3]],
+    moved: &[bool],
+) -> bool {
     let exact = &N::exact_ctx();
-    let touched: Vec<bool> = b.tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
+    let touched: Vec<bool> = tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
     // Float points are their `f64` values: the triangles' planes, prepared once, tell
     // most pairs apart with a few dot products before anything is projected.
     let f64s: Vec<[f64; 3]> = match N::EXACT {
         true => Vec::new(),
-        false => b.points.iter().map(|p| p.to_f64()).collect(),
+        false => points.iter().map(|p| p.to_f64()).collect(),
     };
     let planes: Vec<PlaneF64> = match N::EXACT {
         true => Vec::new(),
-        false => (b.tris.iter())
+        false => (tris.iter())
             .map(|t| PlaneF64::new(f64s[t[0]], f64s[t[1]], f64s[t[2]]))
             .collect(),
     };
     // The moved triangle `ti` and another, `ui`.
     let meet_in_shared = |ti: usize, ui: usize| {
-        let (t, s) = (b.tris[ti], b.tris[ui]);
+        let (t, s) = (tris[ti], tris[ui]);
         if !N::EXACT
             && (off_plane_but_shared(&planes[ti], &f64s, t, s)
                 || off_plane_but_shared(&planes[ui], &f64s, s, t))
         {
             return true;
         }
-        if images_meet_only_in_shared(&b.points, t, s, exact) {
+        if images_meet_only_in_shared(points, t, s, exact) {
             true
         } else if t.iter().any(|v| s.contains(v)) {
-            shared_only(&b.points, t, s, exact).is_some()
+            shared_only(points, t, s, exact).is_some()
         } else {
-            let (t, s) = (t.map(|v| &b.points[v]), s.map(|v| &b.points[v]));
+            let (t, s) = (t.map(|v| &points[v]), s.map(|v| &points[v]));
             apart(t, s, exact) || intersect(t, s, exact).is_none()
         }
     };
-    let boxes: Vec<AABB<[f64; 3]>> = (0..b.tris.len()).map(|t| f64_box(b.corners(t))).collect();
+    let boxes: Vec<AABB<[f64; 3]>> = (0..tris.len())
+        .map(|t| f64_box(tris[t].map(|v| &points[v])))
+        .collect();
     let parallel = boxes.len() >= PARALLEL_FROM;
     MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| match (touched[t], touched[u]) {
         (true, _) => meet_in_shared(t, u),
@@ -383,7 +389,10 @@ mod tests {
         let moved: Vec<bool> = b.points.iter().map(|q| to(q).is_some()).collect();
         let after = b.map_points(|q| to(q).unwrap_or_else(|| q.clone()));
         let full = revalidate(exact_points(&after.points), &after, ()).is_ok();
-        (conforming_after_moves(&after, &moved), full)
+        (
+            conforming_after_moves(&after.points, &after.tris, &moved),
+            full,
+        )
     }
 
     /// A cube of side 2·10³⁰⁹ around a unit cavity is valid: its faces lie past `f64`'s range,
