@@ -1,9 +1,11 @@
-//! Disjoint sets (union–find with path halving), shared by the 2D and 3D kernels.
+//! Disjoint sets (union–find by rank with path halving), shared by the 2D and 3D kernels.
 
 /// Disjoint sets over `0..n`.
 #[derive(Clone, Debug)]
 pub(crate) struct UnionFind {
     parent: Vec<usize>,
+    /// An upper bound on the height of each root's tree (below log₂ n, so a byte).
+    rank: Vec<u8>,
 }
 
 impl UnionFind {
@@ -11,12 +13,14 @@ impl UnionFind {
     pub(crate) fn new(n: usize) -> UnionFind {
         UnionFind {
             parent: (0..n).collect(),
+            rank: vec![0; n],
         }
     }
 
     /// A new singleton; its index.
     pub(crate) fn add(&mut self) -> usize {
         self.parent.push(self.parent.len());
+        self.rank.push(0);
         self.parent.len() - 1
     }
 
@@ -29,11 +33,22 @@ impl UnionFind {
         x
     }
 
-    /// Join the sets of `a` and `b`; false if they were already one (a cycle).
+    /// Join the sets of `a` and `b`, the lower-ranked root under the other; false if they were
+    /// already one (a cycle).
     pub(crate) fn union(&mut self, a: usize, b: usize) -> bool {
         let (ra, rb) = (self.find(a), self.find(b));
-        self.parent[ra] = rb;
-        ra != rb
+        if ra == rb {
+            return false;
+        }
+        let (lo, hi) = match self.rank[ra] < self.rank[rb] {
+            true => (ra, rb),
+            false => (rb, ra),
+        };
+        self.parent[lo] = hi;
+        if self.rank[lo] == self.rank[hi] {
+            self.rank[hi] += 1;
+        }
+        true
     }
 
     /// Each element's class as a number in `0..k`, numbered in order of first appearance, and k.
