@@ -67,3 +67,39 @@ impl UnionFind {
         (out, k)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use std::collections::BTreeSet;
+
+    proptest! {
+        /// `union` is false exactly for elements already joined, and the classes are the
+        /// components of the joined pairs, numbered from 0 in order of first appearance: an
+        /// oracle that relabels a whole class on every join.
+        #[test]
+        fn classes_are_the_components(
+            n in 1usize..40,
+            pairs in proptest::collection::vec((0usize..40, 0usize..40), 0..80),
+        ) {
+            let mut uf = UnionFind::new(n);
+            let mut label: Vec<usize> = (0..n).collect();
+            for (a, b) in pairs.into_iter().map(|(a, b)| (a % n, b % n)) {
+                let joined = label[a] != label[b];
+                prop_assert_eq!(uf.union(a, b), joined);
+                let (from, to) = (label[a], label[b]);
+                label.iter_mut().filter(|l| **l == from).for_each(|l| *l = to);
+            }
+            let (classes, k) = uf.classes();
+            for i in 0..n {
+                for j in 0..n {
+                    prop_assert_eq!(classes[i] == classes[j], label[i] == label[j]);
+                }
+            }
+            prop_assert_eq!(k, label.iter().collect::<BTreeSet<_>>().len());
+            let firsts: Vec<usize> = (0..n).filter(|&i| classes[..i].iter().all(|&c| c != classes[i])).collect();
+            prop_assert!(firsts.iter().enumerate().all(|(c, &i)| classes[i] == c));
+        }
+    }
+}
