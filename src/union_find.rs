@@ -4,7 +4,7 @@
 #[derive(Clone, Debug)]
 pub(crate) struct UnionFind {
     parent: Vec<usize>,
-    /// An upper bound on the height of each root's tree (below log₂ n, so a byte).
+    /// An upper bound on the height of each root's tree (at most log₂ n, so a byte).
     rank: Vec<u8>,
 }
 
@@ -75,15 +75,20 @@ mod tests {
     use std::collections::BTreeSet;
 
     proptest! {
-        /// `union` is false exactly for elements already joined, and the classes are the
+        /// `union` is false exactly for elements already joined (some added after the start),
+        /// and the classes are the
         /// components of the joined pairs, numbered from 0 in order of first appearance: an
         /// oracle that relabels a whole class on every join.
         #[test]
         fn classes_are_the_components(
-            n in 1usize..40,
-            pairs in proptest::collection::vec((0usize..40, 0usize..40), 0..80),
+            (n, added) in (1usize..40, 0usize..5),
+            pairs in proptest::collection::vec((0usize..45, 0usize..45), 0..80),
         ) {
             let mut uf = UnionFind::new(n);
+            for k in 0..added {
+                prop_assert_eq!(uf.add(), n + k);
+            }
+            let n = n + added;
             let mut label: Vec<usize> = (0..n).collect();
             for (a, b) in pairs.into_iter().map(|(a, b)| (a % n, b % n)) {
                 let joined = label[a] != label[b];

@@ -7,14 +7,13 @@ use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-/// gcd(|a|, |b|): in `u128` when both fit (no allocation), else by Lehmer's algorithm
-/// (`dashu-int`), the operands handed over as machine words.
+/// gcd(|a|, |b|): in `u128` when both fit ([`gcd_u128`], no allocation), else by Lehmer's
+/// algorithm (`dashu-int`), the operands handed over as machine words.
 pub(super) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
-    use num_integer::Integer;
     use num_traits::ToPrimitive;
     let (a, b) = (a.magnitude(), b.magnitude());
     if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
-        return BigInt::from(x.gcd(&y));
+        return BigInt::from(gcd_u128(x, y));
     }
     // gcd(2^k, m) = 2^min(k, tz(m)): the denominators of dyadic values (what f64 input reads
     // as) are powers of two, and their sums and products stay dyadic.

@@ -121,7 +121,7 @@ fn small_gcd(x: &BigInt, d: &BigInt) -> BigInt {
             let r = (d % BigInt::from(x))
                 .to_u128()
                 .expect("a remainder below x");
-            BigInt::from(x.gcd(&r))
+            BigInt::from(big::gcd_u128(x, r))
         }
         None => big::gcd(x, d),
     }
@@ -132,7 +132,7 @@ fn reduce(n: i128, d: i128) -> Rational {
     if d == 1 {
         return lowest(n, 1);
     }
-    let g = n.unsigned_abs().gcd(&d.unsigned_abs()) as i128;
+    let g = big::gcd_u128(n.unsigned_abs(), d.unsigned_abs()) as i128;
     lowest(n / g, d / g)
 }
 
@@ -360,8 +360,8 @@ fn mul_small(a: i64, b: i64, c: i64, d: i64) -> Rational {
     if b == 1 && d == 1 {
         return lowest(a * c, 1);
     }
-    let g = a.unsigned_abs().gcd(&d.unsigned_abs()) as i128;
-    let h = c.unsigned_abs().gcd(&b.unsigned_abs()) as i128;
+    let g = big::gcd_u128(a.unsigned_abs(), d.unsigned_abs()) as i128;
+    let h = big::gcd_u128(c.unsigned_abs(), b.unsigned_abs()) as i128;
     lowest((a / g) * (c / h), (b / h) * (d / g))
 }
 

@@ -93,10 +93,7 @@ pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Er
     let moved = moved(&rounded, &b.points);
     if moved.iter().all(Option::is_none) {
         // Distinct exact points, each an f64 already: the same boundary, no work to redo.
-        let mut points = rounded.into_iter();
-        return Ok(b
-            .clone()
-            .map_points(|_| points.next().expect("one rounded point per point")));
+        return Ok(b.clone().with_points(rounded));
     }
     rounded_complex(rounded, moved, &b.points, b.tris.clone(), || {
         Ok(Topology::of(b))
@@ -180,18 +177,14 @@ fn rounded_boundary<N: Num>(
         let points: Vec<Point3<N>> = (on_values.points.iter())
             .map(|p| rounded_point(p).expect("the values of rounded points are f64s"))
             .collect();
-        let on_points = |b: Brep<Rational>, points: Vec<Point3<N>>| {
-            let mut points = points.into_iter();
-            b.map_points(|_| points.next().expect("one rounded point per value"))
-        };
-        // Assembling a compact boundary keeps its numbering, so `moved` still applies.
+        // Assembling a compact boundary keeps its numbering, so `flags` still applies.
         let same = on_values.tris == tris;
         if same && conforming_after_moves(&points, &on_values.tris, &flags) {
             check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;
-            return Ok((on_points(on_values, points), same));
+            return Ok((on_values.with_points(points), same));
         }
         let values = on_values.points.clone();
-        let brep = on_points(on_values, points);
+        let brep = on_values.with_points(points);
         revalidate(values, &brep, ()).map_err(|e| unrepresentable(&e))?;
         return Ok((brep, same));
     }

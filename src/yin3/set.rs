@@ -72,9 +72,7 @@ impl<N: Num> Brep<N> {
             // The structure of a float set is its exact values' (the f64 arithmetic of signed
             // volumes and fin orders is not exact); compaction renumbers both alike.
             let (points, tris) = compact(points, tris);
-            let exact = Brep::assemble(exact_points(&points), tris)?;
-            let mut points = points.into_iter();
-            return Ok(exact.map_points(|_| points.next().expect("one point per exact point")));
+            return Ok(Brep::assemble(exact_points(&points), tris)?.with_points(points));
         }
         let ctx = &N::exact_ctx();
         let (points, tris) = compact(points, tris);
@@ -138,6 +136,12 @@ impl<N: Num> Brep<N> {
             betti: OnceLock::new(),
             canon: OnceLock::new(),
         }
+    }
+
+    /// The same boundary over `points`, given for its points in order.
+    pub(crate) fn with_points<M: Num>(self, points: Vec<Point3<M>>) -> Brep<M> {
+        let mut points = points.into_iter();
+        self.map_points(|_| points.next().expect("one point for each point"))
     }
 
     /// The boundary of the complement (seed 000 Def. 4.4 in 3D): every triangle reversed and

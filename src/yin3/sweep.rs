@@ -6,7 +6,7 @@ use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
-/// Boxes scanned per box before the sweep gives way to the R-tree: a scan is six comparisons
+/// Boxes scanned per box before the sweep gives way to the R-tree: a scan is four comparisons
 /// on boxes stored in sweep order, a query of the tree walks a few dozen nodes.
 const SCANS_PER_BOX: usize = 64;
 
@@ -40,8 +40,12 @@ impl MeetingBoxes {
             .iter()
             .map(|h| lo.partition_point(|l| l[0] <= h[0]))
             .collect();
-        let scans: usize = ends.iter().enumerate().map(|(k, &e)| e - k - 1).sum();
-        if scans <= SCANS_PER_BOX * n + 4096 {
+        // The scans, counted until they pass the budget (each box's own place is in its range).
+        let budget = SCANS_PER_BOX * n + 4096;
+        let within = (ends.iter().enumerate()).try_fold(0usize, |scans, (k, &e)| {
+            Some(scans + e.saturating_sub(k + 1)).filter(|&s| s <= budget)
+        });
+        if within.is_some() {
             return MeetingBoxes::Sweep {
                 order,
                 lo,
@@ -106,19 +110,21 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
     use std::collections::BTreeSet;
+    use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
     use std::sync::Mutex;
 
-    /// The pairs `all_pairs` asks for, as (smaller, larger).
-    fn asked(boxes: &[AABB<[f64; 3]>], parallel: bool) -> Vec<(usize, usize)> {
+    /// The pairs `all_pairs` asks for, as (smaller, larger), and whether the tree asked them.
+    fn asked(boxes: &[AABB<[f64; 3]>], parallel: bool) -> (Vec<(usize, usize)>, bool) {
         let got = Mutex::new(Vec::new());
-        let all = MeetingBoxes::new(boxes.to_vec()).all_pairs(parallel, |i, j| {
+        let meeting = MeetingBoxes::new(boxes.to_vec());
+        let all = meeting.all_pairs(parallel, |i, j| {
             got.lock().unwrap().push((i.min(j), i.max(j)));
             true
         });
         assert!(all, "every pair held");
         let mut got = got.into_inner().unwrap();
         got.sort_unstable();
-        got
+        (got, matches!(meeting, MeetingBoxes::Tree(..)))
     }
 
     /// The pairs whose boxes meet, every pair tested on its own.
@@ -137,18 +143,30 @@ mod tests {
         out
     }
 
-    /// Boxes on a small lattice (many touching in a face, an edge or a corner, equal, or
-    /// degenerate to a point), or long in x, so that the sweep gives way to the tree.
+    /// Boxes with corners on a small lattice (many touching in a face, an edge or a corner,
+    /// equal, or degenerate to a point), with −0.0, 0.0 and infinite coordinates among them;
+    /// `long`: 300 to 400 boxes all reaching x = −∞, past the sweep's budget.
     fn lattice_boxes(long: bool) -> impl Strategy<Value = Vec<AABB<[f64; 3]>>> {
-        let corner = || [0..6i32, 0..6i32, 0..6i32];
-        let n = if long { 200..400 } else { 0..60 };
+        let values = [
+            f64::NEG_INFINITY,
+            -1.0,
+            -0.0,
+            0.0,
+            1.0,
+            2.0,
+            3.0,
+            4.0,
+            f64::INFINITY,
+        ];
+        let corner = || [0..9usize, 0..9usize, 0..9usize];
+        let n = if long { 300..400 } else { 0..60 };
         proptest::collection::vec((corner(), corner()), n).prop_map(move |drawn| {
             drawn
                 .into_iter()
                 .map(|(a, b)| {
-                    let (mut a, b) = (a.map(f64::from), b.map(f64::from));
+                    let (mut a, b) = (a.map(|k| values[k]), b.map(|k| values[k]));
                     if long {
-                        a[0] = -1.0;
+                        a[0] = f64::NEG_INFINITY;
                     }
                     AABB::from_corners(a, b)
                 })
@@ -161,31 +179,40 @@ mod tests {
         /// and, for boxes all spanning the x-range, by the tree; on one thread and on many.
         #[test]
         fn the_pairs_asked_are_the_pairs_that_meet(
-            boxes in prop_oneof![lattice_boxes(false), lattice_boxes(true)],
+            (boxes, long) in prop_oneof![
+                lattice_boxes(false).prop_map(|b| (b, false)),
+                lattice_boxes(true).prop_map(|b| (b, true)),
+            ],
             parallel in any::<bool>(),
         ) {
             let want = brute(&boxes);
-            let got = asked(&boxes, parallel);
+            let (got, by_tree) = asked(&boxes, parallel);
+            prop_assert_eq!(by_tree, long, "the tree takes exactly the long boxes");
             prop_assert_eq!(got.iter().collect::<BTreeSet<_>>().len(), got.len(), "a pair asked twice");
             prop_assert_eq!(got, want);
         }
     }
 
-    /// A false answer stops the search and is returned, by the sweep and by the tree.
+    /// A false answer is returned, by the sweep and by the tree, on one thread and on many;
+    /// on one thread nothing more is asked after it.
     #[test]
     fn a_false_pair_is_the_answer() {
         let unit = |x: f64| AABB::from_corners([x, 0.0, 0.0], [x + 1.0, 1.0, 1.0]);
         let short: Vec<_> = (0..10).map(|k| unit(k as f64)).collect();
-        let long: Vec<_> = (0..200)
+        let long: Vec<_> = (0..400)
             .map(|k| AABB::from_corners([0.0, k as f64, 0.0], [1000.0, k as f64 + 1.0, 1.0]))
             .collect();
-        for boxes in [short, long] {
+        for (boxes, long) in [(short, false), (long, true)] {
+            let meeting = MeetingBoxes::new(boxes);
+            assert_eq!(matches!(meeting, MeetingBoxes::Tree(..)), long);
             for parallel in [false, true] {
                 let no = |i: usize, j: usize| (i.min(j), i.max(j)) != (3, 4);
-                let meeting = MeetingBoxes::new(boxes.clone());
                 assert!(!meeting.all_pairs(parallel, no));
                 assert!(meeting.all_pairs(parallel, |_, _| true));
             }
+            let asked = AtomicUsize::new(0);
+            assert!(!meeting.all_pairs(false, |_, _| asked.fetch_add(1, Relaxed) > 0));
+            assert_eq!(asked.into_inner(), 1, "asked past the first false");
         }
     }
 }

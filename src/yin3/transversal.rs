@@ -143,8 +143,9 @@ impl Sites {
 /// built (one in unit tests, so that they take both ways).
 const SCANNED_RAYS: usize = if cfg!(test) { 1 } else { 8 };
 
-/// Triangles of both operands from which the meet runs on rayon's threads (16 in unit tests,
-/// so that they take both ways): handing small work over costs more than it saves.
+/// Triangles (of both operands, or of a rounded result) from which the meet and the rounding
+/// check run on rayon's threads (16 in unit tests, so that they take both ways): handing small
+/// work over costs more than it saves.
 pub(crate) const PARALLEL_FROM: usize = if cfg!(test) { 16 } else { 8192 };
 
 /// `f` on each of `items`, in order, on rayon's threads if `parallel`.
