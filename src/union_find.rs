@@ -76,9 +76,8 @@ mod tests {
 
     proptest! {
         /// `union` is false exactly for elements already joined (some added after the start),
-        /// and the classes are the
-        /// components of the joined pairs, numbered from 0 in order of first appearance: an
-        /// oracle that relabels a whole class on every join.
+        /// and the classes are the components of the joined pairs, numbered from 0 in order of
+        /// first appearance: an oracle that relabels a whole class on every join.
         #[test]
         fn classes_are_the_components(
             (n, added) in (1usize..40, 0usize..5),
@@ -103,8 +102,9 @@ mod tests {
                 }
             }
             prop_assert_eq!(k, label.iter().collect::<BTreeSet<_>>().len());
-            let firsts: Vec<usize> = (0..n).filter(|&i| classes[..i].iter().all(|&c| c != classes[i])).collect();
-            prop_assert!(firsts.iter().enumerate().all(|(c, &i)| classes[i] == c));
+            // The first element of each class, in order, carries the class's number.
+            let firsts = (0..n).filter(|&i| !classes[..i].contains(&classes[i]));
+            prop_assert!(firsts.enumerate().all(|(c, i)| classes[i] == c));
         }
     }
 }
