@@ -138,7 +138,7 @@ pub(crate) fn conforming_after_moves<N: Num>(
             .map(|t| PlaneF64::new(f64s[t[0]], f64s[t[1]], f64s[t[2]]))
             .collect(),
     };
-    // The moved triangle `ti` and another, `ui`.
+    // Triangles `ti` and `ui` meet only in their shared corners (each test is symmetric).
     let meet_in_shared = |ti: usize, ui: usize| {
         let (t, s) = (tris[ti], tris[ui]);
         if !N::EXACT
@@ -156,14 +156,12 @@ pub(crate) fn conforming_after_moves<N: Num>(
             apart(t, s, exact) || intersect(t, s, exact).is_none()
         }
     };
-    let boxes: Vec<AABB<[f64; 3]>> = (0..tris.len())
-        .map(|t| f64_box(tris[t].map(|v| &points[v])))
+    let boxes: Vec<AABB<[f64; 3]>> = (tris.iter())
+        .map(|t| f64_box(t.map(|v| &points[v])))
         .collect();
     let parallel = boxes.len() >= PARALLEL_FROM;
-    MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| match (touched[t], touched[u]) {
-        (true, _) => meet_in_shared(t, u),
-        (false, true) => meet_in_shared(u, t),
-        (false, false) => true,
+    MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| {
+        !(touched[t] || touched[u]) || meet_in_shared(t, u)
     })
 }
 
