@@ -12,6 +12,7 @@ use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
 use foldhash::HashMap;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
+use smallvec::SmallVec;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 
@@ -257,19 +258,31 @@ pub(crate) fn retriangulate<N: Num>(
     cuts: &[(usize, usize)],
     ctx: &N::Ctx,
 ) -> Result<Vec<[usize; 3]>, TriangulateError> {
-    let ids: Vec<usize> = tri
+    // Most cut triangles hold a few points: these tables stay on the stack.
+    let ids: SmallVec<[usize; 16]> = tri
         .into_iter()
         .chain(sides.iter().flat_map(|side| side.iter().copied()))
         .chain(extra)
         .collect();
-    let local: HashMap<usize, usize> = ids.iter().enumerate().map(|(k, &v)| (v, k)).collect();
-    let pts: Vec<Point<N>> = ids.iter().map(|&v| chart.project(&points[v])).collect();
-    let cons: Vec<(usize, usize)> = cuts
+    // Each point's place in `ids`, by a search of the pairs sorted by point.
+    let mut by_point: SmallVec<[(usize, usize); 16]> =
+        ids.iter().enumerate().map(|(k, &v)| (v, k)).collect();
+    by_point.sort_unstable();
+    let local = |v: &usize| {
+        let i = by_point.binary_search_by_key(v, |&(w, _)| w).ok()?;
+        Some(by_point[i].1)
+    };
+    let pts: SmallVec<[Point<N>; 16]> = ids.iter().map(|&v| chart.project(&points[v])).collect();
+    let cons: SmallVec<[(usize, usize); 16]> = cuts
         .iter()
         .filter(|(p, q)| p != q)
-        .filter_map(|(p, q)| Some((*local.get(p)?, *local.get(q)?)))
+        .filter_map(|(p, q)| Some((local(p)?, local(q)?)))
         .collect();
-    let on_side = sides.map(|side| side.iter().map(|v| local[v]).collect::<Vec<usize>>());
+    let on_side = sides.map(|side| {
+        (side.iter())
+            .map(|v| local(v).expect("a side's points are among the ids"))
+            .collect::<SmallVec<[usize; 8]>>()
+    });
     let on_side = [&on_side[0][..], &on_side[1][..], &on_side[2][..]];
     let tris = triangulate(&pts, [0, 1, 2], on_side, &cons, ctx)?;
     Ok(tris.into_iter().map(|tri| tri.map(|k| ids[k])).collect())

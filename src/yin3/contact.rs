@@ -11,6 +11,7 @@
 use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, PlaneF64};
+use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering::{self, Equal};
 use std::sync::OnceLock;
 
@@ -88,7 +89,7 @@ pub(super) fn contact<N: Num>(
     }
     let (te, se) = (straddling(t, &t_sides), straddling(s, &s_sides));
     let sign = te.map(|(e, _)| se.map(|(f, _)| exact_orient3d_f64(p[e.0], p[e.1], p[f.0], p[f.1])));
-    let mut ends = Vec::with_capacity(2);
+    let mut ends: SmallVec<[End; 4]> = SmallVec::new();
     for (j, &(f, side)) in se.iter().enumerate() {
         if sign.iter().all(|row| row[j] == side) {
             ends.push(End::Pierce(key(f.0, f.1), ti));
@@ -223,14 +224,14 @@ fn on_plane(
     else {
         return Contact::Degenerate;
     };
-    let mut ends: Vec<End> = Vec::with_capacity(2);
+    let mut ends: SmallVec<[End; 4]> = SmallVec::new();
     for (mine, host) in [(&s_ends, t), (&t_ends, s)] {
         for &(end, (f0, f1), side) in mine {
             let signs = [0, 1, 2].map(|k| {
                 let (e0, e1) = (host[k], host[(k + 1) % 3]);
                 exact_orient3d_f64(p[e0], p[e1], p[f0], p[f1])
             });
-            let on: Vec<usize> = (0..3).filter(|&k| signs[k] == Equal).collect();
+            let on: SmallVec<[usize; 3]> = (0..3).filter(|&k| signs[k] == Equal).collect();
             if signs.iter().any(|&o| o != Equal && o != side) {
                 continue;
             }
@@ -266,18 +267,22 @@ type LineEnd = (End, (usize, usize), Ordering);
 /// triangle's plane `sides` (not all on one side, the other triangle `other`): each with a line
 /// (f₀, f₁) through it, f₁ off the plane, and f₁'s side ([`on_plane`]); `None` if an edge lies
 /// on the plane.
-fn line_ends(tri: [usize; 3], sides: &[Ordering; 3], other: usize) -> Option<Vec<LineEnd>> {
-    let on: Vec<usize> = (0..3).filter(|&k| sides[k] == Equal).collect();
+fn line_ends(
+    tri: [usize; 3],
+    sides: &[Ordering; 3],
+    other: usize,
+) -> Option<SmallVec<[LineEnd; 2]>> {
+    let on: SmallVec<[usize; 3]> = (0..3).filter(|&k| sides[k] == Equal).collect();
     match on[..] {
         [] => Some(
             straddling(tri, sides)
                 .map(|(e, side)| (End::Pierce(key(e.0, e.1), other), e, side))
-                .to_vec(),
+                .into(),
         ),
         [k] => {
             let (v, a, b) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
             let (sa, sb) = (sides[(k + 1) % 3], sides[(k + 2) % 3]);
-            let mut ends = vec![(End::Vertex(v, other), (v, a), sa)];
+            let mut ends = smallvec![(End::Vertex(v, other), (v, a), sa)];
             if sa != sb {
                 ends.push((End::Pierce(key(a, b), other), (a, b), sb));
             }

@@ -40,8 +40,13 @@ pub(crate) enum Pairing {
 impl FinTable {
     /// Build the table of the triangles `tris` over `points` (each edge's fins sorted).
     pub(crate) fn new<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], ctx: &N::Ctx) -> FinTable {
-        let mut index: HashMap<(usize, usize), usize> = HashMap::new();
-        let mut table = FinTable::default();
+        // A closed surface has 3T/2 edges.
+        let edges = 3 * tris.len() / 2;
+        let mut index: HashMap<(usize, usize), usize> = HashMap::with_capacity(edges);
+        let mut table = FinTable {
+            edges: Vec::with_capacity(edges),
+            fins: Vec::with_capacity(edges),
+        };
         for (t, tri) in tris.iter().enumerate() {
             for k in 0..3 {
                 let (u, v, w) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);

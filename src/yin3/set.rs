@@ -222,7 +222,7 @@ pub(crate) fn compact<N: Num>(
     tris: Vec<[usize; 3]>,
 ) -> (Vec<Point3<N>>, Vec<[usize; 3]>) {
     let mut new = vec![usize::MAX; points.len()];
-    let mut kept = Vec::new();
+    let mut kept = Vec::with_capacity(points.len());
     let mut slots: Vec<Option<Point3<N>>> = points.into_iter().map(Some).collect();
     let tris = tris
         .into_iter()

@@ -286,6 +286,8 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         near.iter()
             .try_fold(Found::default(), |found, &q| search(found, q))?
     };
+    // The search's index and planes are done with: free them before the points are made.
+    drop((tree, planes));
     let rays = Rays::new([a, b], &boxes);
     if crossings.is_empty() && !touching.is_empty() {
         return touching_meet(&touching, &rays);
@@ -306,7 +308,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         });
     }
     let mut seams = Seams::default();
-    for &[e0, e1] in &touching {
+    for [e0, e1] in touching {
         seams.corner(e0[0], e0[1]);
         seams.corner(e1[0], e1[1]);
         if e0 != e1 {
@@ -315,7 +317,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     }
     let mut sites = Sites::new(corners.len(), tris.len());
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); tris.len()];
-    for &(t, s, ends) in &crossings {
+    for (t, s, ends) in crossings {
         let [(pt, ps), (qt, qs)] = ends.map(|end| {
             match end {
                 End::Corner(x, y) => seams.corner(x, y),
@@ -332,12 +334,18 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             seams.crossing.extend([key(pt, qt), key(ps, qs)]);
         }
     }
-    let (on_edge, extra) = (&sites.on_edge, &sites.extra);
+    let Sites {
+        made,
+        on_edge,
+        extra,
+        ..
+    } = sites;
+    let (on_edge, extra) = (&on_edge, &extra);
     // The corners' exact values are made where a triangle that is cut or kept uses them (a
     // meet keeps a part of each operand); the others stay zero and unused.
-    let mut points = Vec::with_capacity(corners.len() + sites.made.len());
+    let mut points = Vec::with_capacity(corners.len() + made.len());
     points.resize(corners.len(), Point3::int(0, 0, 0));
-    points.extend(map_all(&sites.made, parallel, |&(edge, tri)| {
+    points.extend(map_all(&made, parallel, |&(edge, tri)| {
         pierce(&f64s, edge, tris[tri])
     }));
     // Every triangle with points on it, re-triangulated: the pierce points of its edges lie
@@ -617,6 +625,7 @@ fn inside<N: Num>(
         }
     }
     let (start, fins) = fins_by_vertex(&loose);
+    drop(loose);
     let mut flips: Vec<(usize, usize)> = Vec::new();
     let at_edges = (0..start.len() - 1).flat_map(|u| {
         let fins = &fins[start[u]..start[u + 1]];
@@ -646,12 +655,20 @@ fn inside<N: Num>(
             }
         }
     }
-    let mut next: Vec<Vec<usize>> = vec![Vec::new(); pieces.len()];
+    // The flips between patches, each both ways, sorted: a patch's are one run.
+    let mut next: Vec<(usize, usize)> = Vec::with_capacity(2 * flips.len());
     for (x, y) in flips {
         let (x, y) = (uf.find(x), uf.find(y));
-        next[x].push(y);
-        next[y].push(x);
+        next.extend([(x, y), (y, x)]);
     }
+    next.sort_unstable();
+    let across = |x: usize| {
+        let from = next.partition_point(|&(p, _)| p < x);
+        next[from..]
+            .iter()
+            .take_while(move |&&(p, _)| p == x)
+            .map(|&(_, y)| y)
+    };
     let mut side: Vec<Option<bool>> = vec![None; pieces.len()];
     for (i, (piece, _)) in pieces.iter().enumerate() {
         let root = uf.find(i);
@@ -672,7 +689,7 @@ fn inside<N: Num>(
         let mut stack = vec![root];
         while let Some(x) = stack.pop() {
             let flipped = side[x].map(|s| !s);
-            for &y in &next[x] {
+            for y in across(x) {
                 match side[y] {
                     None => {
                         side[y] = flipped;

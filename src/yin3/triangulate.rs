@@ -13,7 +13,11 @@ use crate::kernel::{on_closed_segment, orient, Point};
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt};
 use std::cmp::Ordering::{Equal, Greater, Less};
+use smallvec::{smallvec, SmallVec};
 use std::collections::hash_map::Entry;
+
+/// A cut triangle's few points or indices, on the stack unless there are many.
+type Small<T> = SmallVec<[T; 16]>;
 
 /// Why a triangle could not be re-triangulated (a caller's broken promise).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -156,7 +160,7 @@ fn by_chains<N: Num>(
     let n = points.len();
     // The triangle's boundary counterclockwise: each corner, then the points inside its side
     // in their order along it.
-    let mut boundary = Vec::with_capacity(n);
+    let mut boundary: Small<usize> = SmallVec::with_capacity(n);
     for (k, side) in sides.iter().enumerate() {
         let (x, y) = (corners[k], corners[(k + 1) % 3]);
         boundary.push(x);
@@ -164,13 +168,13 @@ fn by_chains<N: Num>(
         boundary.extend_from_slice(side);
         along_side(points, x, y, &mut boundary[start..]);
     }
-    let mut on_boundary = vec![false; n];
+    let mut on_boundary: Small<bool> = smallvec![false; n];
     for &b in &boundary {
         on_boundary[b] = true;
     }
     // Each point's constraint neighbours: at most two, at most one for a boundary point.
-    let mut next = vec![[usize::MAX; 2]; n];
-    let mut degree = vec![0usize; n];
+    let mut next: Small<[usize; 2]> = smallvec![[usize::MAX; 2]; n];
+    let mut degree: Small<usize> = smallvec![0; n];
     for &(u, v) in constraints {
         for (a, b) in [(u, v), (v, u)] {
             let limit = if on_boundary[a] { 1 } else { 2 };
@@ -185,13 +189,13 @@ fn by_chains<N: Num>(
         return None;
     }
     // Each chain from its first end met along the boundary; every inner point on one.
-    let mut chains: Vec<Vec<usize>> = Vec::new();
-    let mut seen = vec![false; n];
+    let mut chains: SmallVec<[Small<usize>; 4]> = SmallVec::new();
+    let mut seen: Small<bool> = smallvec![false; n];
     for &end in &boundary {
         if degree[end] == 0 || seen[end] {
             continue;
         }
-        let (mut chain, mut at) = (vec![end], end);
+        let (mut chain, mut at): (Small<usize>, usize) = (smallvec![end], end);
         seen[end] = true;
         let mut to = next[end][0];
         while !on_boundary[to] {
@@ -208,7 +212,7 @@ fn by_chains<N: Num>(
         return None;
     }
     // Split the polygon that holds both ends of each chain (counterclockwise pieces).
-    let mut polygons = vec![boundary];
+    let mut polygons: SmallVec<[Small<usize>; 4]> = smallvec![boundary];
     for chain in &chains {
         let (a, b) = (chain[0], chain[chain.len() - 1]);
         let k = (polygons.iter()).position(|poly| poly.contains(&a) && poly.contains(&b))?;
@@ -218,10 +222,10 @@ fn by_chains<N: Num>(
         let j = poly.iter().position(|&v| v == b)?;
         let inner = &chain[1..chain.len() - 1];
         // From a to b along the polygon, back along the chain; from b to a, on along it.
-        let first: Vec<usize> = (poly[..=j].iter().chain(inner.iter().rev()))
+        let first: Small<usize> = (poly[..=j].iter().chain(inner.iter().rev()))
             .copied()
             .collect();
-        let second: Vec<usize> = (poly[j..].iter().chain([&a]).chain(inner))
+        let second: Small<usize> = (poly[j..].iter().chain([&a]).chain(inner))
             .copied()
             .collect();
         if first.len() < 3 || second.len() < 3 {
@@ -282,7 +286,7 @@ pub(crate) fn ear_clip<N: Num>(
     poly: &[usize],
     ctx: &N::Ctx,
 ) -> Option<Vec<[usize; 3]>> {
-    let mut poly = poly.to_vec();
+    let mut poly: Small<usize> = SmallVec::from_slice(poly);
     let mut out = Vec::with_capacity(poly.len().saturating_sub(2));
     let (mut i, mut misses) = (0, 0);
     while poly.len() > 3 {
