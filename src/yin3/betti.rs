@@ -86,7 +86,21 @@ pub(crate) struct Links {
 impl Links {
     /// The joined corners of the closed complex `tris` with fin table `table`, whose 𝒴-cycles
     /// ([`corner_cycles`] of the inside pairing) the caller has joined already as `inside`.
+    /// Where every edge has two fins the three joins are one: each fin's only partner, in
+    /// either pairing, is the edge's other fin, and the link joins the same two.
     pub(crate) fn new(tris: &[[usize; 3]], table: &FinTable, inside: UnionFind) -> Links {
+        if table.fins.iter().all(|fins| fins.len() == 2) {
+            return Links {
+                outside: inside.clone(),
+                link: inside.clone(),
+                inside,
+            };
+        }
+        Links::joined(tris, table, inside)
+    }
+
+    /// [`Links::new`] joined fin by fin, for any number of fins at an edge.
+    fn joined(tris: &[[usize; 3]], table: &FinTable, inside: UnionFind) -> Links {
         let mut link = UnionFind::new(3 * tris.len());
         for (e, fins) in table.fins.iter().enumerate() {
             let (a, b) = table.edges[e];
@@ -182,4 +196,48 @@ fn closed_complement_components<N: Num>(
         }
     }
     uf.classes().1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    /// Two fins at every edge: the three joins of [`Links::new`] are those made fin by fin, on
+    /// a tetrahedron and on two tetrahedra sharing a vertex (pinched there).
+    #[test]
+    fn two_fin_links_are_the_joined_ones() {
+        let tetra = |o: [i64; 3], s: i64| -> (Vec<[i64; 3]>, Vec<[usize; 3]>) {
+            let p = [[0, 0, 0], [s, 0, 0], [0, s, 0], [0, 0, s]];
+            let tris = vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+            (p.iter().map(|v| [0, 1, 2].map(|k| o[k] + v[k])).collect(), tris)
+        };
+        let both = |a: (Vec<[i64; 3]>, Vec<[usize; 3]>), b: (Vec<[i64; 3]>, Vec<[usize; 3]>)| {
+            let (mut p, mut t) = a;
+            let n = p.len();
+            // b's first vertex is a's first: shared.
+            p.extend(b.0[1..].iter().copied());
+            let at = |v: usize| if v == 0 { 0 } else { v + n - 1 };
+            t.extend(b.1.iter().map(|f| f.map(at)));
+            (p, t)
+        };
+        let cases = [
+            tetra([0, 0, 0], 1),
+            both(tetra([0, 0, 0], 1), tetra([0, 0, 0], -1)),
+        ];
+        for (p, tris) in cases {
+            let points: Vec<Point3<Rational>> =
+                p.iter().map(|&[x, y, z]| Point3::int(x, y, z)).collect();
+            let table = FinTable::new(&points, &tris, &());
+            assert!(table.fins.iter().all(|f| f.len() == 2));
+            let inside = || corner_cycles(&table, &tris, None, Pairing::Inside);
+            let (mut fast, mut slow) = (
+                Links::new(&tris, &table, inside()),
+                Links::joined(&tris, &table, inside()),
+            );
+            assert_eq!(fast.inside.classes(), slow.inside.classes());
+            assert_eq!(fast.outside.classes(), slow.outside.classes());
+            assert_eq!(fast.link.classes(), slow.link.classes());
+        }
+    }
 }
