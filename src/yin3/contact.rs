@@ -13,7 +13,6 @@ use crate::kernel::Point3;
 use crate::num::{exact_orient3d_f64, Num, PlaneF64};
 use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering::{self, Equal};
-use std::sync::OnceLock;
 
 /// An edge of one operand: its ends' global point indices, the smaller first.
 pub(super) type Edge = (usize, usize);
@@ -56,8 +55,8 @@ pub(super) fn key(u: usize, v: usize) -> Edge {
 }
 
 /// How triangles `t` (operand 0) and `s` (operand 1) meet, as indices into `p`, the `f64`
-/// values of `corners`, with their global indices `ti`, `si` and their planes kept in
-/// `planes` (t's, then s's: each is made on first need, and a caller may share the cells).
+/// values of `corners`, with their global indices `ti`, `si` and their planes (t's, then
+/// s's).
 /// Triangles with a vertex on the other's plane go to [`touch`]. Else each plane must separate
 /// the other's vertices strictly; the line of the planes meets each triangle in a segment
 /// between its straddling edges' pierce points, and the sign of orient3d(e₀, e₁, f₀, f₁) — for
@@ -67,19 +66,15 @@ pub(super) fn key(u: usize, v: usize) -> Edge {
 /// roles swapped (the permutation is even), so four orientations settle the overlap.
 pub(super) fn contact<N: Num>(
     p: &[[f64; 3]],
-    planes: [&OnceLock<PlaneF64>; 2],
+    [t_plane, s_plane]: [&PlaneF64; 2],
     corners: &[&Point3<N>],
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
 ) -> Contact {
-    let plane =
-        |i: usize, [u, v, w]: [usize; 3]| planes[i].get_or_init(|| PlaneF64::new(p[u], p[v], p[w]));
-    let t_plane = plane(0, t);
     let s_sides = s.map(|v| t_plane.side(p[v]));
     if one_side(&s_sides) {
         return Contact::Apart;
     }
-    let s_plane = plane(1, s);
     let t_sides = t.map(|v| s_plane.side(p[v]));
     if one_side(&t_sides) {
         return Contact::Apart;
@@ -327,10 +322,10 @@ mod tests {
             .map(|[x, y, z]| Point3::new(x, y, z))
             .collect();
         let corners: Vec<&Point3<Float>> = points.iter().collect();
-        let planes = [OnceLock::new(), OnceLock::new()];
+        let [a, b] = [t, s].map(|[u, v, w]| PlaneF64::new(u, v, w));
         contact(
             &p,
-            [&planes[0], &planes[1]],
+            [&a, &b],
             &corners,
             (0, [0, 1, 2]),
             (1, [3, 4, 5]),

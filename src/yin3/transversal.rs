@@ -47,7 +47,6 @@ use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
 use std::cell::{Cell, OnceCell};
-use std::sync::OnceLock;
 
 /// Where the boundaries meet, as edges of the pieces of the transversal meet.
 #[derive(Default)]
@@ -246,23 +245,25 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             .map(|(k, &s)| GeomWithData::new(Rectangle::from_aabb(boxes[s]), k))
             .collect(),
     );
-    // Each indexed triangle's plane, prepared when a pair of boxes first needs it (a querying
-    // triangle's is prepared once for its query): a table over the indexed triangles only.
-    let planes: Vec<OnceLock<PlaneF64>> = indexed.iter().map(|_| OnceLock::new()).collect();
+    // Each indexed triangle's plane (the smaller operand's), and a querying triangle's once it
+    // meets a box.
+    let plane = |t: usize| PlaneF64::new(f64s[tris[t][0]], f64s[tris[t][1]], f64s[tris[t][2]]);
+    let planes: Vec<PlaneF64> = indexed.iter().map(|&t| plane(t)).collect();
     // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
     // ends it.
     // The crossing and the touching pairs found so far, to which `search` adds those of the
     // triangle q.
     type Found = (Vec<(usize, usize, [End; 2])>, Vec<[[usize; 2]; 2]>);
     let search = |(mut crossing, mut touching): Found, q: usize| -> Option<Found> {
-        let own = OnceLock::new();
+        let mut own = None;
         let generic = meeting_boxes(tree.root(), &boxes[q], &mut |k| {
             let g = indexed[k];
-            let (t, s, cells) = match flip {
-                true => (g, q, [&planes[k], &own]),
-                false => (q, g, [&own, &planes[k]]),
+            let own = &*own.get_or_insert_with(|| plane(q));
+            let (t, s, both) = match flip {
+                true => (g, q, [&planes[k], own]),
+                false => (q, g, [own, &planes[k]]),
             };
-            match contact(&f64s, cells, &corners, (t, tris[t]), (s, tris[s])) {
+            match contact(&f64s, both, &corners, (t, tris[t]), (s, tris[s])) {
                 Contact::Apart => {}
                 Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
@@ -1058,7 +1059,9 @@ mod tests {
         let tris: Vec<[usize; 3]> = (x.tris.iter().copied())
             .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
             .collect();
-        let planes: Vec<OnceLock<PlaneF64>> = tris.iter().map(|_| OnceLock::new()).collect();
+        let planes: Vec<PlaneF64> = (tris.iter())
+            .map(|t| PlaneF64::new(p[t[0]], p[t[1]], p[t[2]]))
+            .collect();
         let (mut kinds, mut edge_touch, mut cross) = ([false; 5], false, false);
         for t in 0..x.tris.len() {
             for s in x.tris.len()..tris.len() {
