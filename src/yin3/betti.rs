@@ -210,7 +210,10 @@ mod tests {
         let tetra = |o: [i64; 3], s: i64| -> (Vec<[i64; 3]>, Vec<[usize; 3]>) {
             let p = [[0, 0, 0], [s, 0, 0], [0, s, 0], [0, 0, s]];
             let tris = vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-            (p.iter().map(|v| [0, 1, 2].map(|k| o[k] + v[k])).collect(), tris)
+            (
+                p.iter().map(|v| [0, 1, 2].map(|k| o[k] + v[k])).collect(),
+                tris,
+            )
         };
         let both = |a: (Vec<[i64; 3]>, Vec<[usize; 3]>), b: (Vec<[i64; 3]>, Vec<[usize; 3]>)| {
             let (mut p, mut t) = a;

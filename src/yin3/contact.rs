@@ -323,13 +323,7 @@ mod tests {
             .collect();
         let corners: Vec<&Point3<Float>> = points.iter().collect();
         let [a, b] = [t, s].map(|[u, v, w]| PlaneF64::new(u, v, w));
-        contact(
-            &p,
-            [&a, &b],
-            &corners,
-            (0, [0, 1, 2]),
-            (1, [3, 4, 5]),
-        )
+        contact(&p, [&a, &b], &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
     }
 
     /// Triangles sharing a corner or an edge touch only where they meet in nothing else:

@@ -12,8 +12,8 @@
 use crate::kernel::{on_closed_segment, orient, Point};
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt};
-use std::cmp::Ordering::{Equal, Greater, Less};
 use smallvec::{smallvec, SmallVec};
+use std::cmp::Ordering::{Equal, Greater, Less};
 use std::collections::hash_map::Entry;
 
 /// A cut triangle's few points or indices, on the stack unless there are many.
