@@ -9,6 +9,7 @@ use crate::kernel::Point3;
 use crate::num::{common_grid, from_words, gcd_u128, Rational};
 use bnum::{BInt, BUint};
 use num_bigint::{BigInt, Sign};
+use ruint::aliases::{U256, U384};
 use std::cmp::Ordering;
 
 /// The widest grid integers, in bits, that the stack path takes on `words` 64-bit words: for
@@ -134,21 +135,30 @@ fn scaled<const W: usize>(n: BInt<W>, d: BInt<W>, scale: i32) -> (BInt<W>, BInt<
     }
 }
 
-/// gcd(a, b) by Lehmer's algorithm (`dashu-int`, word by word on 64-bit targets; a binary gcd
-/// on 384 bits costs more than all the rest of a pierce point).
-#[cfg(target_pointer_width = "64")]
+/// gcd(a, b) by Lehmer's algorithm on stack integers (`ruint`), on 256 bits where both fit,
+/// else on 384 (a binary gcd on 384 bits costs more than all the rest of a pierce point;
+/// `dashu-int`'s Lehmer allocates its operands).
 fn gcd<const W: usize>(a: BUint<W>, b: BUint<W>) -> BUint<W> {
-    let of = |x: &BUint<W>| dashu_int::UBig::from_words(x.digits());
-    let g = dashu_int::ops::Gcd::gcd(&of(&a), &of(&b));
+    const { assert!(W <= 6, "pierce points take at most 384 bits") };
+    let (a, b) = (a.digits(), b.digits());
     let mut digits = [0u64; W];
-    digits[..g.as_words().len()].copy_from_slice(g.as_words());
+    let within_256 = |x: &[u64]| x.iter().skip(4).all(|&d| d == 0);
+    if within_256(a) && within_256(b) {
+        let g = U256::from_limbs(limbs(a)).gcd(U256::from_limbs(limbs(b)));
+        digits[..W.min(4)].copy_from_slice(&g.as_limbs()[..W.min(4)]);
+    } else {
+        let g = U384::from_limbs(limbs(a)).gcd(U384::from_limbs(limbs(b)));
+        digits.copy_from_slice(&g.as_limbs()[..W]);
+    }
     BUint::from_digits(digits)
 }
 
-/// gcd(a, b), by `bnum`'s binary gcd.
-#[cfg(not(target_pointer_width = "64"))]
-fn gcd<const W: usize>(a: BUint<W>, b: BUint<W>) -> BUint<W> {
-    num_integer::Integer::gcd(&a, &b)
+/// The first `L` of the words `x`, zeros after them.
+fn limbs<const L: usize>(x: &[u64]) -> [u64; L] {
+    let mut out = [0; L];
+    let n = x.len().min(L);
+    out[..n].copy_from_slice(&x[..n]);
+    out
 }
 
 /// `x` as a big integer.
