@@ -13,12 +13,11 @@ const SCANS_PER_BOX: usize = 64;
 /// The boxes, ready to give each box's partners: the boxes after it (in sweep order, or by
 /// index in the tree) that meet it.
 pub(crate) enum MeetingBoxes {
-    /// Sweep order: each box's index, lower and upper corners, and the end of the boxes that
-    /// start within its x-range.
+    /// Sweep order: each box's index, its y- and z-ranges (lower y, lower z, upper y, upper
+    /// z, side by side for the scan), and the end of the boxes that start within its x-range.
     Sweep {
         order: Vec<usize>,
-        lo: Vec<[f64; 3]>,
-        hi: Vec<[f64; 3]>,
+        yz: Vec<[f64; 4]>,
         ends: Vec<usize>,
     },
     /// The boxes and their R-tree.
@@ -34,11 +33,9 @@ impl MeetingBoxes {
         let n = boxes.len();
         let mut order: Vec<usize> = (0..n).collect();
         order.sort_unstable_by(|&i, &j| boxes[i].lower()[0].total_cmp(&boxes[j].lower()[0]));
-        let lo: Vec<[f64; 3]> = order.iter().map(|&i| boxes[i].lower()).collect();
-        let hi: Vec<[f64; 3]> = order.iter().map(|&i| boxes[i].upper()).collect();
-        let ends: Vec<usize> = hi
-            .iter()
-            .map(|h| lo.partition_point(|l| l[0] <= h[0]))
+        let lower_x: Vec<f64> = order.iter().map(|&i| boxes[i].lower()[0]).collect();
+        let ends: Vec<usize> = (order.iter())
+            .map(|&i| lower_x.partition_point(|&x| x <= boxes[i].upper()[0]))
             .collect();
         // The scans, counted until they pass the budget (each box's own place is in its range).
         let budget = SCANS_PER_BOX * n + 4096;
@@ -46,12 +43,13 @@ impl MeetingBoxes {
             Some(scans + e.saturating_sub(k + 1)).filter(|&s| s <= budget)
         });
         if within.is_some() {
-            return MeetingBoxes::Sweep {
-                order,
-                lo,
-                hi,
-                ends,
-            };
+            let yz = (order.iter())
+                .map(|&i| {
+                    let (lo, hi) = (boxes[i].lower(), boxes[i].upper());
+                    [lo[1], lo[2], hi[1], hi[2]]
+                })
+                .collect();
+            return MeetingBoxes::Sweep { order, yz, ends };
         }
         let tree = RTree::bulk_load(
             (boxes.iter().enumerate())
@@ -74,15 +72,16 @@ impl MeetingBoxes {
     /// boxes that meet (closed boxes) is asked once, in one of its orders.
     fn partners(&self, k: usize, mut f: impl FnMut(usize, usize) -> bool) -> bool {
         match self {
-            MeetingBoxes::Sweep {
-                order,
-                lo,
-                hi,
-                ends,
-            } => (k + 1..ends[k]).all(|m| {
-                let meet = (1..3).all(|d| lo[m][d] <= hi[k][d] && lo[k][d] <= hi[m][d]);
-                !meet || f(order[k], order[m])
-            }),
+            MeetingBoxes::Sweep { order, yz, ends } => {
+                let [y0, z0, y1, z1] = yz[k];
+                (k + 1..ends[k]).all(|m| {
+                    // All four comparisons, one branch: most scanned boxes miss in y or z,
+                    // unpredictably.
+                    let [ly, lz, hy, hz] = yz[m];
+                    let meet = (ly <= y1) & (lz <= z1) & (y0 <= hy) & (z0 <= hz);
+                    !meet || f(order[k], order[m])
+                })
+            }
             MeetingBoxes::Tree(boxes, tree) => tree
                 .locate_in_envelope_intersecting(&boxes[k])
                 .all(|g| g.data <= k || f(k, g.data)),
