@@ -31,10 +31,12 @@ pub(crate) fn pair_fins(
         // The cyclic order, restricted to one label when labels are given: the nearest fins
         // of the same label before and after each fin (the fin itself if it is alone).
         let m = fins.len();
+        // j mod m for j < 2m, without a division.
+        let wrap = |j: usize| if j >= m { j - m } else { j };
         for (i, fin) in fins.iter().enumerate() {
             let same = |j: &usize| label.is_none_or(|l| l[fins[*j].tri] == l[fin.tri]);
-            let next = (1..=m).map(|k| (i + k) % m).find(same).unwrap_or(i);
-            let prev = (1..=m).map(|k| (i + m - k) % m).find(same).unwrap_or(i);
+            let next = (1..=m).map(|k| wrap(i + k)).find(same).unwrap_or(i);
+            let prev = (1..=m).map(|k| wrap(i + m - k)).find(same).unwrap_or(i);
             f(*fin, e, fins[partner(*fin, pairing, prev, next)]);
         }
     }
