@@ -174,15 +174,16 @@ fn rounded_boundary<N: Num>(
             .collect();
         let on_values =
             Brep::<Rational>::assemble(values, tris.clone()).map_err(|e| unrepresentable(&e))?;
+        // Assembling a compact boundary keeps its numbering, so `flags` and `rounded` still
+        // apply: the same triangles over the same indices.
+        let same = on_values.tris == tris;
+        if same && conforming_after_moves(&rounded, &on_values.tris, &flags) {
+            check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;
+            return Ok((on_values.with_points(rounded), same));
+        }
         let points: Vec<Point3<N>> = (on_values.points.iter())
             .map(|p| rounded_point(p).expect("the values of rounded points are f64s"))
             .collect();
-        // Assembling a compact boundary keeps its numbering, so `flags` still applies.
-        let same = on_values.tris == tris;
-        if same && conforming_after_moves(&points, &on_values.tris, &flags) {
-            check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;
-            return Ok((on_values.with_points(points), same));
-        }
         let values = on_values.points.clone();
         let brep = on_values.with_points(points);
         revalidate(values, &brep, ()).map_err(|e| unrepresentable(&e))?;
