@@ -441,10 +441,18 @@ fn meeting_boxes(
     query: &AABB<[f64; 3]>,
     f: &mut impl FnMut(usize) -> bool,
 ) -> bool {
-    node.children().iter().all(|child| match child {
-        RTreeNode::Leaf(g) => !g.envelope().intersects(query) || f(g.data),
-        RTreeNode::Parent(p) => !p.envelope().intersects(query) || meeting_boxes(p, query, f),
-    })
+    // A loop, not `all` with a closure: the closure, with `f` inlined in it, was a call with a
+    // large frame on every child visited.
+    for child in node.children() {
+        let stop = match child {
+            RTreeNode::Leaf(g) => g.envelope().intersects(query) && !f(g.data),
+            RTreeNode::Parent(p) => p.envelope().intersects(query) && !meeting_boxes(p, query, f),
+        };
+        if stop {
+            return false;
+        }
+    }
+    true
 }
 
 /// The operand whose parts (glued surfaces or patches, by operand) all lie inside the other,
