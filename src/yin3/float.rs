@@ -174,8 +174,8 @@ fn rounded_boundary<N: Num>(
             .collect();
         let on_values =
             Brep::<Rational>::assemble(values, tris.clone()).map_err(|e| unrepresentable(&e))?;
-        // Assembling a compact boundary keeps its numbering, so `flags` and `rounded` still
-        // apply: the same triangles over the same indices.
+        // Where assembly kept the triangles (`same`) it kept the numbering (it renumbers by
+        // first use, the identity on a compact boundary), so `flags` and `rounded` still apply.
         let same = on_values.tris == tris;
         if same && conforming_after_moves(&rounded, &on_values.tris, &flags) {
             check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;

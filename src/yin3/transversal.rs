@@ -245,8 +245,8 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             .map(|(k, &s)| GeomWithData::new(Rectangle::from_aabb(boxes[s]), k))
             .collect(),
     );
-    // Each indexed triangle's plane (the smaller operand's), and a querying triangle's once it
-    // meets a box.
+    // Each indexed triangle's plane (the operand with fewer near triangles), and a querying
+    // triangle's once it meets a box.
     let plane = |t: usize| PlaneF64::new(f64s[tris[t][0]], f64s[tris[t][1]], f64s[tris[t][2]]);
     let planes: Vec<PlaneF64> = indexed.iter().map(|&t| plane(t)).collect();
     // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
