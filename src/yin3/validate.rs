@@ -6,7 +6,7 @@
 use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::{exact_points, rounded_brep};
-use super::geom::{collinear, f64_box, normal, widened_box, Chart};
+use super::geom::{collinear, normal, widened_box, Chart};
 use super::locate::{ray_box, winding};
 use super::set::{Brep, YinSet3};
 use super::sweep::MeetingBoxes;
@@ -126,12 +126,10 @@ pub(crate) fn conforming_after_moves<N: Num>(
 ) -> bool {
     let exact = &N::exact_ctx();
     let touched: Vec<bool> = tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
-    // Float points are their `f64` values: the triangles' planes, prepared once, tell
-    // most pairs apart with a few dot products before anything is projected.
-    let f64s: Vec<[f64; 3]> = match N::EXACT {
-        true => Vec::new(),
-        false => points.iter().map(|p| p.to_f64()).collect(),
-    };
+    // Each point's nearest `f64`, once: the corners of the triangles' boxes, and in float
+    // mode the points themselves, whose triangles' planes, prepared once, tell most pairs
+    // apart with a few dot products before anything is projected.
+    let f64s: Vec<[f64; 3]> = points.iter().map(|p| p.to_f64()).collect();
     let planes: Vec<PlaneF64> = match N::EXACT {
         true => Vec::new(),
         false => (tris.iter())
@@ -157,7 +155,7 @@ pub(crate) fn conforming_after_moves<N: Num>(
         }
     };
     let boxes: Vec<AABB<[f64; 3]>> = (tris.iter())
-        .map(|t| f64_box(t.map(|v| &points[v])))
+        .map(|t| widened_box(t.map(|v| f64s[v])))
         .collect();
     let parallel = boxes.len() >= PARALLEL_FROM;
     MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| {
