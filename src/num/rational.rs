@@ -7,7 +7,7 @@ use super::{
     big, exact_orient, exact_orient3d, exact_orient3d_f64, exact_orient_f64, filtered_orient,
     filtered_orient3d, Literal, Num, NumError,
 };
-use num_bigint::BigInt;
+use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
@@ -194,6 +194,27 @@ impl Rational {
             d <<= -scale as u64 - t;
         }
         from_big(BigRational::new_raw(n, d))
+    }
+
+    /// ±`n` / `d` (minus if `negative`) from the 64-bit words of n and d, least significant
+    /// first, in lowest terms with d > 0 and n > 0, and `approx` within 3 ulps of it (as
+    /// [`Big::boxed`] rounds): small if it fits, no conversion through big integers to tell.
+    pub(crate) fn from_lowest_words(negative: bool, n: &[u64], d: &[u64], approx: f64) -> Rational {
+        let small = |x: &[u64]| match x.iter().skip(1).all(|&w| w == 0) {
+            true => i128::from(x[0]),
+            false => LIMIT,
+        };
+        let (m, e) = (small(n), small(d));
+        if m < LIMIT && e < LIMIT {
+            return Rational(Repr::Small(if negative { -m } else { m } as i64, e as i64));
+        }
+        let sign = if negative { Sign::Minus } else { Sign::Plus };
+        let value = BigRational::new_raw(
+            BigInt::from_biguint(sign, big::from_words(n)),
+            BigInt::from_biguint(Sign::Plus, big::from_words(d)),
+        );
+        let approx = if negative { -approx } else { approx };
+        Rational(Repr::Big(Arc::new(Big { value, approx })))
     }
 
     /// The integer `n`.
@@ -698,6 +719,30 @@ mod tests {
                 let reference = ToPrimitive::to_f64(&BigRational::new(n.clone(), d.clone()));
                 proptest::prop_assert_eq!(Some(Num::to_f64(&Rational::new(n, d))), reference);
             }
+        }
+    }
+
+    proptest::proptest! {
+        /// `from_lowest_words` is the value `Rational::new` makes of the same terms, in the same
+        /// representation (small for terms below 2⁶², big otherwise), with the approximation it
+        /// is given signed: on coprime terms of one to four words, either sign.
+        #[test]
+        fn from_lowest_words_is_the_value(
+            n in proptest::collection::vec(proptest::num::u64::ANY, 1..5),
+            d in proptest::collection::vec(proptest::num::u64::ANY, 1..5),
+            narrow in 0u32..64,
+            negative in proptest::bool::ANY,
+        ) {
+            let word = |w: &u64| w >> narrow;
+            let (n, d): (Vec<u64>, Vec<u64>) = (n.iter().map(word).collect(), d.iter().map(word).collect());
+            let value = |x: &[u64]| BigInt::from_biguint(Sign::Plus, big::from_words(x));
+            let (m, e) = (value(&n), value(&d));
+            proptest::prop_assume!(!m.is_zero() && !e.is_zero() && m.gcd(&e) == BigInt::from(1));
+            let approx = ToPrimitive::to_f64(&m).unwrap_or(f64::NAN) / ToPrimitive::to_f64(&e).unwrap_or(f64::NAN);
+            let got = Rational::from_lowest_words(negative, &n, &d, approx);
+            let want = Rational::new(if negative { -m } else { m }, e);
+            proptest::prop_assert_eq!(Num::approx(&got), Num::approx(&want));
+            proptest::prop_assert!(got == want);
         }
     }
 

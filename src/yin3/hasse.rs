@@ -62,9 +62,13 @@ pub(crate) fn hasse<N: Num>(
     let inside = |l: usize, k: usize| bbox(k).contains_envelope(bbox(l));
     let mut parent = vec![None; count];
     for l in 0..count {
-        let q = {
-            let [a, b, c] = corners(members[l][0]);
-            Point3::centroid(a, b, c)
+        // A point inside the surface's first triangle, made once a larger surface is tried.
+        let q = OnceCell::new();
+        let q = || {
+            q.get_or_init(|| {
+                let [a, b, c] = corners(members[l][0]);
+                Point3::centroid(a, b, c)
+            })
         };
         let mut best: Option<usize> = None;
         for (k, member) in members.iter().enumerate() {
@@ -74,7 +78,7 @@ pub(crate) fn hasse<N: Num>(
             if best.is_some_and(|b| volumes.cmp_abs(b, k) != Ordering::Greater) {
                 continue;
             }
-            if winding(member.iter().map(|&t| corners(t)), &q, ctx) != 0 {
+            if winding(member.iter().map(|&t| corners(t)), q(), ctx) != 0 {
                 best = Some(k);
             }
         }

@@ -6,29 +6,96 @@
 
 use super::link::{cross, dot, Scalar, Vector};
 use crate::kernel::Point3;
-use crate::num::{common_grid, from_words, gcd_u128, Rational};
-use bnum::{BInt, BUint};
+use crate::num::{common_grid, from_words, gcd_u128, Num, Rational};
 use num_bigint::{BigInt, Sign};
-use ruint::aliases::{U256, U384};
+use ruint::aliases::U256;
+use ruint::Uint;
 use std::cmp::Ordering;
+use std::ops::{Add, Neg, Sub};
 
-/// The widest grid integers, in bits, that the stack path takes on `words` 64-bit words: for
+/// The widest grid integers, in bits, that the stack path takes on `BITS`-bit integers: for
 /// grid integers below 2^B every value it forms is below 2^(4B + 7) (differences 2^(B+1), the
 /// normal 2^(2B+3), the plane's values 2^(3B+6), the section's numerators 2^(4B+7)), which
-/// must stay below 2^(64·words − 1); V − U then fits in `u128`.
-const fn narrow(words: u32) -> u32 {
-    (64 * words - 8) / 4
+/// must stay below 2^(BITS − 1); V − U then fits in `u128`.
+const fn narrow(bits: usize) -> u32 {
+    (bits as u32 - 8) / 4
 }
 
-impl<const W: usize> Scalar for BInt<W> {
+/// An integer in two's complement on the words of a `BITS`-bit `ruint` integer: sums,
+/// differences and products wrap, so they are exact while every value stays below 2^(BITS − 1)
+/// in magnitude ([`narrow`] sees to it).
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct Twos<const BITS: usize, const LIMBS: usize>(Uint<BITS, LIMBS>);
+
+impl<const BITS: usize, const LIMBS: usize> Twos<BITS, LIMBS> {
+    /// True below zero.
+    fn negative(&self) -> bool {
+        self.0.bit(BITS - 1)
+    }
+
+    /// |self|.
+    fn magnitude(self) -> Uint<BITS, LIMBS> {
+        match self.negative() {
+            true => self.0.wrapping_neg(),
+            false => self.0,
+        }
+    }
+
+    /// The quotient by a divisor `g` > 0 of `self`.
+    fn divided(self, g: Uint<BITS, LIMBS>) -> Self {
+        let q = Twos(self.magnitude() / g);
+        match self.negative() {
+            true => -q,
+            false => q,
+        }
+    }
+}
+
+impl<const BITS: usize, const LIMBS: usize> Add for Twos<BITS, LIMBS> {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        Twos(self.0 + o.0)
+    }
+}
+
+impl<const BITS: usize, const LIMBS: usize> Sub for Twos<BITS, LIMBS> {
+    type Output = Self;
+    fn sub(self, o: Self) -> Self {
+        Twos(self.0 - o.0)
+    }
+}
+
+impl<const BITS: usize, const LIMBS: usize> Sub for &Twos<BITS, LIMBS> {
+    type Output = Twos<BITS, LIMBS>;
+    fn sub(self, o: Self) -> Twos<BITS, LIMBS> {
+        *self - *o
+    }
+}
+
+impl<const BITS: usize, const LIMBS: usize> Neg for Twos<BITS, LIMBS> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Twos(self.0.wrapping_neg())
+    }
+}
+
+impl<const BITS: usize, const LIMBS: usize> Scalar for Twos<BITS, LIMBS> {
     fn of(w: i64) -> Self {
-        BInt::from(w)
+        let m = Twos(Uint::from(w.unsigned_abs()));
+        match w < 0 {
+            true => -m,
+            false => m,
+        }
     }
     fn times(&self, o: &Self) -> Self {
-        *self * *o
+        Twos(self.0 * o.0)
     }
     fn sign(&self) -> Option<Ordering> {
-        Some(self.cmp(&BInt::ZERO))
+        Some(match (self.negative(), self.0 == Uint::ZERO) {
+            (true, _) => Ordering::Less,
+            (false, true) => Ordering::Equal,
+            (false, false) => Ordering::Greater,
+        })
     }
 }
 
@@ -40,8 +107,8 @@ pub(super) fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) ->
     let corners = [u, v, tri[0], tri[1], tri[2]];
     let (parts, low) = common_grid::<15>(std::array::from_fn(|k| p[corners[k / 3]][k % 3]));
     let [x, y, z] = match width(&parts) {
-        w if w <= narrow(4) => on_stack::<4>(parts, low),
-        w if w <= narrow(6) => on_stack::<6>(parts, low),
+        w if w <= narrow(256) => on_stack::<256, 4>(parts, low),
+        w if w <= narrow(384) => on_stack::<384, 6>(parts, low),
         _ => {
             let int = |(m, shift): (i64, u32)| BigInt::from(m) << shift;
             let [pu, pv, a, b, c] = points(parts.map(int));
@@ -82,43 +149,58 @@ where
 /// of the line through U = `pu` and V = `pv`, with u and v the plane's values there, each
 /// coordinate in lowest terms by the same gcds (h = gcd(u, v), then gcd(V − U, d) with the
 /// small V − U).
-fn on_stack<const W: usize>(parts: [(i64, u32); 15], scale: i32) -> [Rational; 3] {
-    let [pu, pv, a, b, c] = points(parts.map(|(m, shift)| BInt::<W>::from(m) << shift));
+fn on_stack<const BITS: usize, const LIMBS: usize>(
+    parts: [(i64, u32); 15],
+    scale: i32,
+) -> [Rational; 3] {
+    let int = |(m, shift): (i64, u32)| Twos(Twos::<BITS, LIMBS>::of(m).0 << shift as usize);
+    let [pu, pv, a, b, c] = points(parts.map(int));
     let (u, v) = plane_values([&pu, &pv], [a, b, c]);
-    let h = gcd(u.unsigned_abs(), v.unsigned_abs()).cast_signed();
-    let (u, v) = match h == BInt::ONE {
+    let h = gcd(u.magnitude(), v.magnitude());
+    let (u, v) = match h == Uint::ONE {
         true => (u, v),
-        false => (u / h, v / h),
+        false => (u.divided(h), v.divided(h)),
     };
-    let (u, v) = if u < v { (-u, -v) } else { (u, v) };
-    let d = u - v;
+    let (u, v) = if (u - v).negative() { (-u, -v) } else { (u, v) };
+    let d = (u - v).0;
     [0, 1, 2].map(|k| {
-        let numer = u * pv[k] - v * pu[k];
-        let w = u128::try_from((pv[k] - pu[k]).unsigned_abs()).expect("V − U below 2^95");
+        let numer = u.times(&pv[k]) - v.times(&pu[k]);
+        let w = u128::try_from((pv[k] - pu[k]).magnitude()).expect("V − U below 2^95");
         let g = match w {
             0 => d,
             w => {
-                let r = d.unsigned_abs() % BUint::<W>::from(w);
-                let r = u128::try_from(r).expect("a remainder below w");
-                BInt::from(gcd_u128(w, r))
+                let r = u128::try_from(d % Uint::from(w)).expect("a remainder below w");
+                Uint::from(gcd_u128(w, r))
             }
         };
-        let (n, d) = match g == BInt::ONE {
-            true => (numer, d),
-            false => (numer / g, d / g),
+        let (n, d) = match g == Uint::ONE {
+            true => (numer.magnitude(), d),
+            false => (numer.magnitude() / g, d / g),
         };
-        let (n, d, scale) = scaled(n, d, scale);
-        Rational::times_power_of_two(big(n), big(d), scale)
+        match scaled(n, d, scale) {
+            (n, _, _) if n == Uint::ZERO => Rational::zero(),
+            (n, d, 0) => {
+                let approx = f64::from(&n) / f64::from(&d);
+                Rational::from_lowest_words(numer.negative(), n.as_limbs(), d.as_limbs(), approx)
+            }
+            (n, d, rest) => {
+                Rational::times_power_of_two(big(numer.negative(), n), big(false, d), rest)
+            }
+        }
     })
 }
 
-/// n/d · 2^`scale` (n/d in lowest terms, d > 0) as n′/d′ · 2^`rest` in lowest terms: the
-/// power of two applied on the stack where the shifted term fits (the common powers of two
+/// n/d · 2^`scale` (n/d in lowest terms, n ≥ 0, d > 0) as n′/d′ · 2^`rest` in lowest terms:
+/// the power of two applied on the stack where the shifted term fits (the common powers of two
 /// cancelled, `rest` = 0), else left whole to [`Rational::times_power_of_two`] on big integers.
-fn scaled<const W: usize>(n: BInt<W>, d: BInt<W>, scale: i32) -> (BInt<W>, BInt<W>, i32) {
-    let fits = |x: &BInt<W>, k: u32| x.unsigned_abs().bits() + k < 64 * W as u32;
-    let k = scale.unsigned_abs();
-    if n == BInt::ZERO {
+fn scaled<const BITS: usize, const LIMBS: usize>(
+    n: Uint<BITS, LIMBS>,
+    d: Uint<BITS, LIMBS>,
+    scale: i32,
+) -> (Uint<BITS, LIMBS>, Uint<BITS, LIMBS>, i32) {
+    let fits = |x: &Uint<BITS, LIMBS>, k: usize| x.bit_len() + k < BITS;
+    let k = scale.unsigned_abs() as usize;
+    if n == Uint::ZERO {
         (n, d, 0)
     } else if scale < 0 {
         let t = k.min(n.trailing_zeros());
@@ -135,22 +217,19 @@ fn scaled<const W: usize>(n: BInt<W>, d: BInt<W>, scale: i32) -> (BInt<W>, BInt<
     }
 }
 
-/// gcd(a, b) by Lehmer's algorithm on stack integers (`ruint`), on 256 bits where both fit,
-/// else on 384 (a binary gcd on 384 bits costs more than all the rest of a pierce point;
-/// `dashu-int`'s Lehmer allocates its operands).
-fn gcd<const W: usize>(a: BUint<W>, b: BUint<W>) -> BUint<W> {
-    const { assert!(W <= 6, "pierce points take at most 384 bits") };
-    let (a, b) = (a.digits(), b.digits());
-    let mut digits = [0u64; W];
-    let within_256 = |x: &[u64]| x.iter().skip(4).all(|&d| d == 0);
-    if within_256(a) && within_256(b) {
-        let g = U256::from_limbs(limbs(a)).gcd(U256::from_limbs(limbs(b)));
-        digits[..W.min(4)].copy_from_slice(&g.as_limbs()[..W.min(4)]);
+/// gcd(a, b) by Lehmer's algorithm (`ruint`), on 256 bits where both fit (a binary gcd on
+/// 384 bits costs more than all the rest of a pierce point; `dashu-int`'s Lehmer allocates its
+/// operands).
+fn gcd<const BITS: usize, const LIMBS: usize>(
+    a: Uint<BITS, LIMBS>,
+    b: Uint<BITS, LIMBS>,
+) -> Uint<BITS, LIMBS> {
+    if BITS <= 256 || a.bit_len().max(b.bit_len()) <= 256 {
+        let narrow = |x: Uint<BITS, LIMBS>| U256::from_limbs(limbs(x.as_limbs()));
+        Uint::from_limbs(limbs(narrow(a).gcd(narrow(b)).as_limbs()))
     } else {
-        let g = U384::from_limbs(limbs(a)).gcd(U384::from_limbs(limbs(b)));
-        digits.copy_from_slice(&g.as_limbs()[..W]);
+        a.gcd(b)
     }
-    BUint::from_digits(digits)
 }
 
 /// The first `L` of the words `x`, zeros after them.
@@ -161,14 +240,14 @@ fn limbs<const L: usize>(x: &[u64]) -> [u64; L] {
     out
 }
 
-/// `x` as a big integer.
-fn big<const W: usize>(x: BInt<W>) -> BigInt {
-    let sign = match x.cmp(&BInt::ZERO) {
-        Ordering::Less => Sign::Minus,
-        Ordering::Equal => Sign::NoSign,
-        Ordering::Greater => Sign::Plus,
+/// The integer of sign `negative` and magnitude `m`, as a big integer.
+fn big<const BITS: usize, const LIMBS: usize>(negative: bool, m: Uint<BITS, LIMBS>) -> BigInt {
+    let sign = match (negative, m == Uint::ZERO) {
+        (_, true) => Sign::NoSign,
+        (true, false) => Sign::Minus,
+        (false, false) => Sign::Plus,
     };
-    BigInt::from_biguint(sign, from_words(&x.unsigned_abs().digits()[..]))
+    BigInt::from_biguint(sign, from_words(m.as_limbs()))
 }
 
 #[cfg(test)]
@@ -250,13 +329,17 @@ mod tests {
             }
             let (parts, _) = common_grid::<15>(std::array::from_fn(|k| p[k / 3][k % 3]));
             let w = width(&parts);
-            seen[usize::from(w > narrow(4)) + usize::from(w > narrow(6))] += 1;
-            for (near, n) in near_bounds.iter_mut().zip([narrow(4), narrow(6)]) {
+            seen[usize::from(w > narrow(256)) + usize::from(w > narrow(384))] += 1;
+            for (near, n) in near_bounds.iter_mut().zip([narrow(256), narrow(384)]) {
                 *near += usize::from(n.abs_diff(w) <= 1);
             }
             let got = pierce(&p, (0, 1), [2, 3, 4]);
             let [x, y, z] = oracle(&p);
-            assert_eq!(got, Point3::new(x, y, z), "corners {p:?}");
+            // The same approximations too (the filters read them).
+            let approx = |p: &Point3<Rational>| [&p.x, &p.y, &p.z].map(|c| c.approx());
+            let want = Point3::new(x, y, z);
+            assert_eq!(approx(&got), approx(&want), "corners {p:?}");
+            assert_eq!(got, want, "corners {p:?}");
         }
         assert!(seen.iter().all(|&n| n > 300), "paths taken: {seen:?}");
         assert!(
@@ -360,10 +443,9 @@ mod tests {
         let mut rng = StdRng::seed_from_u64(11);
         let mut kinds = [0usize; 4];
         for _ in 0..4000 {
-            let odd = |rng: &mut StdRng, bits: u32| {
+            let odd = |rng: &mut StdRng, bits: usize| {
                 let words: [u64; 4] = std::array::from_fn(|_| rng.random());
-                let x = BUint::<4>::from_digits(words) >> (256 - bits);
-                (x | BUint::ONE).cast_signed()
+                (U256::from_limbs(words) >> (256 - bits)) | U256::ONE
             };
             let twos = rng.random_range(0..=40);
             let (a, b) = match rng.random() {
@@ -372,9 +454,8 @@ mod tests {
             };
             let (bn, bd) = (rng.random_range(1..=250 - a), rng.random_range(1..=250 - b));
             let n = odd(&mut rng, bn) << a;
-            let n = if rng.random() { -n } else { n };
             let d = odd(&mut rng, bd) << b;
-            if big(n).gcd(&big(d)) != BigInt::from(1) {
+            if big(false, n).gcd(&big(false, d)) != BigInt::from(1) {
                 continue;
             }
             let scale = rng.random_range(-300..=300);
@@ -387,17 +468,17 @@ mod tests {
                     Rational::from_i64(1) / p
                 }
             };
-            let value = |n, d, k| Rational::new(big(n), big(d)) * power(k);
+            let value = |n, d, k| Rational::new(big(false, n), big(false, d)) * power(k);
             assert_eq!(
                 value(m, e, rest),
                 value(n, d, scale),
                 "{n} / {d} · 2^{scale}"
             );
-            assert_eq!(big(m).gcd(&big(e)), BigInt::from(1));
-            assert!(e > BInt::ZERO);
+            assert_eq!(big(false, m).gcd(&big(false, e)), BigInt::from(1));
+            assert!(e > U256::ZERO);
             // A power of two is left over only where shifting the term would overflow.
             let shifted = if scale < 0 { e } else { m };
-            let width = shifted.unsigned_abs().bits() + rest.unsigned_abs();
+            let width = shifted.bit_len() + rest.unsigned_abs() as usize;
             assert!(rest == 0 || width >= 256, "{n} / {d} · 2^{scale}");
             kinds[usize::from(scale > 0) * 2 + usize::from(rest != 0)] += 1;
         }
