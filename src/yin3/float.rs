@@ -132,8 +132,9 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 /// Otherwise vertices that round to one point are merged, triangles that collapse to a
 /// segment or a point are dropped (each takes a pair of opposite fins off an edge, so closed
 /// surfaces stay closed), and the rounded boundary is validated exactly. The result must have
-/// the exact one's topology, computed by `keep` unless [`provably_kept`] shows it. Any failure
-/// is [`Yin3Error::Unrepresentable`].
+/// the exact one's topology, computed by `keep` unless [`provably_kept`] shows it (which also
+/// shows the windings of a conforming boundary, I4: see [`Shown::Conforming`]). Any failure is
+/// [`Yin3Error::Unrepresentable`].
 fn rounded_complex<N: Num>(
     rounded: Vec<Point3<N>>,
     moved: Vec<Option<Point3<Rational>>>,
@@ -145,9 +146,13 @@ fn rounded_complex<N: Num>(
         // Every point an `f64` already: the exact boundary itself, valid, with its topology.
         return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
     }
-    let (brep, same_triangles) = rounded_boundary(rounded, moved, exact, tris)?;
+    let (brep, shown) = rounded_boundary(rounded, moved, exact, tris)?;
+    let same_triangles = matches!(shown, Shown::Conforming | Shown::Valid { same: true });
     if same_triangles && provably_kept(&brep, exact) {
         return Ok(brep);
+    }
+    if let Shown::Conforming = shown {
+        check_windings(&exact_brep(&brep), &()).map_err(|e| unrepresentable(&e))?;
     }
     let (keep, got) = (keep()?, Topology::of(&brep));
     if got != keep {
@@ -158,14 +163,27 @@ fn rounded_complex<N: Num>(
     Ok(brep)
 }
 
-/// The valid boundary of [`rounded_complex`], before its topology is compared, and whether it
-/// has the triangles `tris` (no point merged, the numbering kept).
+/// What [`rounded_boundary`] has shown of its boundary's validity.
+enum Shown {
+    /// The exact boundary's very triangles, numbering kept, and conforming (I1–I3): valid once
+    /// its windings are (I4). Where [`provably_kept`] also holds they are: each glued surface
+    /// keeps its orientation and the winding number about it of every other surface, so the
+    /// winding number beside each triangle (its own surface's, 0 on the side its normal points
+    /// to if positive, −1 if negative, plus the others') is the exact boundary's, which is valid.
+    Conforming,
+    /// Validated in full; `same` if it has the triangles `tris` (no point merged, the numbering
+    /// kept).
+    Valid { same: bool },
+}
+
+/// The rounded boundary of [`rounded_complex`], before its topology is compared, and how far
+/// it is shown valid.
 fn rounded_boundary<N: Num>(
     rounded: Vec<Point3<N>>,
     moved: Vec<Option<Point3<Rational>>>,
     exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
-) -> Result<(Brep<N>, bool), Yin3Error> {
+) -> Result<(Brep<N>, Shown), Yin3Error> {
     if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
         let flags: Vec<bool> = moved.iter().map(Option::is_some).collect();
         // The rounded points' exact values: those that did not move are the exact points.
@@ -178,8 +196,7 @@ fn rounded_boundary<N: Num>(
         // first use, the identity on a compact boundary), so `flags` and `rounded` still apply.
         let same = on_values.tris == tris;
         if same && conforming_after_moves(&rounded, &on_values.tris, &flags) {
-            check_windings(&on_values, &()).map_err(|e| unrepresentable(&e))?;
-            return Ok((on_values.with_points(rounded), same));
+            return Ok((on_values.with_points(rounded), Shown::Conforming));
         }
         let points: Vec<Point3<N>> = (on_values.points.iter())
             .map(|p| rounded_point(p).expect("the values of rounded points are f64s"))
@@ -187,7 +204,7 @@ fn rounded_boundary<N: Num>(
         let values = on_values.points.clone();
         let brep = on_values.with_points(points);
         revalidate(values, &brep, ()).map_err(|e| unrepresentable(&e))?;
-        return Ok((brep, same));
+        return Ok((brep, Shown::Valid { same }));
     }
     let mut index: HashMap<Point3<N>, usize> = HashMap::new();
     let mut points = Vec::new();
@@ -210,7 +227,7 @@ fn rounded_boundary<N: Num>(
     }
     let brep = Brep::assemble(points, tris).map_err(|e| unrepresentable(&e))?;
     revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
-    Ok((brep, false))
+    Ok((brep, Shown::Valid { same: false }))
 }
 
 /// The exact set `y` rounded ([`rounded_brep`]), under the context `ctx`.
