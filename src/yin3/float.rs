@@ -166,10 +166,14 @@ fn rounded_complex<N: Num>(
 /// What [`rounded_boundary`] has shown of its boundary's validity.
 enum Shown {
     /// The exact boundary's very triangles, numbering kept, and conforming (I1–I3): valid once
-    /// its windings are (I4). Where [`provably_kept`] also holds they are: each glued surface
-    /// keeps its orientation and the winding number about it of every other surface, so the
-    /// winding number beside each triangle (its own surface's, 0 on the side its normal points
-    /// to if positive, −1 if negative, plus the others') is the exact boundary's, which is valid.
+    /// its windings are (I4). Where [`provably_kept`] also holds they are. With two fins per
+    /// edge the glued surfaces are the edge-connected surfaces I4 speaks of; each is embedded
+    /// and splits space in two, so its own winding number beside it is 0 on the side its
+    /// normals point to if it is positive, −1 if negative, and it keeps its orientation and the
+    /// winding number about it of every other surface. So the winding number beside each
+    /// triangle is the exact boundary's, which is valid; and the rounded boundedness,
+    /// recomputed from the rounded volumes, is the exact one (the volume is the integral of
+    /// the winding number).
     Conforming,
     /// Validated in full; `same` if it has the triangles `tris` (no point merged, the numbering
     /// kept).

@@ -93,13 +93,14 @@ const U: f64 = f64::EPSILON / 2.0;
 /// link is l_p disjoint circles, so l_p + 1 faces, and the complement's r_p is l_p + 1 minus
 /// the set's: equal counts for the set mean equal counts for the complement). Each surface's
 /// signed volume (positive iff it is positively oriented, Def. 7.3) must be farther from 0 than
-/// rounding and the `f64` sum can move it; two surfaces whose boxes come within the rounding of
-/// each other must each have a vertex off the other and farther from each of its triangles than
-/// twice the rounding (then moving every vertex straight from its exact to its rounded place
-/// never moves the surface through that vertex, so the winding number about it is kept; in both
-/// versions surfaces meet only in shared vertices, so that winding number is the one about
-/// every other point of the surface: nesting); surfaces farther apart are nested in neither
-/// version; and the link terms are compared exactly where a vertex has several corner cycles.
+/// rounding and the `f64` sum can move it; two surfaces whose boxes come within twice the
+/// rounding of each other (both move) must each have a vertex off the other and farther from
+/// each of its triangles than twice the rounding (then moving every vertex, that one too,
+/// straight from its exact to its rounded place never moves the surface through that vertex, so
+/// the winding number about it is kept; in both versions surfaces meet only in shared vertices,
+/// so that winding number is the one about every other point of the surface: nesting); surfaces
+/// farther apart are nested in neither version; and the link terms are compared exactly where a
+/// vertex has several corner cycles.
 pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> bool {
     // Two fins per edge also make the fin table (built on the rounded points) the exact
     // points' own: with two fins there is no order to sort.
