@@ -42,7 +42,7 @@ use super::set::{compact, Brep};
 use crate::kernel::Point3;
 use crate::num::{Num, PlaneF64, Rational};
 use crate::union_find::UnionFind;
-use foldhash::{HashMap, HashMapExt, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
@@ -94,13 +94,14 @@ struct Sites {
 }
 
 impl Sites {
-    /// No points yet, numbered from `first`, on `tris` triangles.
-    fn new(first: usize, tris: usize) -> Self {
+    /// No points yet, numbered from `first`, on `tris` triangles, room for those of `ends`
+    /// contact ends.
+    fn new(first: usize, tris: usize, ends: usize) -> Self {
         Sites {
             first,
-            index: HashMap::new(),
-            made: Vec::new(),
-            on_edge: HashMap::new(),
+            index: HashMap::with_capacity(ends),
+            made: Vec::with_capacity(ends),
+            on_edge: HashMap::with_capacity(ends),
             extra: vec![Vec::new(); tris],
         }
     }
@@ -308,7 +309,10 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             None => Transversal::Apart(inside),
         });
     }
-    let mut seams = Seams::default();
+    let mut seams = Seams {
+        crossing: HashSet::with_capacity(2 * crossings.len()),
+        ..Seams::default()
+    };
     for [e0, e1] in touching {
         seams.corner(e0[0], e0[1]);
         seams.corner(e1[0], e1[1]);
@@ -316,7 +320,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
             seams.shared.extend([key(e0[0], e1[0]), key(e0[1], e1[1])]);
         }
     }
-    let mut sites = Sites::new(corners.len(), tris.len());
+    let mut sites = Sites::new(corners.len(), tris.len(), 2 * crossings.len());
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); tris.len()];
     for (t, s, ends) in crossings {
         let [(pt, ps), (qt, qs)] = ends.map(|end| {
