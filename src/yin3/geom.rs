@@ -111,16 +111,28 @@ impl Chart {
             [0, 1, 2].map(|k| b[k] - a[k]),
             [0, 1, 2].map(|k| c[k] - a[k]),
         );
-        let mut best: Option<(usize, f64, Ordering)> = None;
-        for k in 0..3 {
+        let size = [0, 1, 2].map(|k| {
             let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-            let size = (u[i] * v[j] - u[j] * v[i]).abs();
-            let sign = exact_orient_f64([a[i], a[j]], [b[i], b[j]], [c[i], c[j]]);
-            if sign != Ordering::Equal && best.is_none_or(|(_, m, _)| size > m) {
-                best = Some((k, size, sign));
+            (u[i] * v[j] - u[j] * v[i]).abs()
+        });
+        let sign = |k: usize| {
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            exact_orient_f64([a[i], a[j]], [b[i], b[j]], [c[i], c[j]])
+        };
+        // The first of the largest among `axes` (a later one only where strictly larger). The
+        // largest of all, where its sign is nonzero, is also the largest of those signed so.
+        let largest = |axes: &mut dyn Iterator<Item = usize>| {
+            axes.reduce(|m, k| if size[k] > size[m] { k } else { m })
+        };
+        let first = largest(&mut (0..3)).expect("three axes");
+        match sign(first) {
+            Ordering::Equal => {
+                let signs = [0, 1, 2].map(sign);
+                let k = largest(&mut (0..3).filter(|&k| signs[k] != Ordering::Equal))?;
+                Some(Chart::of_axis(k, signs[k]))
             }
+            s => Some(Chart::of_axis(first, s)),
         }
-        best.map(|(k, _, sign)| Chart::of_axis(k, sign))
     }
 
     /// The chart of the plane of the (non-degenerate) triangle `abc`, in which it is
@@ -247,11 +259,27 @@ mod tests {
                 Point3::new(r(p[0]), r(p[1]), r(p[2]))
             };
             let (ea, eb, ec) = (exact(a), exact(b), exact(c));
+            // The documented axis: the first of the largest f64 normal components among the
+            // axes whose projection has a nonzero exact orientation.
+            let normal = |k: usize| {
+                let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+                ((b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i])).abs()
+            };
+            let signed = (0..3).filter(|&k| {
+                let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+                let p = |q: &Point3<Rational>| Point::new(q.coord(i).clone(), q.coord(j).clone());
+                orient(&p(&ea), &p(&eb), &p(&ec), &()) != Ordering::Equal
+            });
+            let axis = signed.fold(None, |m: Option<usize>, k| match m {
+                Some(m) if !(normal(k) > normal(m)) => Some(m),
+                _ => Some(k),
+            });
             match Chart::of_f64_triangle([a, b, c]) {
                 None => prop_assert!(collinear(&ea, &eb, &ec)),
                 Some(chart) => {
                     let (pa, pb, pc) = (chart.project(&ea), chart.project(&eb), chart.project(&ec));
                     prop_assert_eq!(orient(&pa, &pb, &pc, &()), Ordering::Greater);
+                    prop_assert_eq!(Some(3 - chart.keep[0] - chart.keep[1]), axis);
                 }
             }
         }
