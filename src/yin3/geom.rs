@@ -259,8 +259,9 @@ mod tests {
                 Point3::new(r(p[0]), r(p[1]), r(p[2]))
             };
             let (ea, eb, ec) = (exact(a), exact(b), exact(c));
-            // The documented axis: the first of the largest f64 normal components among the
-            // axes whose projection has a nonzero exact orientation.
+            // The documented axis: the first of the largest f64 normal components (a later one
+            // only where strictly larger) among the axes whose projection has a nonzero exact
+            // orientation.
             let normal = |k: usize| {
                 let (i, j) = ((k + 1) % 3, (k + 2) % 3);
                 ((b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i])).abs()
@@ -271,7 +272,7 @@ mod tests {
                 orient(&p(&ea), &p(&eb), &p(&ec), &()) != Ordering::Equal
             });
             let axis = signed.fold(None, |m: Option<usize>, k| match m {
-                Some(m) if !(normal(k) > normal(m)) => Some(m),
+                Some(m) if normal(k).partial_cmp(&normal(m)) != Some(Ordering::Greater) => Some(m),
                 _ => Some(k),
             });
             match Chart::of_f64_triangle([a, b, c]) {
