@@ -316,15 +316,14 @@ impl PlaneF64 {
         }
     }
 
-    /// [`exact_orient3d_f64`] of the plane's corners and `d` (a corner is never certain).
+    /// [`exact_orient3d_f64`] of the plane's corners and `d`.
     pub(crate) fn side(&self, d: [f64; 3]) -> Ordering {
-        self.certain_side(d).unwrap_or_else(|| {
-            let [a, b, c] = self.corners;
-            match d == a || d == b || d == c {
-                true => Ordering::Equal,
-                false => unfiltered_orient3d_f64(a, b, c, d),
-            }
-        })
+        let [a, b, c] = self.corners;
+        if d == a || d == b || d == c {
+            return Ordering::Equal;
+        }
+        self.certain_side(d)
+            .unwrap_or_else(|| unfiltered_orient3d_f64(a, b, c, d))
     }
 
     /// [`PlaneF64::side`] where the static filter is certain of it (one dot product), `None`
