@@ -41,13 +41,17 @@ impl<const BITS: usize, const LIMBS: usize> Twos<BITS, LIMBS> {
         }
     }
 
+    /// The integer of sign `negative` and magnitude `m`.
+    fn signed(negative: bool, m: Uint<BITS, LIMBS>) -> Self {
+        match negative {
+            true => Twos(m.wrapping_neg()),
+            false => Twos(m),
+        }
+    }
+
     /// The quotient by a divisor `g` > 0 of `self`.
     fn divided(self, g: Uint<BITS, LIMBS>) -> Self {
-        let q = Twos(self.magnitude() / g);
-        match self.negative() {
-            true => -q,
-            false => q,
-        }
+        Twos::signed(self.negative(), self.magnitude() / g)
     }
 }
 
@@ -81,11 +85,7 @@ impl<const BITS: usize, const LIMBS: usize> Neg for Twos<BITS, LIMBS> {
 
 impl<const BITS: usize, const LIMBS: usize> Scalar for Twos<BITS, LIMBS> {
     fn of(w: i64) -> Self {
-        let m = Twos(Uint::from(w.unsigned_abs()));
-        match w < 0 {
-            true => -m,
-            false => m,
-        }
+        Twos::signed(w < 0, Uint::from(w.unsigned_abs()))
     }
     fn times(&self, o: &Self) -> Self {
         Twos(self.0 * o.0)
