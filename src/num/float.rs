@@ -316,6 +316,11 @@ impl PlaneF64 {
         }
     }
 
+    /// The plane of the triangle `t`, indices into the points `p`.
+    pub(crate) fn of_triangle(p: &[[f64; 3]], t: [usize; 3]) -> PlaneF64 {
+        PlaneF64::new(p[t[0]], p[t[1]], p[t[2]])
+    }
+
     /// [`exact_orient3d_f64`] of the plane's corners and `d`.
     pub(crate) fn side(&self, d: [f64; 3]) -> Ordering {
         let [a, b, c] = self.corners;

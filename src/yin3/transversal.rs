@@ -248,7 +248,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     );
     // Each indexed triangle's plane (the operand with fewer near triangles), and a querying
     // triangle's once it meets a box.
-    let plane = |t: usize| PlaneF64::new(f64s[tris[t][0]], f64s[tris[t][1]], f64s[tris[t][2]]);
+    let plane = |t: usize| PlaneF64::of_triangle(&f64s, tris[t]);
     let planes: Vec<PlaneF64> = indexed.iter().map(|&t| plane(t)).collect();
     // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
     // ends it.
@@ -1072,7 +1072,7 @@ mod tests {
             .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
             .collect();
         let planes: Vec<PlaneF64> = (tris.iter())
-            .map(|t| PlaneF64::new(p[t[0]], p[t[1]], p[t[2]]))
+            .map(|&t| PlaneF64::of_triangle(&p, t))
             .collect();
         let (mut kinds, mut edge_touch, mut cross) = ([false; 5], false, false);
         for t in 0..x.tris.len() {

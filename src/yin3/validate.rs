@@ -133,7 +133,7 @@ pub(crate) fn conforming_after_moves<N: Num>(
     let planes: Vec<PlaneF64> = match N::EXACT {
         true => Vec::new(),
         false => (tris.iter())
-            .map(|t| PlaneF64::new(f64s[t[0]], f64s[t[1]], f64s[t[2]]))
+            .map(|&t| PlaneF64::of_triangle(&f64s, t))
             .collect(),
     };
     // Triangles `ti` and `ui` meet only in their shared corners (each test is symmetric).
