@@ -206,7 +206,7 @@ impl Rational {
         };
         let (m, e) = (small(n), small(d));
         if m < LIMIT && e < LIMIT {
-            return Rational(Repr::Small(if negative { -m } else { m } as i64, e as i64));
+            return lowest(if negative { -m } else { m }, e);
         }
         let sign = if negative { Sign::Minus } else { Sign::Plus };
         let value = BigRational::new_raw(
