@@ -76,27 +76,20 @@ where
     Some((round(&a.0, &ab.0)?, round(&a.1, &ab.1)?))
 }
 
-/// The arrangement of the grid `segments` (each of positive length, its ends among `points`,
-/// which are sorted and distinct; seed 002 §1.3): every segment cut at every segment end inside
-/// it, collinear stretches grouped, and for each piece the piece directly below it, as
-/// [`super::intersect::arrange`] records them. Segments whose interiors cross are reported in
-/// [`Arrangement::crossed`] (the sweep finds one if there is any; past the first, the rest of
-/// the arrangement is not valid). O(n log n + m) for n segments and m points.
-pub(crate) fn arrange_grid(points: &[G], segments: impl Iterator<Item = (G, G)>) -> Arrangement<G> {
-    let index = |g: G| {
-        points
-            .binary_search(&g)
-            .expect("the ends of grid segments are among the given points")
-    };
+/// The arrangement of the grid segments `spans` (each of positive length, given by the indices
+/// of its ends in `points`, which are sorted and distinct; seed 002 §1.3): every segment cut at
+/// every segment end inside it, collinear stretches grouped, and for each piece the piece
+/// directly below it, as [`super::intersect::arrange`] records them. Segments whose interiors
+/// cross are reported in [`Arrangement::crossed`] (the sweep finds one if there is any; past the
+/// first, the rest of the arrangement is not valid). O(n log n + m) for n segments and m points.
+pub(crate) fn arrange_grid(
+    points: &[G],
+    spans: impl Iterator<Item = (usize, usize)>,
+) -> Arrangement<G> {
     // Each segment lo → hi in the sweep order (lexicographic: the sweep line is tilted
     // infinitesimally, and a vertical segment runs from its lower end to its upper one), as
     // indices of `points`, whose order is the sweep's.
-    let span: Vec<(usize, usize)> = segments
-        .map(|(a, b)| {
-            let (i, j) = (index(a), index(b));
-            (i.min(j), i.max(j))
-        })
-        .collect();
+    let span: Vec<(usize, usize)> = spans.map(|(i, j)| (i.min(j), i.max(j))).collect();
     // The segment ends at each point, by counting: 2·segment + 1 for an upper end.
     let mut start = vec![0; points.len() + 1];
     for &(i, j) in &span {
@@ -288,7 +281,8 @@ mod tests {
             points.extend(unused);
             points.sort_unstable();
             points.dedup();
-            let got = arrange_grid(&points, segs.iter().copied());
+            let index = |g: G| points.binary_search(&g).unwrap();
+            let got = arrange_grid(&points, segs.iter().map(|&(a, b)| (index(a), index(b))));
             prop_assert_eq!(!got.crossed.is_empty(), any_crossing);
             for &(i, j) in &got.crossed {
                 prop_assert!(i < j && crossing(segs[i], segs[j], &ends));

@@ -28,33 +28,38 @@ impl<'a> HotPixels<'a> {
         }
     }
 
-    /// Appends to `out` the hot pixels that the segment `ab` meets ([`meets_pixel`]).
-    pub(crate) fn met_by(&self, a: G, b: G, out: &mut Vec<G>) {
+    /// Appends to `out` the hot pixels that the segment `ab` meets ([`meets_pixel`]), as
+    /// indices of the sorted pixels.
+    pub(crate) fn met_by(&self, a: G, b: G, out: &mut Vec<usize>) {
         // A pixel met by the segment has its centre within the segment's box (both on the grid).
         let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
         let from = self.sorted.partition_point(|c| c.0 < x0);
         let to = self.sorted.partition_point(|c| c.0 <= x1);
         if to - from <= SLAB_SCAN {
             let (lo, hi) = (a.1.min(b.1), a.1.max(b.1));
-            let meets = |c: &&G| (lo..=hi).contains(&c.1) && meets_pixel(a, b, **c);
-            out.extend(self.sorted[from..to].iter().filter(meets));
+            let meets = |&k: &usize| {
+                let c = self.sorted[k];
+                (lo..=hi).contains(&c.1) && meets_pixel(a, b, c)
+            };
+            out.extend((from..to).filter(meets));
         } else {
             let grid = self.grid.get_or_init(|| CellGrid::new(self.sorted));
-            grid.met_by(a, b, out);
+            grid.met_by(self.sorted, a, b, out);
         }
     }
 }
 
 /// Pixels in a uniform grid of square cells of side 2^`shift` grid units from `origin` (the
 /// pixels' lowest corner), about one pixel a cell, stored cell by cell (column after column,
-/// each from the bottom): the pixels of cell k are `pixels[start[k]..start[k + 1]]`.
+/// each from the bottom) as indices of the sorted pixels: the pixels of cell k are
+/// `pixels[start[k]..start[k + 1]]`.
 struct CellGrid {
     origin: G,
     shift: u32,
     columns: usize,
     rows: usize,
     start: Vec<usize>,
-    pixels: Vec<G>,
+    pixels: Vec<usize>,
 }
 
 impl CellGrid {
@@ -78,7 +83,7 @@ impl CellGrid {
             columns,
             rows,
             start: vec![0; columns * rows + 1],
-            pixels: vec![(0, 0); hot.len()],
+            pixels: vec![0; hot.len()],
         };
         for &c in hot {
             let k = grid.cell(c);
@@ -88,9 +93,9 @@ impl CellGrid {
             grid.start[k] += grid.start[k - 1];
         }
         let mut next = grid.start.clone();
-        for &c in hot {
+        for (i, &c) in hot.iter().enumerate() {
             let k = grid.cell(c);
-            grid.pixels[next[k]] = c;
+            grid.pixels[next[k]] = i;
             next[k] += 1;
         }
         grid
@@ -111,9 +116,10 @@ impl CellGrid {
         (((y - self.origin.1).max(0) >> self.shift) as usize).min(self.rows - 1)
     }
 
-    /// Appends to `out` the pixels that the segment `ab` meets ([`meets_pixel`]): those of the
-    /// cells that the segment's pixels can lie in, column by column.
-    fn met_by(&self, a: G, b: G, out: &mut Vec<G>) {
+    /// Appends to `out` the pixels (indices of `sorted`, the pixels the grid was built on) that
+    /// the segment `ab` meets ([`meets_pixel`]): those of the cells that the segment's pixels
+    /// can lie in, column by column.
+    fn met_by(&self, sorted: &[G], a: G, b: G, out: &mut Vec<usize>) {
         // A pixel met by the segment has its centre within the segment's box (both on the grid)
         // and within ½ of a point of the segment in each coordinate.
         let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
@@ -138,8 +144,9 @@ impl CellGrid {
             }
             let cells = column * self.rows + self.row_of(lo)..=column * self.rows + self.row_of(hi);
             let pixels = &self.pixels[self.start[*cells.start()]..self.start[cells.end() + 1]];
-            out.extend(pixels.iter().filter(|c| {
-                (x0..=x1).contains(&c.0) && (lo..=hi).contains(&c.1) && meets_pixel(a, b, **c)
+            out.extend(pixels.iter().filter(|&&k| {
+                let c = sorted[k];
+                (x0..=x1).contains(&c.0) && (lo..=hi).contains(&c.1) && meets_pixel(a, b, c)
             }));
         }
     }
@@ -313,6 +320,7 @@ mod tests {
             want.sort();
             let mut found = Vec::new();
             hot.met_by(a, b, &mut found);
+            let mut found: Vec<G> = found.into_iter().map(|k| sorted[k]).collect();
             found.sort();
             prop_assert_eq!(found, want);
         }

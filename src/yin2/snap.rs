@@ -17,6 +17,10 @@ use std::collections::BTreeSet;
 /// A grid segment with the operand (`0` or `1`) its piece came from.
 type Labelled = ((G, G), usize);
 
+/// A fragment of a rerouted segment: the indices of its ends among the hot pixels, with its
+/// segment's label.
+type Fragment = ((usize, usize), usize);
+
 /// The Yin set of the faces where `inside` holds, given the directed pieces of the operands'
 /// boundaries labelled by operand (`0` or `1`), after snapping them to the grid of `ctx`
 /// (float mode, [`crate::num::Tolerance`]). The whole computation runs on grid integers
@@ -135,35 +139,89 @@ struct Snap {
     segments: Vec<Labelled>,
     /// Sorted, without repeats.
     hot: Vec<G>,
+    /// The indices in `hot` of each segment's ends.
+    ends: Vec<(usize, usize)>,
     forced: Vec<BTreeSet<G>>,
 }
 
 impl Snap {
     /// The hot pixels of `segments`: endpoints and the pixels of crossings.
     fn new(segments: Vec<Labelled>) -> Snap {
-        let mut hot: Vec<G> = segments.iter().flat_map(|&((a, b), _)| [a, b]).collect();
         let grid: Vec<(G, G)> = segments.iter().map(|s| s.0).collect();
-        hot.extend(
-            grid_crossing_pairs(&grid)
-                .into_iter()
-                .map(|(i, j)| crossing_pixel(grid[i], grid[j])),
-        );
-        hot.sort_unstable();
-        hot.dedup();
+        let mut crossings: Vec<G> = grid_crossing_pairs(&grid)
+            .into_iter()
+            .map(|(i, j)| crossing_pixel(grid[i], grid[j]))
+            .collect();
+        crossings.sort_unstable();
+        // Every segment end, coded 2k (start of segment k) or 2k + 1 (its end), by point.
+        let mut coded: Vec<(G, usize)> = grid
+            .iter()
+            .enumerate()
+            .flat_map(|(k, &(a, b))| [(a, 2 * k), (b, 2 * k + 1)])
+            .collect();
+        coded.sort_unstable_by_key(|e| e.0);
+        // The ends and the crossings merged, each pixel once, and the index of every end.
+        let mut hot: Vec<G> = Vec::with_capacity(coded.len() / 2 + crossings.len());
+        let push = |hot: &mut Vec<G>, c: G| {
+            if hot.last() != Some(&c) {
+                hot.push(c);
+            }
+        };
+        let mut ends = vec![(0, 0); grid.len()];
+        let mut next = crossings.iter().peekable();
+        for (g, code) in coded {
+            while let Some(&&c) = next.peek() {
+                if c >= g {
+                    break;
+                }
+                push(&mut hot, c);
+                next.next();
+            }
+            push(&mut hot, g);
+            let end = &mut ends[code / 2];
+            *(if code % 2 == 0 {
+                &mut end.0
+            } else {
+                &mut end.1
+            }) = hot.len() - 1;
+        }
+        for &c in next {
+            push(&mut hot, c);
+        }
         let forced = vec![BTreeSet::new(); segments.len()];
         Snap {
             segments,
             hot,
+            ends,
             forced,
         }
     }
 
-    /// The fragments of all segments (with their labels) and the segment each comes from.
-    fn fragments(&self) -> (Vec<Labelled>, Vec<usize>) {
+    /// Finds the indices in `hot` of every segment's ends again (after pixels were added).
+    fn locate_ends(&mut self) {
+        let hot = &self.hot;
+        let index = |g: G| {
+            hot.binary_search(&g)
+                .expect("the ends of the segments are hot pixels")
+        };
+        self.ends = self
+            .segments
+            .iter()
+            .map(|&((a, b), _)| (index(a), index(b)))
+            .collect();
+    }
+
+    /// The fragments of all segments and the segment each comes from.
+    fn fragments(&self) -> (Vec<Fragment>, Vec<usize>) {
         let pixels = HotPixels::new(&self.hot);
         let (mut fragments, mut owner, mut path) = (Vec::new(), Vec::new(), Vec::new());
         for (k, &(s, label)) in self.segments.iter().enumerate() {
-            reroute(s, &pixels, &self.forced[k], &mut path);
+            let route = Route {
+                s,
+                ends: self.ends[k],
+                sorted: &self.hot,
+            };
+            route.through(&pixels, &self.forced[k], &mut path);
             for w in path.windows(2) {
                 owner.push(k);
                 fragments.push(((w[0], w[1]), label));
@@ -176,29 +234,36 @@ impl Snap {
     /// hot and are forced into both segments' paths.
     fn force(
         &mut self,
-        fragments: &[Labelled],
+        fragments: &[Fragment],
         owner: &[usize],
         crossed: &[(usize, usize)],
     ) -> Result<(), YinError> {
+        let hot = &self.hot;
+        let grid = |f: &Fragment| (hot[f.0 .0], hot[f.0 .1]);
+        let pixels: Vec<(G, [usize; 2])> = crossed
+            .iter()
+            .map(|&(i, j)| {
+                let c = crossing_pixel(grid(&fragments[i]), grid(&fragments[j]));
+                (c, [owner[i], owner[j]])
+            })
+            .collect();
         let mut progress = false;
-        for &(i, j) in crossed {
-            let c = crossing_pixel(fragments[i].0, fragments[j].0);
+        for &(c, segments) in &pixels {
             if let Err(at) = self.hot.binary_search(&c) {
                 self.hot.insert(at, c);
                 progress = true;
             }
-            for k in [owner[i], owner[j]] {
+            for k in segments {
                 progress |= inside_projection(self.segments[k].0, c) && self.forced[k].insert(c);
             }
         }
         if progress {
+            self.locate_ends();
             return Ok(());
         }
         // Cannot happen for a crossing strictly inside two fragments; never loop forever.
-        let (i, j) = crossed[0];
-        let c = crossing_pixel(fragments[i].0, fragments[j].0);
         Err(YinError::SnapStalled {
-            point: format!("{c:?}"),
+            point: format!("{:?}", pixels[0].0),
         })
     }
 }
@@ -211,20 +276,38 @@ fn inside_projection(s: (G, G), c: G) -> bool {
     t > 0 && t < d.0 * d.0 + d.1 * d.1
 }
 
-/// The path of the segment `s = ab` rerouted through the centres of the hot pixels it meets and
-/// through the `forced` centres, in order along `s` (centres projecting strictly inside `s`
-/// only), into `path` (from `a` to `b`, no point repeated in a row).
-fn reroute(s: (G, G), hot: &HotPixels<'_>, forced: &BTreeSet<G>, path: &mut Vec<G>) {
-    let (a, b) = s;
-    path.clear();
-    hot.met_by(a, b, path);
-    path.extend(forced);
-    path.retain(|&c| c != a && c != b && inside_projection(s, c));
-    let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
-    path.sort_unstable_by_key(|c| ((c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1, *c));
-    path.dedup();
-    path.insert(0, a);
-    path.push(b);
+/// A segment `s` to reroute, with the indices of its ends in the `sorted` hot pixels.
+struct Route<'a> {
+    s: (G, G),
+    ends: (usize, usize),
+    sorted: &'a [G],
+}
+
+impl Route<'_> {
+    /// The path of the segment `s = ab` rerouted through the centres of the hot pixels it meets
+    /// and through the `forced` centres, in order along `s` (centres projecting strictly inside
+    /// `s` only), into `path` as indices of the hot pixels (from `a` to `b`, no point repeated
+    /// in a row).
+    fn through(&self, hot: &HotPixels<'_>, forced: &BTreeSet<G>, path: &mut Vec<usize>) {
+        let (s, sorted, ends) = (self.s, self.sorted, self.ends);
+        let (a, b) = s;
+        path.clear();
+        hot.met_by(a, b, path);
+        path.extend(forced.iter().map(|c| {
+            sorted
+                .binary_search(c)
+                .expect("forced pixels are hot pixels")
+        }));
+        path.retain(|&k| k != ends.0 && k != ends.1 && inside_projection(s, sorted[k]));
+        if path.len() > 1 {
+            let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
+            let along = |c: G| (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
+            path.sort_unstable_by_key(|&k| (along(sorted[k]), k));
+            path.dedup();
+        }
+        path.insert(0, ends.0);
+        path.push(ends.1);
+    }
 }
 
 #[cfg(test)]
@@ -232,7 +315,7 @@ mod tests {
     use super::*;
 
     /// The fragments of `snap` and the pairs of them that its arrangement reports crossing.
-    fn crossed(snap: &Snap) -> (Vec<Labelled>, Vec<usize>, Vec<(usize, usize)>) {
+    fn crossed(snap: &Snap) -> (Vec<Fragment>, Vec<usize>, Vec<(usize, usize)>) {
         let (fragments, owner) = snap.fragments();
         let crossed = arrange_grid(&snap.hot, fragments.iter().map(|f| f.0)).crossed;
         (fragments, owner, crossed)
@@ -258,6 +341,7 @@ mod tests {
         // `force` adds their pixels until none is left (one may do: the third segment passes
         // through the first crossing's pixel).
         snap.hot.retain(|c| !pixels.contains(c));
+        snap.locate_ends();
         let mut rounds = 0;
         loop {
             let (fragments, owner, crossed) = crossed(&snap);
