@@ -121,28 +121,34 @@ pub(crate) fn arrange_grid(
         if codes.is_empty() {
             continue;
         }
-        if let &[x, y] = codes {
-            let (ended, started) = if x % 2 == 1 { (x, y) } else { (y, x) };
-            if ended % 2 == 1 && started % 2 == 0 && sweep.pass(p, stamp, ended / 2, started / 2) {
-                stamp += 1;
-                continue;
-            }
-        }
         old.clear();
         next.clear();
         for &code in codes {
             if code % 2 == 1 {
-                sweep.status.remove(code / 2);
                 old.push(code / 2);
             } else {
                 next.push(code / 2);
             }
+        }
+        if old.len() == next.len()
+            && old.len() <= PASS_MOST
+            && sweep.pass(p, stamp, &old, &mut next)
+        {
+            stamp += 1;
+            continue;
+        }
+        for &e in &old {
+            sweep.status.remove(e);
         }
         sweep.event(p, stamp, &mut old, &mut next);
         stamp += 1;
     }
     sweep.record.finish()
 }
+
+/// The most segments that may end (and start) at an event for [`GridSweep::pass`] to try
+/// replacing them in place.
+const PASS_MOST: usize = 4;
 
 /// The state of [`arrange_grid`]'s sweep.
 struct GridSweep<'a> {
@@ -189,23 +195,46 @@ impl GridSweep<'_> {
         self.record.open(p, next, lower, same);
     }
 
-    /// Event `p`, numbered `stamp`, where only segment `ended` ends and only `started` starts
-    /// (a vertex of one curve, the common case): if no other segment passes through `p`,
-    /// `started` takes `ended`'s place in the status (the order of [`GridSweep::event`], without
-    /// searching it) and true; else nothing is done and false.
-    fn pass(&mut self, p: G, stamp: usize, ended: usize, started: usize) -> bool {
-        let seg = self.seg;
-        let (lower, upper) = (self.status.before(ended), self.status.after(ended));
-        // The segments through p are neighbours in the status, and `ended` is one of them.
+    /// Event `p`, numbered `stamp`, where the segments `ended` end and as many segments
+    /// `started` start (a vertex of one curve, or where curves touch, the common cases): if the
+    /// ended ones are neighbours in the status and no other segment passes through `p`, the
+    /// started ones take their places in the status in the order of [`GridSweep::event`]
+    /// (without searching it), and true; else nothing is done and false.
+    fn pass(&mut self, p: G, stamp: usize, ended: &[usize], started: &mut [usize]) -> bool {
+        let (seg, status) = (self.seg, &self.status);
+        let ends_here = |t: usize| t != NIL && ended.contains(&t);
+        let (mut low, mut lower) = (ended[0], status.before(ended[0]));
+        while ends_here(lower) {
+            (low, lower) = (lower, status.before(lower));
+        }
+        // The ended segments bottom to top.
+        let mut order = [NIL; PASS_MOST];
+        order[0] = low;
+        let mut upper = status.after(low);
+        for slot in order.iter_mut().take(ended.len()).skip(1) {
+            if !ends_here(upper) {
+                return false;
+            }
+            *slot = upper;
+            upper = status.after(upper);
+        }
+        // The segments through p are neighbours in the status, and the ended ones are among them.
         let through = |t: usize| t != NIL && orient_g(seg[t].0, seg[t].1, p) == Ordering::Equal;
         if through(lower) || through(upper) {
             return false;
         }
-        self.status.replace(ended, started);
-        self.record.close(&[ended], stamp);
-        self.check(lower, started);
-        self.check(started, upper);
-        self.record.open(p, &[started], lower, |_| false);
+        let turn = |a: usize, b: usize| orient_g(p, seg[a].1, seg[b].1);
+        if started.len() > 1 {
+            started.sort_unstable_by(|&a, &b| turn(a, b).reverse().then(a.cmp(&b)));
+        }
+        for (&old, &new) in order.iter().zip(started.iter()) {
+            self.status.replace(old, new);
+        }
+        self.record.close(ended, stamp);
+        self.check(lower, started[0]);
+        self.check(started[started.len() - 1], upper);
+        let same = |k: usize| turn(started[k - 1], started[k]) == Ordering::Equal;
+        self.record.open(p, started, lower, same);
         true
     }
 
