@@ -6,13 +6,13 @@
 use super::grid_arrange::{cross_properly, unit, G};
 use super::intersect::exact_image_pairs;
 
-/// The pairs `i < j` of `segments` whose interiors cross at one point: O(n log n + X) for X
-/// pairs of boxes whose x-ranges overlap, or, once X passes [`SCANS_PER_SEGMENT`] per segment
-/// (long slanted segments side by side, where X grows like n²), O((n + I) log n) for I meeting
-/// pairs.
-pub(crate) fn grid_crossing_pairs(segments: &[(G, G)]) -> Vec<(usize, usize)> {
+/// The pairs `i < j` of `segments` whose interiors cross at one point, given the segments in
+/// the order of their left sides (`by_left`): O(n + X) for X pairs of boxes whose x-ranges
+/// overlap, or, once X passes [`SCANS_PER_SEGMENT`] per segment (long slanted segments side by
+/// side, where X grows like n²), O((n + I) log n) for I meeting pairs.
+pub(crate) fn grid_crossing_pairs(segments: &[(G, G)], by_left: &[usize]) -> Vec<(usize, usize)> {
     let budget = SCANS_PER_SEGMENT * segments.len() + 4096;
-    box_pairs(segments, budget).unwrap_or_else(|| swept_pairs(segments))
+    box_pairs(segments, by_left, budget).unwrap_or_else(|| swept_pairs(segments))
 }
 
 /// The crossing pairs among the meeting pairs that the Bentley–Ottmann sweep finds (a pair
@@ -37,15 +37,17 @@ const SCANS_PER_SEGMENT: usize = 256;
 /// boxes sorted by their left side, each tested against the boxes still open at it that can
 /// meet it in y — the open boxes at most as high as nine in ten boxes kept sorted by their
 /// bottom (those that meet start at most that height below the new box's bottom), the taller
-/// ones all; `None` once more than `budget` open boxes have been scanned.
-fn box_pairs(segments: &[(G, G)], budget: usize) -> Option<Vec<(usize, usize)>> {
+/// ones all; `None` once more than `budget` open boxes have been scanned. The segments come
+/// `by_left`, in the order of their boxes' left sides.
+fn box_pairs(segments: &[(G, G)], by_left: &[usize], budget: usize) -> Option<Vec<(usize, usize)>> {
     // (x from, x to, y from, y to, segment), by x from.
-    let mut boxes: Vec<(i64, i64, i64, i64, usize)> = segments
+    let boxes: Vec<(i64, i64, i64, i64, usize)> = by_left
         .iter()
-        .enumerate()
-        .map(|(i, &(a, b))| (a.0.min(b.0), a.0.max(b.0), a.1.min(b.1), a.1.max(b.1), i))
+        .map(|&i| {
+            let (a, b) = segments[i];
+            (a.0.min(b.0), a.0.max(b.0), a.1.min(b.1), a.1.max(b.1), i)
+        })
         .collect();
-    boxes.sort_unstable_by_key(|b| b.0);
     let mut heights: Vec<i64> = boxes.iter().map(|b| b.3 - b.2).collect();
     let low = match heights.len() {
         0 => 0,
@@ -118,7 +120,9 @@ mod tests {
         ) {
             let segs: Vec<(G, G)> = drawn.into_iter().filter(|s| s.0 != s.1).collect();
             let want = brute(&segs);
-            let mut got = grid_crossing_pairs(&segs);
+            let mut by_left: Vec<usize> = (0..segs.len()).collect();
+            by_left.sort_by_key(|&k| segs[k].0 .0.min(segs[k].1 .0));
+            let mut got = grid_crossing_pairs(&segs, &by_left);
             got.sort_unstable();
             prop_assert_eq!(&got, &want);
             let mut fallback = swept_pairs(&segs);

@@ -148,45 +148,42 @@ impl Snap {
     /// The hot pixels of `segments`: endpoints and the pixels of crossings.
     fn new(segments: Vec<Labelled>) -> Snap {
         let grid: Vec<(G, G)> = segments.iter().map(|s| s.0).collect();
-        let mut crossings: Vec<G> = grid_crossing_pairs(&grid)
+        let (vertices, mut ends) = rank_ends(&grid);
+        // The segments by their left side: by their lower end in the order of the vertices,
+        // by counting.
+        let mut slot = vec![0; vertices.len() + 1];
+        for &(i, j) in &ends {
+            slot[i.min(j) + 1] += 1;
+        }
+        for r in 1..slot.len() {
+            slot[r] += slot[r - 1];
+        }
+        let mut by_left = vec![0; grid.len()];
+        for (k, &(i, j)) in ends.iter().enumerate() {
+            by_left[slot[i.min(j)]] = k;
+            slot[i.min(j)] += 1;
+        }
+        let mut crossings: Vec<G> = grid_crossing_pairs(&grid, &by_left)
             .into_iter()
             .map(|(i, j)| crossing_pixel(grid[i], grid[j]))
             .collect();
         crossings.sort_unstable();
-        // Every segment end, coded 2k (start of segment k) or 2k + 1 (its end), by point.
-        let mut coded: Vec<(G, usize)> = grid
-            .iter()
-            .enumerate()
-            .flat_map(|(k, &(a, b))| [(a, 2 * k), (b, 2 * k + 1)])
-            .collect();
-        coded.sort_unstable_by_key(|e| e.0);
-        // The ends and the crossings merged, each pixel once, and the index of every end.
-        let mut hot: Vec<G> = Vec::with_capacity(coded.len() / 2 + crossings.len());
-        let push = |hot: &mut Vec<G>, c: G| {
-            if hot.last() != Some(&c) {
+        crossings.dedup();
+        // The vertices and the crossings merged, each pixel once, and where each vertex went.
+        let mut hot: Vec<G> = Vec::with_capacity(vertices.len() + crossings.len());
+        let mut moved = Vec::with_capacity(vertices.len());
+        let mut next = crossings.iter().peekable();
+        for &v in &vertices {
+            while let Some(&c) = next.next_if(|&&c| c < v) {
                 hot.push(c);
             }
-        };
-        let mut ends = vec![(0, 0); grid.len()];
-        let mut next = crossings.iter().peekable();
-        for (g, code) in coded {
-            while let Some(&&c) = next.peek() {
-                if c >= g {
-                    break;
-                }
-                push(&mut hot, c);
-                next.next();
-            }
-            push(&mut hot, g);
-            let end = &mut ends[code / 2];
-            *(if code % 2 == 0 {
-                &mut end.0
-            } else {
-                &mut end.1
-            }) = hot.len() - 1;
+            next.next_if_eq(&&v);
+            moved.push(hot.len());
+            hot.push(v);
         }
-        for &c in next {
-            push(&mut hot, c);
+        hot.extend(next);
+        for end in &mut ends {
+            *end = (moved[end.0], moved[end.1]);
         }
         let forced = vec![BTreeSet::new(); segments.len()];
         Snap {
@@ -266,6 +263,40 @@ impl Snap {
             point: format!("{:?}", pixels[0].0),
         })
     }
+}
+
+/// The distinct ends of the grid `segments`, sorted, and the indices in them of every segment's
+/// ends. A segment's end that is the next one's start (along a curve) is not sorted again.
+fn rank_ends(segments: &[(G, G)]) -> (Vec<G>, Vec<(usize, usize)>) {
+    let shared = |k: usize| segments.get(k + 1).is_some_and(|s| s.0 == segments[k].1);
+    // Every start, coded 2k for segment k, and every end not shared, coded 2k + 1.
+    let mut coded: Vec<(G, usize)> = Vec::with_capacity(segments.len() + segments.len() / 4);
+    for (k, &(a, b)) in segments.iter().enumerate() {
+        coded.push((a, 2 * k));
+        if !shared(k) {
+            coded.push((b, 2 * k + 1));
+        }
+    }
+    coded.sort_unstable_by_key(|e| e.0);
+    let mut vertices: Vec<G> = Vec::with_capacity(coded.len());
+    let mut ends = vec![(0, 0); segments.len()];
+    for (g, code) in coded {
+        if vertices.last() != Some(&g) {
+            vertices.push(g);
+        }
+        let end = &mut ends[code / 2];
+        *(if code % 2 == 0 {
+            &mut end.0
+        } else {
+            &mut end.1
+        }) = vertices.len() - 1;
+    }
+    for k in (0..segments.len()).rev() {
+        if shared(k) {
+            ends[k].1 = ends[k + 1].0;
+        }
+    }
+    (vertices, ends)
 }
 
 /// True if `c` projects strictly inside the segment `s`.
