@@ -28,25 +28,52 @@ impl<'a> HotPixels<'a> {
         }
     }
 
-    /// Appends to `out` the hot pixels that the segment `ab` meets ([`meets_pixel`]), as
-    /// indices of the sorted pixels.
-    pub(crate) fn met_by(&self, a: G, b: G, out: &mut Vec<usize>) {
-        // A pixel met by the segment has its centre within the segment's box (both on the grid).
-        let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
-        let from = self.sorted.partition_point(|c| c.0 < x0);
-        let to = self.sorted.partition_point(|c| c.0 <= x1);
+    /// Appends to `out` the hot pixels other than its ends that the segment `ab` meets
+    /// ([`meets_pixel`]), as indices of the sorted pixels; `ends` are the indices of `a` and `b`.
+    pub(crate) fn met_by(&self, (a, b): (G, G), ends: (usize, usize), out: &mut Vec<usize>) {
+        // A pixel met by the segment has its centre within the segment's box (both on the grid):
+        // its x-slab runs from the lower end's index down to the first pixel of its x, and from
+        // the upper end's index up to the last pixel of its x.
+        let sorted = self.sorted;
+        let (lower, upper) = (ends.0.min(ends.1), ends.0.max(ends.1));
+        let (x0, x1) = (sorted[lower].0, sorted[upper].0);
+        let from = gallop(lower + 1, |k| sorted[lower - k].0 < x0).map_or(0, |k| lower - k + 1);
+        let to = gallop(sorted.len() - upper, |k| sorted[upper + k].0 > x1)
+            .map_or(sorted.len(), |k| upper + k);
+        let own = |k: usize| k == ends.0 || k == ends.1;
         if to - from <= SLAB_SCAN {
             let (lo, hi) = (a.1.min(b.1), a.1.max(b.1));
             let meets = |&k: &usize| {
-                let c = self.sorted[k];
-                (lo..=hi).contains(&c.1) && meets_pixel(a, b, c)
+                let c = sorted[k];
+                (lo..=hi).contains(&c.1) && !own(k) && meets_pixel(a, b, c)
             };
             out.extend((from..to).filter(meets));
         } else {
-            let grid = self.grid.get_or_init(|| CellGrid::new(self.sorted));
-            grid.met_by(self.sorted, a, b, out);
+            let grid = self.grid.get_or_init(|| CellGrid::new(sorted));
+            grid.met_by(sorted, a, b, out);
+            out.retain(|&k| !own(k));
         }
     }
+}
+
+/// The least `k` in `1..n` with `past(k)`, where `past` is monotone (false, then true), by
+/// doubling steps and then bisecting: O(log k) calls; `None` if there is none.
+fn gallop(n: usize, past: impl Fn(usize) -> bool) -> Option<usize> {
+    let mut step = 1;
+    while step < n && !past(step) {
+        step *= 2;
+    }
+    // Every k up to step / 2 is not past; step is, unless it reached n.
+    let (mut lo, mut hi) = (step / 2 + 1, step.min(n));
+    while lo < hi {
+        let mid = (lo + hi) / 2;
+        if past(mid) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    (lo < n).then_some(lo)
 }
 
 /// Pixels in a uniform grid of square cells of side 2^`shift` grid units from `origin` (the
@@ -298,11 +325,12 @@ mod tests {
             }
         }
 
-        /// The hot pixels a segment meets, found by walking the grid, are exactly the pixels
-        /// that `meets_pixel` accepts among all of them: segments through corners and along
-        /// pixel sides, ending inside or outside the pixels' box, vertical and horizontal;
-        /// from one pixel to hundreds (cells of one unit to many), at small coordinates and
-        /// far from 0 (spread by up to 2³⁰ and shifted by up to 2⁴⁸).
+        /// The hot pixels a segment meets, found by scanning its slab or by walking the grid,
+        /// are exactly the pixels other than its ends that `meets_pixel` accepts: segments
+        /// through corners and along pixel sides, vertical and horizontal, among pixels in
+        /// columns (the slab's ends found by galloping past pixels of the ends' x); from one
+        /// pixel to hundreds (cells of one unit to many), at small coordinates and far from 0
+        /// (spread by up to 2³⁰ and shifted by up to 2⁴⁸).
         #[test]
         fn hot_pixels_met_by_a_segment_are_the_pixels_it_meets(
             a in (-2i64..40, -2i64..40),
@@ -313,13 +341,16 @@ mod tests {
         ) {
             let far = |p: G| (p.0 * spread + shift, p.1 * spread - shift);
             let (a, b) = (far(a), far(b));
-            let sorted: Vec<G> = pixels.iter().map(|&c| far(c)).collect();
+            let mut sorted: Vec<G> = pixels.iter().map(|&c| far(c)).collect();
+            sorted.extend([a, b]);
+            sorted.sort();
+            sorted.dedup();
             let hot = HotPixels::new(&sorted);
-            let met = |c: &G| meets_pixel(a, b, *c);
-            let mut want: Vec<G> = sorted.iter().copied().filter(met).collect();
-            want.sort();
+            let met = |c: &G| *c != a && *c != b && meets_pixel(a, b, *c);
+            let want: Vec<G> = sorted.iter().copied().filter(met).collect();
+            let index = |g: G| sorted.binary_search(&g).unwrap();
             let mut found = Vec::new();
-            hot.met_by(a, b, &mut found);
+            hot.met_by((a, b), (index(a), index(b)), &mut found);
             let mut found: Vec<G> = found.into_iter().map(|k| sorted[k]).collect();
             found.sort();
             prop_assert_eq!(found, want);

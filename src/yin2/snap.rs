@@ -323,13 +323,13 @@ impl Route<'_> {
         let (s, sorted, ends) = (self.s, self.sorted, self.ends);
         let (a, b) = s;
         path.clear();
-        hot.met_by(a, b, path);
+        hot.met_by(s, ends, path);
         path.extend(forced.iter().map(|c| {
             sorted
                 .binary_search(c)
                 .expect("forced pixels are hot pixels")
         }));
-        path.retain(|&k| k != ends.0 && k != ends.1 && inside_projection(s, sorted[k]));
+        path.retain(|&k| inside_projection(s, sorted[k]));
         if path.len() > 1 {
             let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
             let along = |c: G| (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
