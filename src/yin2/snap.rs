@@ -109,7 +109,7 @@ impl<N: Num> Frame<N> {
     /// commutes with translations by the grid), relative to the origin: exact, as every
     /// coordinate is at most 2⁵¹ grid steps from 0 and g is a power of two.
     fn to_grid(&self, p: &Point<N>) -> G {
-        let k = |v: &N| (v.to_f64() / self.g + 0.5).floor() as i64;
+        let k = |v: &N| floor_i64(v.to_f64() / self.g + 0.5);
         (k(&p.x) - self.origin.0, k(&p.y) - self.origin.1)
     }
 
@@ -120,6 +120,13 @@ impl<N: Num> Frame<N> {
         };
         Point::new(c(&p.x, self.origin.0), c(&p.y, self.origin.1))
     }
+}
+
+/// `t.floor() as i64` (saturating, 0 for NaN) without a call to libm's `floor`: truncation,
+/// one less where that rounded a negative fraction up.
+fn floor_i64(t: f64) -> i64 {
+    let i = t as i64;
+    i.saturating_sub(i64::from(i as f64 > t))
 }
 
 /// Whether a face of winding `w` lies in a Yin set bounded by closed cycles: positive winding,
@@ -344,6 +351,18 @@ impl Route<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn floor_without_libm_is_floor() {
+        let cases = [
+            0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.5, -2.5, 1e-300, -1e-300, 4503599627370495.5,
+            -4503599627370495.5, 9007199254740993.0, -9007199254740993.0, 9.3e18, -9.3e18,
+            1e300, -1e300, f64::INFINITY, f64::NEG_INFINITY, f64::NAN,
+        ];
+        for t in cases {
+            assert_eq!(floor_i64(t), t.floor() as i64, "{t}");
+        }
+    }
 
     /// The fragments of `snap` and the pairs of them that its arrangement reports crossing.
     fn crossed(snap: &Snap) -> (Vec<Fragment>, Vec<usize>, Vec<(usize, usize)>) {
