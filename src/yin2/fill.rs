@@ -105,8 +105,7 @@ fn fill_edges<N: Num>(
     inside: impl Fn(i64) -> bool,
 ) -> Result<YinSet2<N>, YinError> {
     if N::grid(&ctx).is_some() {
-        let labelled: Vec<(Edge<N>, usize)> = edges.into_iter().map(|e| (e, 0)).collect();
-        return regularize(&labelled, ctx, |w| inside(w[0]));
+        return regularize(edges.iter().map(|(a, b)| (a, b, 0)), ctx, |w| inside(w[0]));
     }
     fill_exact(&edges, |_| 1, ctx, inside)
 }

@@ -41,16 +41,13 @@ pub(crate) fn overlay<N: Num>(
     let (ua, ub) = (!a.bounded, !b.bounded);
     let inside = |w: Winding| keep(inside_set(w[0], ua), inside_set(w[1], ub));
     if N::grid(&ctx).is_some() {
-        let pieces: Vec<(Edge<N>, usize)> = [a, b]
-            .iter()
-            .enumerate()
-            .flat_map(|(label, s)| {
-                s.edges()
-                    .into_iter()
-                    .map(move |(p, q)| ((p.clone(), q.clone()), label))
-            })
-            .collect();
-        return regularize(&pieces, ctx, inside);
+        let pieces = [a, b].into_iter().enumerate().flat_map(|(label, s)| {
+            s.curves
+                .iter()
+                .flat_map(|c| c.edges())
+                .map(move |(p, q)| (p, q, label))
+        });
+        return regularize(pieces, ctx, inside);
     }
     let na = a.curves.iter().map(|c| c.len()).sum::<usize>();
     let edges: Vec<Edge<N>> = a

@@ -7,12 +7,14 @@ use super::fill::fill_arranged;
 use super::grid_arrange::{arrange_grid, crossing_pixel, unit, G};
 use super::grid_pairs::grid_crossing_pairs;
 use super::hot_pixels::HotPixels;
-use super::intersect::Edge;
 use super::set::YinSet2;
 use super::winding::{Pair, Winding};
 use crate::kernel::Point;
 use crate::num::{Float, Num, Tolerance};
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// A directed piece of a boundary, from its first point to its second, with its label.
+pub(crate) type Piece<'a, N> = (&'a Point<N>, &'a Point<N>, usize);
 
 /// A grid segment with the operand (`0` or `1`) its piece came from.
 type Labelled = ((G, G), usize);
@@ -27,18 +29,19 @@ type Fragment = ((usize, usize), usize);
 /// relative to a local origin ([`Frame`]), with exact integer-valued predicates; only the
 /// result's vertices are mapped back to coordinates. Every piece set must be a union of closed
 /// cycles, so that winding numbers are defined.
-pub(crate) fn regularize<N: Num>(
-    pieces: &[(Edge<N>, usize)],
+pub(crate) fn regularize<'a, N: Num>(
+    pieces: impl Iterator<Item = Piece<'a, N>> + Clone,
     ctx: N::Ctx,
     inside: impl Fn(Winding) -> bool,
 ) -> Result<YinSet2<N>, YinError> {
-    let frame = Frame::of(pieces.iter().flat_map(|((a, b), _)| [a, b]), ctx);
+    let frame = Frame::of(pieces.clone().flat_map(|(a, b, _)| [a, b]), ctx);
     let ctx = frame.ctx;
-    let segments: Vec<Labelled> = pieces
-        .iter()
-        .map(|((a, b), l)| ((frame.to_grid(a), frame.to_grid(b)), *l))
-        .filter(|((a, b), _)| a != b)
-        .collect();
+    let mut segments: Vec<Labelled> = Vec::with_capacity(pieces.clone().count());
+    segments.extend(
+        pieces
+            .map(|(a, b, l)| ((frame.to_grid(a), frame.to_grid(b)), l))
+            .filter(|((a, b), _)| a != b),
+    );
     // Snapped fragments do not cross: their arrangement is swept on the grid integers with
     // exact integer orientations. Where two still cross (the arrangement reports them), their
     // crossing pixel is added and the segments rerouted.
@@ -148,7 +151,8 @@ struct Snap {
     hot: Vec<G>,
     /// The indices in `hot` of each segment's ends.
     ends: Vec<(usize, usize)>,
-    forced: Vec<BTreeSet<G>>,
+    /// The pixels forced into the paths of segments, by segment (few segments have any).
+    forced: BTreeMap<usize, BTreeSet<G>>,
 }
 
 impl Snap {
@@ -192,12 +196,11 @@ impl Snap {
         for end in &mut ends {
             *end = (moved[end.0], moved[end.1]);
         }
-        let forced = vec![BTreeSet::new(); segments.len()];
         Snap {
             segments,
             hot,
             ends,
-            forced,
+            forced: BTreeMap::new(),
         }
     }
 
@@ -218,14 +221,17 @@ impl Snap {
     /// The fragments of all segments and the segment each comes from.
     fn fragments(&self) -> (Vec<Fragment>, Vec<usize>) {
         let pixels = HotPixels::new(&self.hot);
-        let (mut fragments, mut owner, mut path) = (Vec::new(), Vec::new(), Vec::new());
+        // Most segments are one fragment.
+        let most = self.segments.len() + self.segments.len() / 4;
+        let (mut fragments, mut owner) = (Vec::with_capacity(most), Vec::with_capacity(most));
+        let mut path = Vec::new();
         for (k, &(s, label)) in self.segments.iter().enumerate() {
             let route = Route {
                 s,
                 ends: self.ends[k],
                 sorted: &self.hot,
             };
-            route.through(&pixels, &self.forced[k], &mut path);
+            route.through(&pixels, self.forced.get(&k), &mut path);
             for w in path.windows(2) {
                 owner.push(k);
                 fragments.push(((w[0], w[1]), label));
@@ -258,7 +264,8 @@ impl Snap {
                 progress = true;
             }
             for k in segments {
-                progress |= inside_projection(self.segments[k].0, c) && self.forced[k].insert(c);
+                progress |= inside_projection(self.segments[k].0, c)
+                    && self.forced.entry(k).or_default().insert(c);
             }
         }
         if progress {
@@ -326,12 +333,12 @@ impl Route<'_> {
     /// and through the `forced` centres, in order along `s` (centres projecting strictly inside
     /// `s` only), into `path` as indices of the hot pixels (from `a` to `b`, no point repeated
     /// in a row).
-    fn through(&self, hot: &HotPixels<'_>, forced: &BTreeSet<G>, path: &mut Vec<usize>) {
+    fn through(&self, hot: &HotPixels<'_>, forced: Option<&BTreeSet<G>>, path: &mut Vec<usize>) {
         let (s, sorted, ends) = (self.s, self.sorted, self.ends);
         let (a, b) = s;
         path.clear();
         hot.met_by(s, ends, path);
-        path.extend(forced.iter().map(|c| {
+        path.extend(forced.into_iter().flatten().map(|c| {
             sorted
                 .binary_search(c)
                 .expect("forced pixels are hot pixels")
@@ -355,9 +362,27 @@ mod tests {
     #[test]
     fn floor_without_libm_is_floor() {
         let cases = [
-            0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.5, -2.5, 1e-300, -1e-300, 4503599627370495.5,
-            -4503599627370495.5, 9007199254740993.0, -9007199254740993.0, 9.3e18, -9.3e18,
-            1e300, -1e300, f64::INFINITY, f64::NEG_INFINITY, f64::NAN,
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            2.5,
+            -2.5,
+            1e-300,
+            -1e-300,
+            4503599627370495.5,
+            -4503599627370495.5,
+            9007199254740993.0,
+            -9007199254740993.0,
+            9.3e18,
+            -9.3e18,
+            1e300,
+            -1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
         ];
         for t in cases {
             assert_eq!(floor_i64(t), t.floor() as i64, "{t}");

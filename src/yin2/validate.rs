@@ -39,12 +39,9 @@ impl<N: Num> YinSet2<N> {
         if N::grid(&ctx).is_some() {
             // Float mode: the set the curves bound, snap-rounded to the grid of ε.
             let unbounded = !spadjor.bounded;
-            let edges: Vec<(Edge<N>, usize)> = spadjor
-                .edges()
-                .into_iter()
-                .map(|(a, b)| ((a.clone(), b.clone()), 0))
-                .collect();
-            let y = regularize(&edges, ctx, |w| inside_set(w[0], unbounded))?;
+            let pieces = spadjor.curves.iter().flat_map(|c| c.edges());
+            let pieces = pieces.map(|(a, b)| (a, b, 0));
+            let y = regularize(pieces, ctx, |w| inside_set(w[0], unbounded))?;
             return not_collapsed(y);
         }
         Ok(YinSet2::from_spadjor(spadjor, ctx))
