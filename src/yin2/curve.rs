@@ -38,7 +38,7 @@ impl<N: Num> Curve<N> {
     }
 
     /// The directed edges `(v_k, v_{k+1})`, closing edge last.
-    pub fn edges(&self) -> impl Iterator<Item = (&Point<N>, &Point<N>)> + Clone {
+    pub fn edges(&self) -> impl Iterator<Item = (&Point<N>, &Point<N>)> {
         let n = self.vertices.len();
         (0..n).map(move |k| (&self.vertices[k], &self.vertices[(k + 1) % n]))
     }

@@ -91,23 +91,13 @@ impl<N: Num> YinSet2<N> {
             }
         }
         let ctx = resolve_for(&rings, ctx)?;
-        fill_edges(ring_edges(&rings), ctx, |w| rule.inside(w))
+        if N::grid(&ctx).is_some() {
+            // Float mode: the snap rounding applies the rule to the snapped arrangement.
+            let labelled = rings.iter().map(|ring| (&ring[..], 0));
+            return regularize(labelled, ctx, |w| rule.inside(w[0]));
+        }
+        fill_exact(&ring_edges(&rings), |_| 1, ctx, |w| rule.inside(w))
     }
-}
-
-/// The regularized set {p off the edges : inside(w(p))} for w the winding number of the
-/// directed `edges` (seed 000 Def. 3.1, regularization): [`fill_exact`] with multiplicity 1
-/// per edge; float mode (a context with an ε-grid) hands the edges to the snap rounding of the
-/// `snap` module, which applies `inside` to the snapped arrangement.
-fn fill_edges<N: Num>(
-    edges: Vec<Edge<N>>,
-    ctx: N::Ctx,
-    inside: impl Fn(i64) -> bool,
-) -> Result<YinSet2<N>, YinError> {
-    if N::grid(&ctx).is_some() {
-        return regularize(edges.iter().map(|(a, b)| (a, b, 0)), ctx, |w| inside(w[0]));
-    }
-    fill_exact(&edges, |_| 1, ctx, inside)
 }
 
 /// The regularized set {p off the edges : inside(w(p))} for w the winding number of the

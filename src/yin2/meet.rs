@@ -41,13 +41,11 @@ pub(crate) fn overlay<N: Num>(
     let (ua, ub) = (!a.bounded, !b.bounded);
     let inside = |w: Winding| keep(inside_set(w[0], ua), inside_set(w[1], ub));
     if N::grid(&ctx).is_some() {
-        let pieces = [a, b].into_iter().enumerate().flat_map(|(label, s)| {
-            s.curves
-                .iter()
-                .flat_map(|c| c.edges())
-                .map(move |(p, q)| (p, q, label))
-        });
-        return regularize(pieces, ctx, inside);
+        let rings = [a, b]
+            .into_iter()
+            .enumerate()
+            .flat_map(|(label, s)| s.curves.iter().map(move |c| (c.vertices(), label)));
+        return regularize(rings, ctx, inside);
     }
     let na = a.curves.iter().map(|c| c.len()).sum::<usize>();
     let edges: Vec<Edge<N>> = a

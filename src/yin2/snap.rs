@@ -13,8 +13,8 @@ use crate::kernel::Point;
 use crate::num::{Float, Num, Tolerance};
 use std::collections::{BTreeMap, BTreeSet};
 
-/// A directed piece of a boundary, from its first point to its second, with its label.
-pub(crate) type Piece<'a, N> = (&'a Point<N>, &'a Point<N>, usize);
+/// A closed ring of points (the last one joined to the first) with its label.
+pub(crate) type Ring<'a, N> = (&'a [Point<N>], usize);
 
 /// A grid segment with the operand (`0` or `1`) its piece came from.
 type Labelled = ((G, G), usize);
@@ -23,25 +23,27 @@ type Labelled = ((G, G), usize);
 /// segment's label.
 type Fragment = ((usize, usize), usize);
 
-/// The Yin set of the faces where `inside` holds, given the directed pieces of the operands'
-/// boundaries labelled by operand (`0` or `1`), after snapping them to the grid of `ctx`
-/// (float mode, [`crate::num::Tolerance`]). The whole computation runs on grid integers
-/// relative to a local origin ([`Frame`]), with exact integer-valued predicates; only the
-/// result's vertices are mapped back to coordinates. Every piece set must be a union of closed
-/// cycles, so that winding numbers are defined.
+/// The Yin set of the faces where `inside` holds, given the operands' boundaries as closed
+/// rings labelled by operand (`0` or `1`), after snapping them to the grid of `ctx` (float mode,
+/// [`crate::num::Tolerance`]). The whole computation runs on grid integers relative to a local
+/// origin ([`Frame`]), with exact integer-valued predicates; only the result's vertices are
+/// mapped back to coordinates. Closed rings make every winding number defined.
 pub(crate) fn regularize<'a, N: Num>(
-    pieces: impl Iterator<Item = Piece<'a, N>> + Clone,
+    rings: impl Iterator<Item = Ring<'a, N>> + Clone,
     ctx: N::Ctx,
     inside: impl Fn(Winding) -> bool,
 ) -> Result<YinSet2<N>, YinError> {
-    let frame = Frame::of(pieces.clone().flat_map(|(a, b, _)| [a, b]), ctx);
+    let frame = Frame::of(rings.clone().flat_map(|(ring, _)| ring), ctx);
     let ctx = frame.ctx;
-    let mut segments: Vec<Labelled> = Vec::with_capacity(pieces.clone().count());
-    segments.extend(
-        pieces
-            .map(|(a, b, l)| ((frame.to_grid(a), frame.to_grid(b)), l))
-            .filter(|((a, b), _)| a != b),
-    );
+    let count = rings.clone().map(|(ring, _)| ring.len()).sum();
+    let (mut segments, mut grid): (Vec<Labelled>, Vec<G>) = (Vec::with_capacity(count), Vec::new());
+    for (ring, label) in rings {
+        grid.clear();
+        grid.extend(ring.iter().map(|p| frame.to_grid(p)));
+        let next = grid.iter().skip(1).chain(grid.first());
+        let sides = grid.iter().zip(next).filter(|(a, b)| a != b);
+        segments.extend(sides.map(|(&a, &b)| ((a, b), label)));
+    }
     // Snapped fragments do not cross: their arrangement is swept on the grid integers with
     // exact integer orientations. Where two still cross (the arrangement reports them), their
     // crossing pixel is added and the segments rerouted.

@@ -39,9 +39,8 @@ impl<N: Num> YinSet2<N> {
         if N::grid(&ctx).is_some() {
             // Float mode: the set the curves bound, snap-rounded to the grid of ε.
             let unbounded = !spadjor.bounded;
-            let pieces = spadjor.curves.iter().flat_map(|c| c.edges());
-            let pieces = pieces.map(|(a, b)| (a, b, 0));
-            let y = regularize(pieces, ctx, |w| inside_set(w[0], unbounded))?;
+            let rings = spadjor.curves.iter().map(|c| (c.vertices(), 0));
+            let y = regularize(rings, ctx, |w| inside_set(w[0], unbounded))?;
             return not_collapsed(y);
         }
         Ok(YinSet2::from_spadjor(spadjor, ctx))
