@@ -94,7 +94,7 @@ impl<N: Num> YinSet2<N> {
         if N::grid(&ctx).is_some() {
             // Float mode: the snap rounding applies the rule to the snapped arrangement.
             let labelled = rings.iter().map(|ring| (&ring[..], 0));
-            return regularize(labelled, ctx, |w| rule.inside(w[0]));
+            return regularize(labelled, false, ctx, |w| rule.inside(w[0]));
         }
         fill_exact(&ring_edges(&rings), |_| 1, ctx, |w| rule.inside(w))
     }

@@ -45,7 +45,7 @@ pub(crate) fn overlay<N: Num>(
             .into_iter()
             .enumerate()
             .flat_map(|(label, s)| s.curves.iter().map(move |c| (c.vertices(), label)));
-        return regularize(rings, ctx, inside);
+        return regularize(rings, true, ctx, inside);
     }
     let na = a.curves.iter().map(|c| c.len()).sum::<usize>();
     let edges: Vec<Edge<N>> = a

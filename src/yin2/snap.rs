@@ -27,9 +27,12 @@ type Fragment = ((usize, usize), usize);
 /// rings labelled by operand (`0` or `1`), after snapping them to the grid of `ctx` (float mode,
 /// [`crate::num::Tolerance`]). The whole computation runs on grid integers relative to a local
 /// origin ([`Frame`]), with exact integer-valued predicates; only the result's vertices are
-/// mapped back to coordinates. Closed rings make every winding number defined.
+/// mapped back to coordinates. Closed rings make every winding number defined. If `valid`, the
+/// rings of each label bound a Yin set, so that they do not cross each other where snapping
+/// moves none of their vertices.
 pub(crate) fn regularize<'a, N: Num>(
     rings: impl Iterator<Item = Ring<'a, N>> + Clone,
+    valid: bool,
     ctx: N::Ctx,
     inside: impl Fn(Winding) -> bool,
 ) -> Result<YinSet2<N>, YinError> {
@@ -37,9 +40,11 @@ pub(crate) fn regularize<'a, N: Num>(
     let ctx = frame.ctx;
     let count = rings.clone().map(|(ring, _)| ring.len()).sum();
     let (mut segments, mut grid): (Vec<Labelled>, Vec<G>) = (Vec::with_capacity(count), Vec::new());
+    let mut moved = [!valid; 2];
     for (ring, label) in rings {
         grid.clear();
         grid.extend(ring.iter().map(|p| frame.to_grid(p)));
+        moved[label] |= ring.iter().zip(&grid).any(|(p, &k)| frame.at(k) != *p);
         let next = grid.iter().skip(1).chain(grid.first());
         let sides = grid.iter().zip(next).filter(|(a, b)| a != b);
         segments.extend(sides.map(|(&a, &b)| ((a, b), label)));
@@ -47,7 +52,7 @@ pub(crate) fn regularize<'a, N: Num>(
     // Snapped fragments do not cross: their arrangement is swept on the grid integers with
     // exact integer orientations. Where two still cross (the arrangement reports them), their
     // crossing pixel is added and the segments rerouted.
-    let mut snap = Snap::new(segments);
+    let mut snap = Snap::new(segments, |label| !moved[label]);
     loop {
         let (fragments, owner) = snap.fragments();
         let arr = arrange_grid(&snap.hot, fragments.iter().map(|f| f.0));
@@ -120,10 +125,13 @@ impl<N: Num> Frame<N> {
 
     /// The point of a vertex given in grid units relative to the origin (exact).
     fn to_point(&self, p: &Point<Float>) -> Point<N> {
-        let c = |k: &Float, o: i64| {
-            N::from_f64((k.get() as i64 + o) as f64 * self.g).unwrap_or_else(|_| N::zero())
-        };
-        Point::new(c(&p.x, self.origin.0), c(&p.y, self.origin.1))
+        self.at((p.x.get() as i64, p.y.get() as i64))
+    }
+
+    /// The point of grid point `k` (exact).
+    fn at(&self, k: G) -> Point<N> {
+        let c = |k: i64, o: i64| N::from_f64((k + o) as f64 * self.g).unwrap_or_else(|_| N::zero());
+        Point::new(c(k.0, self.origin.0), c(k.1, self.origin.1))
     }
 }
 
@@ -158,8 +166,9 @@ struct Snap {
 }
 
 impl Snap {
-    /// The hot pixels of `segments`: endpoints and the pixels of crossings.
-    fn new(segments: Vec<Labelled>) -> Snap {
+    /// The hot pixels of `segments`: endpoints and the pixels of crossings (none between two
+    /// segments of a label that is `apart`, whose segments do not cross each other).
+    fn new(segments: Vec<Labelled>, apart: impl Fn(usize) -> bool) -> Snap {
         let grid: Vec<(G, G)> = segments.iter().map(|s| s.0).collect();
         let (vertices, mut ends) = rank_ends(&grid);
         // The segments by their left side: by their lower end in the order of the vertices,
@@ -176,7 +185,8 @@ impl Snap {
             by_left[slot[i.min(j)]] = k;
             slot[i.min(j)] += 1;
         }
-        let mut crossings: Vec<G> = grid_crossing_pairs(&grid, &by_left)
+        let family = |k: usize| Some(segments[k].1).filter(|&label| apart(label));
+        let mut crossings: Vec<G> = grid_crossing_pairs(&grid, &by_left, family)
             .into_iter()
             .map(|(i, j)| crossing_pixel(grid[i], grid[j]))
             .collect();
@@ -406,7 +416,7 @@ mod tests {
             (((0, 4), (9, 0)), 1),
             (((5, -2), (4, 7)), 0),
         ];
-        let mut snap = Snap::new(segments);
+        let mut snap = Snap::new(segments, |_| false);
         let pixels = [(5, 2), (5, 1)];
         assert!(
             pixels.iter().all(|c| snap.hot.contains(c)),

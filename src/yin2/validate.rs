@@ -40,7 +40,7 @@ impl<N: Num> YinSet2<N> {
             // Float mode: the set the curves bound, snap-rounded to the grid of ε.
             let unbounded = !spadjor.bounded;
             let rings = spadjor.curves.iter().map(|c| (c.vertices(), 0));
-            let y = regularize(rings, ctx, |w| inside_set(w[0], unbounded))?;
+            let y = regularize(rings, true, ctx, |w| inside_set(w[0], unbounded))?;
             return not_collapsed(y);
         }
         Ok(YinSet2::from_spadjor(spadjor, ctx))
