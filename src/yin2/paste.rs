@@ -86,11 +86,21 @@ impl<N: Num> Segmented<N> {
     /// a union of cycles is an [`YinError::Unbalanced`] error (in every build profile).
     fn loops(&self, ctx: &N::Ctx) -> Result<Loops<N>, YinError> {
         let n = self.points.len();
-        let mut out: Vec<Vec<usize>> = vec![Vec::new(); n];
+        // The pieces leaving each vertex v, in order: out[start[v]..start[v + 1]].
+        let mut start = vec![0usize; n + 1];
         let mut indegree = vec![0usize; n];
-        for (e, &(a, b)) in self.edges.iter().enumerate() {
-            out[a].push(e);
+        for &(a, b) in &self.edges {
+            start[a + 1] += 1;
             indegree[b] += 1;
+        }
+        for v in 1..=n {
+            start[v] += start[v - 1];
+        }
+        let mut out = vec![0; self.edges.len()];
+        let mut next = start.clone();
+        for (e, &(a, _)) in self.edges.iter().enumerate() {
+            out[next[a]] = e;
+            next[a] += 1;
         }
         let touching = (0..n)
             .filter(|&v| indegree[v] > 1)
@@ -122,7 +132,7 @@ impl<N: Num> Segmented<N> {
                     );
                     continue;
                 }
-                match self.next_piece(last, &out[v], &used, ctx) {
+                match self.next_piece(last, &out[start[v]..start[v + 1]], &used, ctx) {
                     Some(e) => {
                         used[e] = true;
                         pos[v] = path.len();
