@@ -47,7 +47,8 @@ impl<P> Arrangement<P> {
             index[a] = 0;
             index[b] = 0;
         }
-        let mut out = Vec::new();
+        // At most one point per piece: each starts one.
+        let mut out = Vec::with_capacity(pieces.len());
         for (k, v) in self.points.into_iter().enumerate() {
             if index[k] != NIL {
                 index[k] = out.len();

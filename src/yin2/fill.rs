@@ -148,7 +148,7 @@ where
         }
     };
     let windings = arr.windings(upward);
-    let mut pieces = Vec::new();
+    let mut pieces = Vec::with_capacity(arr.groups.len());
     for (g, (below, above)) in arr.groups.iter().zip(windings) {
         match (inside(below), inside(above)) {
             (false, true) => pieces.push((g.from, g.to)),
