@@ -47,7 +47,7 @@ impl<P> Arrangement<P> {
             index[a] = 0;
             index[b] = 0;
         }
-        // At most one point per piece: each starts one.
+        // At most one point per piece where the pieces close up (each point starts one).
         let mut out = Vec::with_capacity(pieces.len());
         for (k, v) in self.points.into_iter().enumerate() {
             if index[k] != NIL {

@@ -9,8 +9,8 @@ use super::intersect::exact_image_pairs;
 /// The pairs `i < j` of `segments` whose interiors cross at one point, except pairs of one
 /// family, given the segments in the order of their left sides (`by_left`) and each one's
 /// family (`family`: `Some(0)` or `Some(1)` for a family whose segments are known not to cross
-/// each other, `None` for a segment that may cross any): O(n + X) for X pairs of boxes whose
-/// x-ranges overlap, or, once X passes [`SCANS_PER_SEGMENT`] per segment (long slanted
+/// each other, `None` for a segment that may cross any): O(n log n + X) for X pairs of boxes
+/// whose x-ranges overlap, or, once X passes [`SCANS_PER_SEGMENT`] per segment (long slanted
 /// segments side by side, where X grows like n²), O((n + I) log n) for I meeting pairs.
 pub(crate) fn grid_crossing_pairs(
     segments: &[(G, G)],

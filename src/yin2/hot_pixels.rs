@@ -50,8 +50,7 @@ impl<'a> HotPixels<'a> {
             out.extend((from..to).filter(meets));
         } else {
             let grid = self.grid.get_or_init(|| CellGrid::new(sorted));
-            grid.met_by(sorted, a, b, out);
-            out.retain(|&k| !own(k));
+            grid.met_by(sorted, (a, b), |k| !own(k), out);
         }
     }
 }
@@ -144,9 +143,15 @@ impl CellGrid {
     }
 
     /// Appends to `out` the pixels (indices of `sorted`, the pixels the grid was built on) that
-    /// the segment `ab` meets ([`meets_pixel`]): those of the cells that the segment's pixels
-    /// can lie in, column by column.
-    fn met_by(&self, sorted: &[G], a: G, b: G, out: &mut Vec<usize>) {
+    /// the segment `ab` meets ([`meets_pixel`]) and `keep` accepts: those of the cells that the
+    /// segment's pixels can lie in, column by column.
+    fn met_by(
+        &self,
+        sorted: &[G],
+        (a, b): (G, G),
+        keep: impl Fn(usize) -> bool,
+        out: &mut Vec<usize>,
+    ) {
         // A pixel met by the segment has its centre within the segment's box (both on the grid)
         // and within ½ of a point of the segment in each coordinate.
         let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
@@ -173,7 +178,10 @@ impl CellGrid {
             let pixels = &self.pixels[self.start[*cells.start()]..self.start[cells.end() + 1]];
             out.extend(pixels.iter().filter(|&&k| {
                 let c = sorted[k];
-                (x0..=x1).contains(&c.0) && (lo..=hi).contains(&c.1) && meets_pixel(a, b, c)
+                (x0..=x1).contains(&c.0)
+                    && (lo..=hi).contains(&c.1)
+                    && keep(k)
+                    && meets_pixel(a, b, c)
             }));
         }
     }
