@@ -5,6 +5,7 @@
 //! ([`Arrangement::crossed`]) for the snap rounding to resolve.
 
 use super::arrangement::{Arrangement, Recorder};
+use super::buckets::Buckets;
 use super::status::{Status, NIL};
 use crate::kernel::Point;
 use crate::num::Float;
@@ -90,34 +91,23 @@ pub(crate) fn arrange_grid(
     // infinitesimally, and a vertical segment runs from its lower end to its upper one), as
     // indices of `points`, whose order is the sweep's.
     let span: Vec<(usize, usize)> = spans.map(|(i, j)| (i.min(j), i.max(j))).collect();
-    // The segment ends at each point, by counting: 2·segment + 1 for an upper end.
-    let mut start = vec![0; points.len() + 1];
-    for &(i, j) in &span {
-        start[i + 1] += 1;
-        start[j + 1] += 1;
-    }
-    for k in 1..start.len() {
-        start[k] += start[k - 1];
-    }
-    let mut at = vec![0; 2 * span.len()];
-    let mut next_slot = start.clone();
-    for (e, &(i, j)) in span.iter().enumerate() {
-        for (k, code) in [(i, 2 * e), (j, 2 * e + 1)] {
-            at[next_slot[k]] = code;
-            next_slot[k] += 1;
-        }
-    }
+    // The segment ends at each point: 2·segment + 1 for an upper end.
+    let ends = span
+        .iter()
+        .enumerate()
+        .flat_map(|(e, &(i, j))| [(i, 2 * e), (j, 2 * e + 1)]);
+    let at = Buckets::new(points.len(), ends);
     let seg: Vec<(G, G)> = span.iter().map(|&(i, j)| (points[i], points[j])).collect();
     let mut sweep = GridSweep {
         seg: &seg,
         points,
-        start: &start,
+        at: &at,
         status: Status::new(seg.len()),
         record: Recorder::new(seg.len()),
     };
     let (mut old, mut next, mut stamp) = (Vec::new(), Vec::new(), 0);
     for (k, &p) in points.iter().enumerate() {
-        let codes = &at[start[k]..start[k + 1]];
+        let codes = at.get(k);
         if codes.is_empty() {
             continue;
         }
@@ -154,8 +144,8 @@ const PASS_MOST: usize = 4;
 struct GridSweep<'a> {
     seg: &'a [(G, G)],
     points: &'a [G],
-    /// The segment ends at `points[k]` are `start[k]..start[k + 1]` (in a list of all ends).
-    start: &'a [usize],
+    /// The segment ends at each point of `points` (2·segment + 1 for an upper end).
+    at: &'a Buckets,
     status: Status,
     record: Recorder<G>,
 }
@@ -250,7 +240,7 @@ impl GridSweep<'_> {
         let event = self
             .points
             .binary_search(&c)
-            .is_ok_and(|k| self.start[k] < self.start[k + 1]);
+            .is_ok_and(|k| !self.at.get(k).is_empty());
         if !(event && on(self.seg[s]) && on(self.seg[t])) {
             self.record.cross(s.min(t), s.max(t));
         }

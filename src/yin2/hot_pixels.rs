@@ -3,6 +3,7 @@
 //! whose slab (its x-range) holds few pixels scans them; one whose slab is crowded walks a
 //! uniform grid of cells column by column and looks only at the pixels of the cells along it.
 
+use super::buckets::Buckets;
 use super::grid_arrange::G;
 use std::cell::OnceCell;
 
@@ -77,15 +78,14 @@ fn gallop(n: usize, past: impl Fn(usize) -> bool) -> Option<usize> {
 
 /// Pixels in a uniform grid of square cells of side 2^`shift` grid units from `origin` (the
 /// pixels' lowest corner), about one pixel a cell, stored cell by cell (column after column,
-/// each from the bottom) as indices of the sorted pixels: the pixels of cell k are
-/// `pixels[start[k]..start[k + 1]]`.
+/// each from the bottom) as indices of the sorted pixels.
 struct CellGrid {
     origin: G,
     shift: u32,
     columns: usize,
     rows: usize,
-    start: Vec<usize>,
-    pixels: Vec<usize>,
+    /// The pixels of each cell.
+    pixels: Buckets,
 }
 
 impl CellGrid {
@@ -108,22 +108,10 @@ impl CellGrid {
             shift,
             columns,
             rows,
-            start: vec![0; columns * rows + 1],
-            pixels: vec![0; hot.len()],
+            pixels: Buckets::new(0, std::iter::empty()),
         };
-        for &c in hot {
-            let k = grid.cell(c);
-            grid.start[k + 1] += 1;
-        }
-        for k in 1..grid.start.len() {
-            grid.start[k] += grid.start[k - 1];
-        }
-        let mut next = grid.start.clone();
-        for (i, &c) in hot.iter().enumerate() {
-            let k = grid.cell(c);
-            grid.pixels[next[k]] = i;
-            next[k] += 1;
-        }
+        let cells = hot.iter().enumerate().map(|(i, &c)| (grid.cell(c), i));
+        grid.pixels = Buckets::new(columns * rows, cells);
         grid
     }
 
@@ -175,7 +163,7 @@ impl CellGrid {
                 continue;
             }
             let cells = column * self.rows + self.row_of(lo)..=column * self.rows + self.row_of(hi);
-            let pixels = &self.pixels[self.start[*cells.start()]..self.start[cells.end() + 1]];
+            let pixels = self.pixels.range(cells);
             out.extend(pixels.iter().filter(|&&k| {
                 let c = sorted[k];
                 (x0..=x1).contains(&c.0)

@@ -1,6 +1,7 @@
 //! The 2D Yin space (seed 000): Jordan curves, spadjors, and the Boolean algebra on them.
 
 mod arrangement;
+mod buckets;
 mod complement;
 mod convert;
 mod curve;

@@ -1,5 +1,6 @@
 //! The pasting map S_V⁻¹ (seed 000 Lemma 4.2, S2R-a..d; seed 002 Alg. 2).
 
+use super::buckets::Buckets;
 use super::error::YinError;
 use super::set::{Spadjor, YinSet2};
 use crate::kernel::{cmp_clockwise_from, Point};
@@ -86,21 +87,11 @@ impl<N: Num> Segmented<N> {
     /// a union of cycles is an [`YinError::Unbalanced`] error (in every build profile).
     fn loops(&self, ctx: &N::Ctx) -> Result<Loops<N>, YinError> {
         let n = self.points.len();
-        // The pieces leaving each vertex v, in order: out[start[v]..start[v + 1]].
-        let mut start = vec![0usize; n + 1];
+        // The pieces leaving each vertex, in order.
+        let out = Buckets::new(n, self.edges.iter().enumerate().map(|(e, &(a, _))| (a, e)));
         let mut indegree = vec![0usize; n];
-        for &(a, b) in &self.edges {
-            start[a + 1] += 1;
+        for &(_, b) in &self.edges {
             indegree[b] += 1;
-        }
-        for v in 1..=n {
-            start[v] += start[v - 1];
-        }
-        let mut out = vec![0; self.edges.len()];
-        let mut next = start.clone();
-        for (e, &(a, _)) in self.edges.iter().enumerate() {
-            out[next[a]] = e;
-            next[a] += 1;
         }
         let touching = (0..n)
             .filter(|&v| indegree[v] > 1)
@@ -132,7 +123,7 @@ impl<N: Num> Segmented<N> {
                     );
                     continue;
                 }
-                match self.next_piece(last, &out[start[v]..start[v + 1]], &used, ctx) {
+                match self.next_piece(last, out.get(v), &used, ctx) {
                     Some(e) => {
                         used[e] = true;
                         pos[v] = path.len();

@@ -2,6 +2,7 @@
 //! boundary pieces to the ε-grid, then regularization by winding numbers. Every float result is
 //! thereby exactly a valid Yin set whose vertices are grid points, decided with exact predicates.
 
+use super::buckets::Buckets;
 use super::error::YinError;
 use super::fill::fill_arranged;
 use super::grid_arrange::{arrange_grid, crossing_pixel, unit, G};
@@ -171,22 +172,11 @@ impl Snap {
     fn new(segments: Vec<Labelled>, apart: impl Fn(usize) -> bool) -> Snap {
         let grid: Vec<(G, G)> = segments.iter().map(|s| s.0).collect();
         let (vertices, mut ends) = rank_ends(&grid);
-        // The segments by their left side: by their lower end in the order of the vertices,
-        // by counting.
-        let mut slot = vec![0; vertices.len() + 1];
-        for &(i, j) in &ends {
-            slot[i.min(j) + 1] += 1;
-        }
-        for r in 1..slot.len() {
-            slot[r] += slot[r - 1];
-        }
-        let mut by_left = vec![0; grid.len()];
-        for (k, &(i, j)) in ends.iter().enumerate() {
-            by_left[slot[i.min(j)]] = k;
-            slot[i.min(j)] += 1;
-        }
+        // The segments by their left side: by their lower end in the order of the vertices.
+        let lower_ends = ends.iter().enumerate().map(|(k, &(i, j))| (i.min(j), k));
+        let by_left = Buckets::new(vertices.len(), lower_ends);
         let family = |k: usize| Some(segments[k].1).filter(|&label| apart(label));
-        let mut crossings: Vec<G> = grid_crossing_pairs(&grid, &by_left, family)
+        let mut crossings: Vec<G> = grid_crossing_pairs(&grid, by_left.all(), family)
             .into_iter()
             .map(|(i, j)| crossing_pixel(grid[i], grid[j]))
             .collect();
