@@ -41,9 +41,10 @@ impl Float {
 ///   finest representable grid when the shape sits far from the origin, and rounded down to a
 ///   power of two (so ε = g, and the f64 rounding of a translated box does not change it).
 /// * **Displacement.** Snap rounding moves every boundary point by at most g·√2/2 (half a
-///   pixel's diagonal, Hobby's hot pixels), so the result's boundary lies within g of the
-///   exact one; features thinner than the grid (slivers, spikes, gaps) may vanish or close,
-///   and curves closer than g may merge. An input that vanishes entirely on its grid is refused
+///   pixel's diagonal: pieces are rerouted through the centres of pixels they meet, after
+///   Hobby's hot pixels), so the result's boundary lies within g of the exact one; features
+///   thinner than the grid (slivers, spikes, gaps) may vanish or close, and curves closer than
+///   g may merge. An input that vanishes entirely on its grid is refused
 ///   (`YinError::CollapsedOnGrid`), not turned into 0̂.
 /// * **Accuracy.** Every float result F is exactly valid (its `f64` vertices read as rationals
 ///   pass the exact validator). Against the exact result E of the same operation on the same

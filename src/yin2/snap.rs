@@ -50,9 +50,9 @@ pub(crate) fn regularize<'a, N: Num>(
         let sides = grid.iter().zip(next).filter(|(a, b)| a != b);
         segments.extend(sides.map(|(&a, &b)| ((a, b), label)));
     }
-    // Snapped fragments do not cross: their arrangement is swept on the grid integers with
-    // exact integer orientations. Where two still cross (the arrangement reports them), their
-    // crossing pixel is added and the segments rerouted.
+    // Snapped fragments should not cross: their arrangement is swept on the grid integers with
+    // exact integer orientations. Where two still cross (the arrangement reports them), the
+    // segments are rerouted through more pixels ([`Snap::force`]).
     let mut snap = Snap::new(segments, |label| !moved[label]);
     loop {
         let (fragments, owner) = snap.fragments();
@@ -149,21 +149,56 @@ pub(crate) fn inside_set(w: i64, unbounded: bool) -> bool {
     w + i64::from(unbounded) > 0
 }
 
-/// Snap rounding (Hobby 1999; Guibas and Marimont 1998) of grid segments: each segment is
-/// rerouted, in order along it, through the centres of the hot pixels it meets — the pixels of
-/// the segments' endpoints and of their crossings ([`grid_crossing_pairs`]) — which leaves no
-/// two fragments crossing. Where two fragments still cross (half-open pixels, see
-/// [`super::hot_pixels`]), [`Snap::force`] adds the pixel of their crossing and forces it into both
-/// paths where their segments do not meet it; paths stay monotone along their segments and
-/// every such round adds a new (segment, centre) stop, so the iteration ends.
+/// Snap rounding (Hobby 1999; Guibas and Marimont 1998) of grid segments, tried lazily first:
+/// each segment is rerouted, in order along it, through the centres of the pixels of crossings
+/// that it meets ([`grid_crossing_pairs`]), and, if that leaves two fragments crossing (a
+/// rerouted fragment across a segment whose end's pixel it passes), through the centres of all
+/// the hot pixels it meets, as Hobby's — the pixels of the segments' ends and of their
+/// crossings — which leaves none crossing. Every fragment's ends are thus within half a pixel
+/// of its segment. Where two fragments still cross (half-open pixels, see
+/// [`super::hot_pixels`]), [`Snap::force`] adds the pixel of their crossing and forces it into
+/// both paths where their segments do not meet it; paths stay monotone along their segments
+/// and every such round adds a new (segment, centre) stop, so the iteration ends.
 struct Snap {
     segments: Vec<Labelled>,
-    /// Sorted, without repeats.
+    /// The segments' ends and the pixels of crossings: the points of the arrangement, sorted,
+    /// without repeats.
     hot: Vec<G>,
     /// The indices in `hot` of each segment's ends.
     ends: Vec<(usize, usize)>,
+    /// The pixels that segments are rerouted through while that is only the pixels of
+    /// crossings; `None` once it is all of `hot`.
+    lazy: Option<CrossingPixels>,
     /// The pixels forced into the paths of segments, by segment (few segments have any).
     forced: BTreeMap<usize, BTreeSet<G>>,
+}
+
+/// The pixels of crossings among the hot pixels.
+struct CrossingPixels {
+    /// Sorted, without repeats.
+    pixels: Vec<G>,
+    /// The index among the hot pixels of each one.
+    at: Vec<usize>,
+    /// The places of each segment's ends among `pixels` (the numbers of pixels before them).
+    places: Vec<(usize, usize)>,
+}
+
+impl CrossingPixels {
+    /// The pixels of crossings `pixels` (a part of `hot`) and the places among them of `ends`
+    /// (indices in `hot`), by walking `hot` and `pixels` together.
+    fn new(pixels: Vec<G>, hot: &[G], ends: &[(usize, usize)]) -> CrossingPixels {
+        // The number of crossing pixels before each hot pixel.
+        let mut before = Vec::with_capacity(hot.len());
+        let mut at = Vec::with_capacity(pixels.len());
+        for (k, &h) in hot.iter().enumerate() {
+            before.push(at.len());
+            if pixels.get(at.len()) == Some(&h) {
+                at.push(k);
+            }
+        }
+        let places = ends.iter().map(|&(i, j)| (before[i], before[j])).collect();
+        CrossingPixels { pixels, at, places }
+    }
 }
 
 impl Snap {
@@ -198,10 +233,12 @@ impl Snap {
         for end in &mut ends {
             *end = (at_hot[end.0], at_hot[end.1]);
         }
+        let lazy = Some(CrossingPixels::new(crossings, &hot, &ends));
         Snap {
             segments,
             hot,
             ends,
+            lazy,
             forced: BTreeMap::new(),
         }
     }
@@ -222,7 +259,7 @@ impl Snap {
 
     /// The fragments of all segments and the segment each comes from.
     fn fragments(&self) -> (Vec<Fragment>, Vec<usize>) {
-        let pixels = HotPixels::new(&self.hot);
+        let pixels = HotPixels::new(self.lazy.as_ref().map_or(&self.hot, |c| &c.pixels));
         // Most segments are one fragment.
         let most = self.segments.len() + self.segments.len() / 4;
         let (mut fragments, mut owner) = (Vec::with_capacity(most), Vec::with_capacity(most));
@@ -233,7 +270,15 @@ impl Snap {
                 ends: self.ends[k],
                 sorted: &self.hot,
             };
-            route.through(&pixels, self.forced.get(&k), &mut path);
+            path.clear();
+            match &self.lazy {
+                Some(c) => {
+                    pixels.met_by(s, c.places[k], &mut path);
+                    path.iter_mut().for_each(|i| *i = c.at[*i]);
+                }
+                None => pixels.met_by(s, self.ends[k], &mut path),
+            }
+            route.through(self.forced.get(&k), &mut path);
             for w in path.windows(2) {
                 owner.push(k);
                 fragments.push(((w[0], w[1]), label));
@@ -242,14 +287,19 @@ impl Snap {
         (fragments, owner)
     }
 
-    /// The pairs `crossed` of `fragments` (from segments `owner`) cross: their pixels become
-    /// hot and are forced into both segments' paths.
+    /// The pairs `crossed` of `fragments` (from segments `owner`) cross: rerouting that was
+    /// lazy becomes Hobby's; else their pixels become hot and are forced into both segments'
+    /// paths.
     fn force(
         &mut self,
         fragments: &[Fragment],
         owner: &[usize],
         crossed: &[(usize, usize)],
     ) -> Result<(), YinError> {
+        // Lazy rerouting left a crossing: reroute through every hot pixel met, as Hobby's.
+        if self.lazy.take().is_some() {
+            return Ok(());
+        }
         let hot = &self.hot;
         let grid = |f: &Fragment| (hot[f.0 .0], hot[f.0 .1]);
         let pixels: Vec<(G, [usize; 2])> = crossed
@@ -331,15 +381,13 @@ struct Route<'a> {
 }
 
 impl Route<'_> {
-    /// The path of the segment `s = ab` rerouted through the centres of the hot pixels it meets
-    /// and through the `forced` centres, in order along `s` (centres projecting strictly inside
-    /// `s` only), into `path` as indices of the hot pixels (from `a` to `b`, no point repeated
-    /// in a row).
-    fn through(&self, hot: &HotPixels<'_>, forced: Option<&BTreeSet<G>>, path: &mut Vec<usize>) {
+    /// The path of the segment `s = ab` rerouted through the centres of the hot pixels in
+    /// `path` (indices of the ones it meets, on entry) and through the `forced` centres, in
+    /// order along `s` (centres projecting strictly inside `s` only), into `path` as indices of
+    /// the hot pixels (from `a` to `b`, no point repeated in a row).
+    fn through(&self, forced: Option<&BTreeSet<G>>, path: &mut Vec<usize>) {
         let (s, sorted, ends) = (self.s, self.sorted, self.ends);
         let (a, b) = s;
-        path.clear();
-        hot.met_by(s, ends, path);
         path.extend(forced.into_iter().flatten().map(|c| {
             sorted
                 .binary_search(c)
@@ -454,6 +502,9 @@ mod tests {
             snap.hot
         );
         assert!(crossed(&snap).2.is_empty());
+        // Hobby's rerouting, through every hot pixel met.
+        snap.lazy = None;
+        assert!(crossed(&snap).2.is_empty());
         // Without the crossing pixels the fragments cross: the arrangement reports them and
         // `force` adds their pixels until none is left (one may do: the third segment passes
         // through the first crossing's pixel).
@@ -475,5 +526,36 @@ mod tests {
             "{:?}",
             snap.hot
         );
+    }
+
+    #[test]
+    fn lazy_rerouting_that_leaves_a_crossing_becomes_hobbys() {
+        // The first and third segments cross at (6.56, 3.64), in pixel (7, 4). The third passes
+        // x = 5.82 at y = 5, in the pixel of the second one's end (6, 5), without crossing the
+        // second; rerouted through (7, 4) only, it passes x = 6.375 at y = 5 and crosses it.
+        let segments = vec![
+            (((0, 2), (12, 5)), 0),
+            (((10, 11), (6, 5)), 1),
+            (((8, 1), (2, 12)), 0),
+        ];
+        let mut snap = Snap::new(segments, |_| false);
+        let hot = snap.hot.clone();
+        let paths = |fragments: &[Fragment]| -> Vec<(G, G)> {
+            fragments
+                .iter()
+                .map(|f| (hot[f.0 .0], hot[f.0 .1]))
+                .collect()
+        };
+        let (fragments, owner, crossing) = crossed(&snap);
+        let lazy = [((8, 1), (7, 4)), ((7, 4), (2, 12))];
+        assert_eq!(paths(&fragments)[3..], lazy);
+        assert!(!crossing.is_empty());
+        snap.force(&fragments, &owner, &crossing).unwrap();
+        assert!(snap.lazy.is_none());
+        assert_eq!(snap.hot, hot, "no pixel added");
+        let (fragments, _, crossing) = crossed(&snap);
+        let hobby = [((8, 1), (7, 4)), ((7, 4), (6, 5)), ((6, 5), (2, 12))];
+        assert_eq!(paths(&fragments)[3..], hobby);
+        assert!(crossing.is_empty());
     }
 }
