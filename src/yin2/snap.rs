@@ -85,12 +85,22 @@ struct Frame<N: Num> {
 }
 
 impl<N: Num> Frame<N> {
-    /// The frame for `points` under the grid of `ctx`.
-    fn of<'a>(points: impl Iterator<Item = &'a Point<N>> + Clone, ctx: N::Ctx) -> Frame<N> {
-        let magnitude = points
-            .clone()
-            .map(|p| p.x.to_f64().abs().max(p.y.to_f64().abs()))
-            .fold(0.0, f64::max);
+    /// The frame for `points` under the grid of `ctx`, from their box: snapping is monotone,
+    /// so the snapped box's corners are the box's corners snapped.
+    fn of<'a>(points: impl Iterator<Item = &'a Point<N>>, ctx: N::Ctx) -> Frame<N> {
+        let (lo, hi) = points.fold(
+            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+            |(lo, hi), p| {
+                let (x, y) = (p.x.to_f64(), p.y.to_f64());
+                ([lo[0].min(x), lo[1].min(y)], [hi[0].max(x), hi[1].max(y)])
+            },
+        );
+        let empty = lo[0] > hi[0];
+        let magnitude = if empty {
+            0.0
+        } else {
+            lo.iter().chain(&hi).fold(0.0, |m: f64, v| m.max(v.abs()))
+        };
         let ctx = match N::resolve_ctx(N::Ctx::default(), 0.0, magnitude) {
             Ok(finest) => N::combine_ctx(ctx, finest),
             Err(_) => ctx,
@@ -101,26 +111,23 @@ impl<N: Num> Frame<N> {
             origin: (0, 0),
             ctx,
         };
-        let (lo, hi) = points.map(|p| frame.to_grid(p)).fold(
-            ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN)),
-            |(lo, hi), k| {
-                (
-                    (lo.0.min(k.0), lo.1.min(k.1)),
-                    (hi.0.max(k.0), hi.1.max(k.1)),
-                )
-            },
-        );
-        if lo.0 <= hi.0 {
-            frame.origin = (lo.0 / 2 + hi.0 / 2, lo.1 / 2 + hi.1 / 2);
+        if !empty {
+            let centre = |lo: f64, hi: f64| frame.snap(lo) / 2 + frame.snap(hi) / 2;
+            frame.origin = (centre(lo[0], hi[0]), centre(lo[1], hi[1]));
         }
         frame
+    }
+
+    /// The grid step nearest `v` (ties up), as a multiple of `g` from 0.
+    fn snap(&self, v: f64) -> i64 {
+        floor_i64(v / self.g + 0.5)
     }
 
     /// The grid point nearest `p` (ties up, as [`crossing_pixel`] rounds, so that snapping
     /// commutes with translations by the grid), relative to the origin: exact, as every
     /// coordinate is at most 2⁵¹ grid steps from 0 and g is a power of two.
     fn to_grid(&self, p: &Point<N>) -> G {
-        let k = |v: &N| floor_i64(v.to_f64() / self.g + 0.5);
+        let k = |v: &N| self.snap(v.to_f64());
         (k(&p.x) - self.origin.0, k(&p.y) - self.origin.1)
     }
 
@@ -265,11 +272,6 @@ impl Snap {
         let (mut fragments, mut owner) = (Vec::with_capacity(most), Vec::with_capacity(most));
         let mut path = Vec::new();
         for (k, &(s, label)) in self.segments.iter().enumerate() {
-            let route = Route {
-                s,
-                ends: self.ends[k],
-                sorted: &self.hot,
-            };
             path.clear();
             match &self.lazy {
                 Some(c) => {
@@ -278,7 +280,19 @@ impl Snap {
                 }
                 None => pixels.met_by(s, self.ends[k], &mut path),
             }
-            route.through(self.forced.get(&k), &mut path);
+            let forced = self.forced.get(&k);
+            if path.is_empty() && forced.is_none() {
+                // Most segments meet no pixel but their ends' and are one fragment.
+                owner.push(k);
+                fragments.push((self.ends[k], label));
+                continue;
+            }
+            let route = Route {
+                s,
+                ends: self.ends[k],
+                sorted: &self.hot,
+            };
+            route.through(forced, &mut path);
             for w in path.windows(2) {
                 owner.push(k);
                 fragments.push(((w[0], w[1]), label));
