@@ -1,5 +1,5 @@
-//! The hot pixels of float mode's snap rounding and the ones a segment meets (after Hobby 1999):
-//! a segment meets a pixel when it meets its half-open unit square ([`meets_pixel`]). A segment
+//! The hot pixels of float mode's snap rounding and the ones a segment meets (Hobby 1999): a
+//! segment meets a pixel when it meets its half-open unit square ([`meets_pixel`]). A segment
 //! whose slab (its x-range) holds few pixels scans them; one whose slab is crowded walks a
 //! uniform grid of cells column by column and looks only at the pixels of the cells along it.
 
@@ -29,30 +29,29 @@ impl<'a> HotPixels<'a> {
         }
     }
 
-    /// Appends to `out` the pixels other than its ends that the segment `ab` meets
-    /// ([`meets_pixel`]), as indices of the sorted pixels; `places` are the numbers of pixels
-    /// that come before `a` and before `b` in the order of `G` (where each would be inserted).
-    pub(crate) fn met_by(&self, (a, b): (G, G), places: (usize, usize), out: &mut Vec<usize>) {
+    /// Appends to `out` the hot pixels other than its ends that the segment `ab` meets
+    /// ([`meets_pixel`]), as indices of the sorted pixels; `ends` are the indices of `a` and `b`.
+    pub(crate) fn met_by(&self, (a, b): (G, G), ends: (usize, usize), out: &mut Vec<usize>) {
         // A pixel met by the segment has its centre within the segment's box (both on the grid):
-        // its x-slab runs from the lower end's place down past the pixels of its x, and from the
-        // upper end's place up past the pixels of its x.
+        // its x-slab runs from the lower end's index down to the first pixel of its x, and from
+        // the upper end's index up to the last pixel of its x.
         let sorted = self.sorted;
-        let (lower, upper) = (places.0.min(places.1), places.0.max(places.1));
-        let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
+        let (lower, upper) = (ends.0.min(ends.1), ends.0.max(ends.1));
+        let (x0, x1) = (sorted[lower].0, sorted[upper].0);
         let from = gallop(lower + 1, |k| sorted[lower - k].0 < x0).map_or(0, |k| lower - k + 1);
-        let to = gallop(sorted.len() - upper + 1, |k| sorted[upper + k - 1].0 > x1)
-            .map_or(sorted.len(), |k| upper + k - 1);
-        let other = |c: G| c != a && c != b;
+        let to = gallop(sorted.len() - upper, |k| sorted[upper + k].0 > x1)
+            .map_or(sorted.len(), |k| upper + k);
+        let own = |k: usize| k == ends.0 || k == ends.1;
         if to - from <= SLAB_SCAN {
             let (lo, hi) = (a.1.min(b.1), a.1.max(b.1));
             let meets = |&k: &usize| {
                 let c = sorted[k];
-                (lo..=hi).contains(&c.1) && other(c) && meets_pixel(a, b, c)
+                (lo..=hi).contains(&c.1) && !own(k) && meets_pixel(a, b, c)
             };
             out.extend((from..to).filter(meets));
         } else {
             let grid = self.grid.get_or_init(|| CellGrid::new(sorted));
-            grid.met_by(sorted, (a, b), |k| other(sorted[k]), out);
+            grid.met_by(sorted, (a, b), |k| !own(k), out);
         }
     }
 }
@@ -325,11 +324,10 @@ mod tests {
         /// The hot pixels a segment meets, found by scanning its slab or by walking the grid,
         /// are exactly the pixels other than its ends that `meets_pixel` accepts: segments
         /// through corners and along pixel sides, vertical and horizontal, among pixels in
-        /// columns (the slab's ends found by galloping past pixels of the ends' x from the ends'
-        /// places, a column below the lower end among them), with and without its ends among
-        /// the pixels; from one pixel to hundreds
-        /// (cells of one unit to many), at small coordinates and far from 0 (spread by up to
-        /// 2³⁰ and shifted by up to 2⁴⁸).
+        /// columns (the slab's ends found by galloping past pixels of the ends' x, a column
+        /// below the lower end among them); from one pixel to hundreds (cells of one unit to
+        /// many), at small coordinates and far from 0 (spread by up to 2³⁰ and shifted by up
+        /// to 2⁴⁸).
         #[test]
         fn hot_pixels_met_by_a_segment_are_the_pixels_it_meets(
             a in (-2i64..40, -2i64..40),
@@ -337,7 +335,6 @@ mod tests {
             pixels in proptest::collection::btree_set((0i64..38, 0i64..38), 0..300),
             spread in prop_oneof![Just(1i64), Just(3), Just(1 << 30)],
             shift in prop_oneof![Just(0i64), Just(-(1i64 << 48)), Just(1i64 << 48)],
-            with_ends in any::<bool>(),
             columns in any::<bool>(),
             sparse in any::<bool>(),
         ) {
@@ -347,22 +344,20 @@ mod tests {
             let lower = a.min(b);
             let below = (1..=4).map(|d| (lower.0, lower.1 - d));
             let columns = columns.then_some(below).into_iter().flatten();
-            let (a, b) = (far(a), far(b));
             // Few pixels (slabs that are scanned) as often as many.
             let few = if sparse { 6 } else { pixels.len() };
             let pixels = pixels.iter().copied().take(few).chain(columns);
+            let (a, b) = (far(a), far(b));
             let mut sorted: Vec<G> = pixels.map(far).collect();
-            if with_ends {
-                sorted.extend([a, b]);
-            }
+            sorted.extend([a, b]);
             sorted.sort();
             sorted.dedup();
             let hot = HotPixels::new(&sorted);
             let met = |c: &G| *c != a && *c != b && meets_pixel(a, b, *c);
             let want: Vec<G> = sorted.iter().copied().filter(met).collect();
-            let place = |g: G| sorted.partition_point(|&c| c < g);
+            let index = |g: G| sorted.binary_search(&g).unwrap();
             let mut found = Vec::new();
-            hot.met_by((a, b), (place(a), place(b)), &mut found);
+            hot.met_by((a, b), (index(a), index(b)), &mut found);
             let mut found: Vec<G> = found.into_iter().map(|k| sorted[k]).collect();
             found.sort();
             prop_assert_eq!(found, want);
