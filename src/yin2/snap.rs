@@ -577,4 +577,24 @@ mod tests {
         assert_eq!(paths(&fragments)[3..], hobby);
         assert!(crossing.is_empty());
     }
+
+    #[test]
+    fn the_fill_of_arbitrary_rings_reroutes_as_hobbys_at_once() {
+        // Two triangles apart, each passing through the pixel of the other's nearest vertex
+        // without crossing it: the first's side from (3, 11) to (8, 2) passes (6.56, 4.6), in
+        // the pixel of (7, 5); the second's from (7, 5) to (9, 1) passes (8.45, 2.1), in the
+        // pixel of (8, 2). Rerouted as Hobby's, both sides run from (7, 5) to (8, 2) and the
+        // triangles join along it; lazily, crossing nothing, they stay apart.
+        let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+        let rings = [
+            vec![p(3.0, 11.0), p(8.0, 2.0), p(1.0, 0.0)],
+            vec![p(11.0, 8.0), p(7.0, 5.0), p(9.0, 1.0)],
+        ];
+        let rings = rings.iter().map(|r| (r.as_slice(), 0));
+        let (ctx, inside) = (Tolerance::new(1.0), |w: Winding| w[0] != 0);
+        let fill = regularize(rings.clone(), false, ctx, inside).unwrap();
+        assert_eq!(fill.betti().components, 1);
+        let lazy = regularize_as(rings, false, true, ctx, inside).unwrap();
+        assert_eq!(lazy.betti().components, 2);
+    }
 }
