@@ -149,18 +149,28 @@ where
     };
     let windings = arr.windings(upward);
     let mut pieces = Vec::with_capacity(arr.groups.len());
+    // The piece directly below each piece's lower end, and the piece at or below each group.
+    let mut under = Vec::with_capacity(arr.groups.len());
+    let mut down: Vec<Option<usize>> = Vec::with_capacity(arr.groups.len());
     for (g, (below, above)) in arr.groups.iter().zip(windings) {
-        match (inside(below), inside(above)) {
-            (false, true) => pieces.push((g.from, g.to)),
-            (true, false) => pieces.push((g.to, g.from)),
-            _ => {}
-        }
+        let beneath = g.below.and_then(|b| down[b]);
+        let piece = match (inside(below), inside(above)) {
+            (false, true) => (g.from, g.to),
+            (true, false) => (g.to, g.from),
+            _ => {
+                down.push(beneath);
+                continue;
+            }
+        };
+        down.push(Some(pieces.len()));
+        pieces.push(piece);
+        under.push(beneath);
     }
     if pieces.is_empty() && inside(W::default()) {
         return Ok(YinSet2::full().with_ctx(ctx));
     }
     let points = arr.into_points(&mut pieces, point);
-    Segmented::numbered(points, pieces).paste_exact(ctx)
+    Segmented::swept(points, pieces, under).paste_exact(ctx)
 }
 
 /// The directed edges of all rings, each ring closed, zero-length edges dropped.

@@ -95,6 +95,44 @@ pub(crate) fn parents<N: Num>(curves: &[Curve<N>], ctx: &N::Ctx) -> Vec<Option<u
         .collect()
 }
 
+/// Parent of each loop in the Hasse diagram (seed 002 Alg. 3) from the plane sweep that made
+/// its pieces, with no point located: pieces `0..` in the order the sweep opened them,
+/// `loop_of[e]` the loop of piece `e`, `below[e]` the piece directly below the lower end of `e`
+/// as it leaves (`None` for the far face), `ascending(e)` if `e` runs from its lower end to its
+/// upper one in sweep order (the set's interior above it). Loops must be Jordan curves,
+/// pairwise almost disjoint, bounding a Yin set.
+///
+/// The first piece f of a loop leaves the loop's first vertex in sweep order, below the other
+/// piece that does; the loop's bounded region is the wedge above f, so the loop is positive iff
+/// f ascends, and the face below f lies outside it. That face lies on the upper side of
+/// k = `below[f]`, on a loop D opened earlier. The curves containing the loop are those
+/// containing that face: D and the curves containing D if D's bounded region lies above k (D
+/// positive iff k ascends), else the curves containing D. Cost: O(pieces).
+pub(crate) fn swept_parents(
+    loop_of: &[usize],
+    below: &[Option<usize>],
+    ascending: impl Fn(usize) -> bool,
+    loops: usize,
+) -> Vec<Option<usize>> {
+    let mut first = vec![usize::MAX; loops];
+    let mut parent = vec![None; loops];
+    for (f, &l) in loop_of.iter().enumerate() {
+        if first[l] != usize::MAX {
+            continue;
+        }
+        first[l] = f;
+        parent[l] = below[f].and_then(|k| {
+            let d = loop_of[k];
+            if ascending(first[d]) == ascending(k) {
+                Some(d)
+            } else {
+                parent[d]
+            }
+        });
+    }
+    parent
+}
+
 /// The atoms of a realizable spadjor (seed 000 Lemma 3.18): R2A-a, each positive curve with the
 /// negative curves it covers; R2A-b, the remaining negative curves as one atom 𝒥⁻.
 pub(crate) fn atoms(positive: &[bool], parent: &[Option<usize>]) -> Vec<Atom> {
@@ -130,9 +168,14 @@ pub(crate) fn atoms(positive: &[bool], parent: &[Option<usize>]) -> Vec<Atom> {
 
 #[cfg(test)]
 mod tests {
+    use super::parents;
     use crate::kernel::Point;
-    use crate::num::{Num, Rational};
-    use crate::yin2::YinSet2;
+    use crate::num::{Float, Num, Rational, Tolerance};
+    use crate::yin2::set::Repr;
+    use crate::yin2::{FillRule, YinSet2};
+    use proptest::prelude::*;
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
 
     fn ring(c: &[(i64, i64)]) -> Vec<Point<Rational>> {
         c.iter().map(|&(x, y)| Point::int(x, y)).collect()
@@ -162,5 +205,84 @@ mod tests {
         assert_eq!(parents[hole], Some(outer));
         assert_eq!(parents[island], Some(hole));
         assert!(YinSet2::<Rational>::empty().parents().is_empty());
+    }
+
+    /// Up to six rings on an 18 × 12 lattice, each a square about one of two centres (squares
+    /// about one centre nest into holes and islands) or a polygon of 3 to 6 points (which
+    /// cross the squares, touch them and each other), in either orientation.
+    fn nesting_rings() -> impl Strategy<Value = Vec<Vec<Point<Rational>>>> {
+        let square = (0i64..2, 1i64..5, any::<bool>()).prop_map(|(i, r, turn)| {
+            let (x, y) = (4 + 9 * i, 6);
+            let mut s = ring(&[
+                (x - r, y - r),
+                (x + r, y - r),
+                (x + r, y + r),
+                (x - r, y + r),
+            ]);
+            if turn {
+                s.reverse();
+            }
+            s
+        });
+        let point = (0i64..18, 0i64..13).prop_map(|(x, y)| Point::int(x, y));
+        let polygon = proptest::collection::vec(point, 3..7);
+        proptest::collection::vec(prop_oneof![4 => square, 1 => polygon], 1..7)
+    }
+
+    /// The parents stored with `y`, checked against [`parents`] (which locates a point of each
+    /// curve in the curves around it); the depth of the deepest curve, and whether two curves
+    /// touch.
+    fn check_parents<N: Num>(y: &YinSet2<N>) -> (usize, bool) {
+        let ctx = N::Ctx::default();
+        let Repr::Spadjor(s) = &y.repr else {
+            return (0, false);
+        };
+        assert_eq!(s.parent, parents(&s.curves, &ctx), "{:?}", s.curves);
+        let depth = |mut i: usize| {
+            let mut d = 0;
+            while let Some(p) = s.parent[i] {
+                (i, d) = (p, d + 1);
+            }
+            d
+        };
+        let mut vertices: Vec<&Point<N>> = s.curves.iter().flat_map(|c| c.vertices()).collect();
+        vertices.sort();
+        let touch = vertices.windows(2).any(|w| w[0] == w[1]);
+        ((0..s.curves.len()).map(depth).max().unwrap_or(0), touch)
+    }
+
+    /// Every fill (exact and float, non-zero and even-odd) comes out of the plane sweep with
+    /// its Hasse diagram ([`super::swept_parents`]): it equals the located one, on inputs whose
+    /// curves nest two deep and touch.
+    #[test]
+    fn the_swept_hasse_diagram_is_the_located_one() {
+        let mut runner = TestRunner::deterministic();
+        let strategy = nesting_rings();
+        let (mut deep, mut touching) = (0, 0);
+        for _ in 0..600 {
+            let rings = strategy.new_tree(&mut runner).expect("a case").current();
+            let float: Vec<Vec<Point<Float>>> = (rings.iter())
+                .map(|r| {
+                    r.iter()
+                        .map(|p| p.to_f64())
+                        .map(|[x, y]| Point::new(Float::new(x), Float::new(y)))
+                        .collect()
+                })
+                .collect();
+            for rule in [FillRule::NonZero, FillRule::EvenOdd] {
+                let exact = YinSet2::from_rings_filled(rings.clone(), rule).expect("finite");
+                let (depth, touch) = check_parents(&exact);
+                deep += usize::from(depth >= 2);
+                touching += usize::from(touch);
+                let eps = Tolerance::new(0.25);
+                check_parents(
+                    &YinSet2::from_rings_filled_with(float.clone(), rule, eps).expect("finite"),
+                );
+            }
+        }
+        assert!(
+            deep >= 40 && touching >= 40,
+            "{deep} nested two deep, {touching} touching"
+        );
     }
 }

@@ -2,13 +2,15 @@
 
 use super::buckets::Buckets;
 use super::error::YinError;
+use super::hasse::swept_parents;
 use super::set::{Spadjor, YinSet2};
 use crate::kernel::{cmp_clockwise_from, Point};
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt, HashSet};
 
-/// Jordan curves as vertex cycles, and the touching points among their vertices.
-type Loops<N> = (Vec<Vec<Point<N>>>, HashSet<Point<N>>);
+/// Jordan curves as vertex cycles, the touching points among their vertices, and the loop
+/// of each piece.
+type Loops<N> = (Vec<Vec<Point<N>>>, HashSet<Point<N>>, Vec<usize>);
 
 /// The result of an infallible operation whose internal invariant failed: a kernel bug,
 /// reported loudly instead of returning a wrong set.
@@ -21,6 +23,8 @@ pub(crate) struct Segmented<N: Num> {
     points: Vec<Point<N>>,
     index: HashMap<Point<N>, usize>,
     edges: Vec<(usize, usize)>,
+    /// For pieces made by a plane sweep: the piece directly below each one's lower end.
+    below: Option<Vec<Option<usize>>>,
 }
 
 impl<N: Num> Segmented<N> {
@@ -29,16 +33,25 @@ impl<N: Num> Segmented<N> {
             points: Vec::new(),
             index: HashMap::new(),
             edges: Vec::new(),
+            below: None,
         }
     }
 
-    /// The pieces `edges` between `points` numbered already (no interning: [`Segmented::id`]
-    /// must not be used on it).
-    pub(crate) fn numbered(points: Vec<Point<N>>, edges: Vec<(usize, usize)>) -> Segmented<N> {
+    /// The pieces `edges` between `points` as a plane sweep made them (no interning:
+    /// [`Segmented::id`] must not be used on it): the points in sweep order, the pieces in the
+    /// order the sweep opened them, `below[e]` the piece directly below the lower end of piece
+    /// `e` as it leaves (`None` for the far face). The sweep gives the Hasse diagram
+    /// ([`swept_parents`]).
+    pub(crate) fn swept(
+        points: Vec<Point<N>>,
+        edges: Vec<(usize, usize)>,
+        below: Vec<Option<usize>>,
+    ) -> Segmented<N> {
         Segmented {
             points,
             index: HashMap::new(),
             edges,
+            below: Some(below),
         }
     }
 
@@ -65,8 +78,15 @@ impl<N: Num> Segmented<N> {
         if self.edges.is_empty() {
             return Ok(YinSet2::empty().with_ctx(ctx));
         }
-        let (loops, touching) = self.loops(&ctx)?;
-        let (spadjor, _) = Spadjor::assemble(loops, &touching, &ctx);
+        let (loops, touching, loop_of) = self.loops(&ctx)?;
+        let spadjor = match &self.below {
+            Some(below) => {
+                let ascending = |e: usize| self.edges[e].0 < self.edges[e].1;
+                let parent = swept_parents(&loop_of, below, ascending, loops.len());
+                Spadjor::assemble_nested(loops, &parent, &touching, &ctx)
+            }
+            None => Spadjor::assemble(loops, &touching, &ctx).0,
+        };
         Ok(YinSet2::from_spadjor(spadjor, ctx))
     }
 
@@ -100,6 +120,7 @@ impl<N: Num> Segmented<N> {
         let mut used = vec![false; self.edges.len()];
         let mut pos = vec![usize::MAX; n];
         let mut loops = Vec::new();
+        let mut loop_of = vec![usize::MAX; self.edges.len()];
         for first in 0..self.edges.len() {
             if used[first] {
                 continue;
@@ -114,6 +135,7 @@ impl<N: Num> Segmented<N> {
                     let cycle = path.split_off(pos[v]);
                     for &e in &cycle {
                         pos[self.edges[e].0] = usize::MAX;
+                        loop_of[e] = loops.len();
                     }
                     loops.push(
                         cycle
@@ -137,7 +159,7 @@ impl<N: Num> Segmented<N> {
                 }
             }
         }
-        Ok((loops, touching))
+        Ok((loops, touching, loop_of))
     }
 
     /// S2R-b: of the unused pieces leaving the end of `incoming`, the one with the smallest

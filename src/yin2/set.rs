@@ -43,6 +43,35 @@ impl<N: Num> Spadjor<N> {
         touching: &HashSet<Point<N>>,
         ctx: &N::Ctx,
     ) -> (Spadjor<N>, Vec<usize>) {
+        Self::assemble_as(loops, touching, ctx, |curves, _| parents(curves, ctx))
+    }
+
+    /// [`Spadjor::assemble`] with the Hasse diagram known already: `parent[l]` the parent of
+    /// loop `l` among `loops`.
+    pub(crate) fn assemble_nested(
+        loops: Vec<Vec<Point<N>>>,
+        parent: &[Option<usize>],
+        touching: &HashSet<Point<N>>,
+        ctx: &N::Ctx,
+    ) -> Spadjor<N> {
+        let renumber = |_: &[Curve<N>], origin: &[usize]| {
+            let mut rank = vec![0; origin.len()];
+            for (i, &l) in origin.iter().enumerate() {
+                rank[l] = i;
+            }
+            origin.iter().map(|&l| parent[l].map(|p| rank[p])).collect()
+        };
+        Self::assemble_as(loops, touching, ctx, renumber).0
+    }
+
+    /// [`Spadjor::assemble`] with the parents of the canonical curves given by `hasse` (from the
+    /// curves and the loop each came from).
+    fn assemble_as(
+        loops: Vec<Vec<Point<N>>>,
+        touching: &HashSet<Point<N>>,
+        ctx: &N::Ctx,
+        hasse: impl FnOnce(&[Curve<N>], &[usize]) -> Vec<Option<usize>>,
+    ) -> (Spadjor<N>, Vec<usize>) {
         let mut curves: Vec<(Curve<N>, usize)> = loops
             .into_iter()
             .enumerate()
@@ -51,7 +80,7 @@ impl<N: Num> Spadjor<N> {
         curves.sort();
         let (curves, origin): (Vec<Curve<N>>, Vec<usize>) = curves.into_iter().unzip();
         let positive: Vec<bool> = curves.iter().map(|c| c.is_positive()).collect();
-        let parent = parents(&curves, ctx);
+        let parent = hasse(&curves, &origin);
         let atoms = atoms(&positive, &parent);
         let betti = Betti::of_atoms(&atoms);
         // Bounded iff the outermost curves are positive (seed 000 Lemma 3.18: else the

@@ -214,7 +214,7 @@ proptest! {
     fn first_repetition_equals_grow_then_divide(pieces in piece_sets()) {
         let seed = seed_loops(&pieces);
         prop_assert!(seed.nested, "a grown loop is not nested: {:?}", pieces);
-        let (loops, _) = segmented(&pieces)
+        let (loops, _, _) = segmented(&pieces)
             .loops(&())
             .map_err(|e| TestCaseError::fail(format!("{e} on {pieces:?}")))?;
         let by_point: HashMap<Point<Rational>, V> =
