@@ -319,6 +319,55 @@ mod tests {
         }
     }
 
+    /// A grid point at one of three scales: a small lattice (where segments run parallel to
+    /// the axes and cross at pixel centres and edges), 2³⁹ and 2⁵⁰ (where `i128` overflows and
+    /// big integers take over).
+    fn scaled_point() -> impl Strategy<Value = G> {
+        prop_oneof![
+            (0..8i64, 0..8i64),
+            (-(1i64 << 39)..1 << 39, -(1i64 << 39)..1 << 39),
+            (-(1i64 << 50)..1 << 50, -(1i64 << 50)..1 << 50),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The pixel of a crossing is its exact rational crossing point rounded to the nearest
+        /// grid point, ties up. The second segment is drawn anywhere, near the first (so that
+        /// pairs at large coordinates cross often), or parallel to an axis through the
+        /// middle of the first's box; the first is flattened onto an axis a third of the time.
+        #[test]
+        fn crossing_pixels_round_the_exact_crossing(
+            s in (scaled_point(), scaled_point()),
+            t in (scaled_point(), scaled_point()),
+            how in 0..4u8,
+            flat in 0..3u8,
+        ) {
+            let s = match flat {
+                0 => (s.0, (s.1.0, s.0.1)),
+                _ => s,
+            };
+            let (lo, hi) = ((s.0.0.min(s.1.0), s.0.1.min(s.1.1)), (s.0.0.max(s.1.0), s.0.1.max(s.1.1)));
+            let mid = ((lo.0 + hi.0) / 2, (lo.1 + hi.1) / 2);
+            let t = match how {
+                0 => t,
+                1 => ((s.0.0 + t.0.0 % 8, s.1.1 - t.0.1 % 8), (s.1.0 - t.1.0 % 8, s.0.1 + t.1.1 % 8)),
+                2 => ((mid.0, lo.1 - 1), (mid.0, hi.1 + 1)),
+                _ => ((lo.0 - 1, mid.1), (hi.0 + 1, mid.1)),
+            };
+            let p = point::<Rational>;
+            let Contact::Crossing(x) = classify(&p(s.0), &p(s.1), &p(t.0), &p(t.1), &()) else {
+                return Ok(());
+            };
+            let round = |v: &Rational| {
+                let twice = BigInt::from(2) * v.numer() + v.denom();
+                twice.div_floor(&(BigInt::from(2) * v.denom())).to_i64().expect("a grid point")
+            };
+            prop_assert_eq!(crossing_pixel(s, t), (round(&x.x), round(&x.y)));
+        }
+    }
+
     /// The pieces of `a` as (lower end, upper end, piece below, edges).
     fn groups<P>(a: &Arrangement<P>) -> Vec<(usize, usize, Option<usize>, Vec<usize>)> {
         a.groups
