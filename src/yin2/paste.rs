@@ -121,19 +121,21 @@ impl<N: Num> Segmented<N> {
         let mut pos = vec![usize::MAX; n];
         let mut loops = Vec::new();
         let mut loop_of = vec![usize::MAX; self.edges.len()];
+        let mut path = Vec::new();
         for first in 0..self.edges.len() {
             if used[first] {
                 continue;
             }
             used[first] = true;
             pos[self.edges[first].0] = 0;
-            let mut path = vec![first];
+            path.push(first);
             while let Some(&last) = path.last() {
                 let v = self.edges[last].1;
                 if pos[v] != usize::MAX {
                     // S2R-c: the path came back to v; cut the loop off.
-                    let cycle = path.split_off(pos[v]);
-                    for &e in &cycle {
+                    let start = pos[v];
+                    let cycle = &path[start..];
+                    for &e in cycle {
                         pos[self.edges[e].0] = usize::MAX;
                         loop_of[e] = loops.len();
                     }
@@ -143,6 +145,7 @@ impl<N: Num> Segmented<N> {
                             .map(|&e| self.points[self.edges[e].0].clone())
                             .collect(),
                     );
+                    path.truncate(start);
                     continue;
                 }
                 match self.next_piece(last, out.get(v), &used, ctx) {
