@@ -133,20 +133,16 @@ pub(crate) fn canonical_curve<N: Num>(
 ) -> Curve<N> {
     loop {
         let n = v.len();
-        if n <= 3 {
+        let straight = |k: usize| {
+            let (p, q, r) = (&v[(k + n - 1) % n], &v[k], &v[(k + 1) % n]);
+            !keep.contains(q)
+                && orient(p, q, r, ctx) == Ordering::Equal
+                && on_closed_segment(p, r, q)
+        };
+        if n <= 3 || !(0..n).any(straight) {
             break;
         }
-        let drop: Vec<bool> = (0..n)
-            .map(|k| {
-                let (p, q, r) = (&v[(k + n - 1) % n], &v[k], &v[(k + 1) % n]);
-                !keep.contains(q)
-                    && orient(p, q, r, ctx) == Ordering::Equal
-                    && on_closed_segment(p, r, q)
-            })
-            .collect();
-        if !drop.iter().any(|&d| d) {
-            break;
-        }
+        let drop: Vec<bool> = (0..n).map(straight).collect();
         // Never drop two neighbours in one pass where that would leave fewer than 3 vertices.
         let kept = drop.iter().filter(|&&d| !d).count();
         if kept < 3 {
