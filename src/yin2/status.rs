@@ -9,32 +9,41 @@ pub(crate) const NIL: usize = usize::MAX;
 // the current event, and an edge is removed through its node (parent links), so two stored edges
 // are never compared.
 pub(crate) struct Status {
-    left: Vec<usize>,
-    right: Vec<usize>,
-    up: Vec<usize>,
-    prio: Vec<u64>,
+    /// The links and priority of each edge's node, side by side (one cache line holds two).
+    nodes: Vec<Node>,
     /// Whether each edge is in the status.
     pub live: Vec<bool>,
     /// The root of the main tree.
     pub root: usize,
 }
 
+/// A node of the treap: its children, its parent and its priority.
+#[derive(Clone, Copy)]
+struct Node {
+    left: usize,
+    right: usize,
+    up: usize,
+    prio: u64,
+}
+
 impl Status {
     /// An empty status for the edges `0..n` (priorities from a fixed hash: deterministic output).
     pub fn new(n: usize) -> Status {
-        let prio = (0..n as u64)
+        let nodes = (0..n as u64)
             .map(|i| {
                 let mut z = i.wrapping_add(0x9e37_79b9_7f4a_7c15);
                 z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
                 z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-                z ^ (z >> 31)
+                Node {
+                    left: NIL,
+                    right: NIL,
+                    up: NIL,
+                    prio: z ^ (z >> 31),
+                }
             })
             .collect();
         Status {
-            left: vec![NIL; n],
-            right: vec![NIL; n],
-            up: vec![NIL; n],
-            prio,
+            nodes,
             live: vec![false; n],
             root: NIL,
         }
@@ -42,9 +51,9 @@ impl Status {
 
     /// Detach node `x` from every link (before it is re-inserted or dropped).
     pub fn reset(&mut self, x: usize) {
-        self.left[x] = NIL;
-        self.right[x] = NIL;
-        self.up[x] = NIL;
+        self.nodes[x].left = NIL;
+        self.nodes[x].right = NIL;
+        self.nodes[x].up = NIL;
     }
 
     /// Split treap `t` into the nodes where the monotone predicate `goes_right` is false, then
@@ -59,30 +68,30 @@ impl Status {
             if goes_right(t) {
                 if rhook == NIL {
                     rroot = t;
-                    self.up[t] = NIL;
+                    self.nodes[t].up = NIL;
                 } else {
-                    self.left[rhook] = t;
-                    self.up[t] = rhook;
+                    self.nodes[rhook].left = t;
+                    self.nodes[t].up = rhook;
                 }
                 rhook = t;
-                t = self.left[t];
+                t = self.nodes[t].left;
             } else {
                 if lhook == NIL {
                     lroot = t;
-                    self.up[t] = NIL;
+                    self.nodes[t].up = NIL;
                 } else {
-                    self.right[lhook] = t;
-                    self.up[t] = lhook;
+                    self.nodes[lhook].right = t;
+                    self.nodes[t].up = lhook;
                 }
                 lhook = t;
-                t = self.right[t];
+                t = self.nodes[t].right;
             }
         }
         if lhook != NIL {
-            self.right[lhook] = NIL;
+            self.nodes[lhook].right = NIL;
         }
         if rhook != NIL {
-            self.left[rhook] = NIL;
+            self.nodes[rhook].left = NIL;
         }
         (lroot, rroot)
     }
@@ -95,7 +104,7 @@ impl Status {
                 (b, true)
             } else if b == NIL {
                 (a, true)
-            } else if self.prio[a] >= self.prio[b] {
+            } else if self.nodes[a].prio >= self.nodes[b].prio {
                 (a, false)
             } else {
                 (b, false)
@@ -103,12 +112,12 @@ impl Status {
             if hook == NIL {
                 root = x;
             } else if hook_right {
-                self.right[hook] = x;
+                self.nodes[hook].right = x;
             } else {
-                self.left[hook] = x;
+                self.nodes[hook].left = x;
             }
             if x != NIL {
-                self.up[x] = hook;
+                self.nodes[x].up = hook;
             }
             if done {
                 return root;
@@ -116,10 +125,10 @@ impl Status {
             hook = x;
             if x == a {
                 hook_right = true;
-                a = self.right[a];
+                a = self.nodes[a].right;
             } else {
                 hook_right = false;
-                b = self.left[b];
+                b = self.nodes[b].left;
             }
         }
     }
@@ -141,17 +150,17 @@ impl Status {
 
     /// Remove node `x` from the main tree through its parent link.
     pub fn remove(&mut self, x: usize) {
-        let m = self.merge(self.left[x], self.right[x]);
-        let par = self.up[x];
+        let m = self.merge(self.nodes[x].left, self.nodes[x].right);
+        let par = self.nodes[x].up;
         if m != NIL {
-            self.up[m] = par;
+            self.nodes[m].up = par;
         }
         if par == NIL {
             self.root = m;
-        } else if self.left[par] == x {
-            self.left[par] = m;
+        } else if self.nodes[par].left == x {
+            self.nodes[par].left = m;
         } else {
-            self.right[par] = m;
+            self.nodes[par].right = m;
         }
         self.reset(x);
         self.live[x] = false;
@@ -161,20 +170,25 @@ impl Status {
     /// leaves it: the order of the others is kept, and `new` takes `x`'s priority, so the
     /// heap order holds.
     pub fn replace(&mut self, x: usize, new: usize) {
-        let (l, r, par) = (self.left[x], self.right[x], self.up[x]);
-        (self.left[new], self.right[new], self.up[new]) = (l, r, par);
-        self.prio.swap(x, new);
+        let (l, r, par) = (self.nodes[x].left, self.nodes[x].right, self.nodes[x].up);
+        (
+            self.nodes[new].left,
+            self.nodes[new].right,
+            self.nodes[new].up,
+        ) = (l, r, par);
+        let (px, pn) = (self.nodes[x].prio, self.nodes[new].prio);
+        (self.nodes[x].prio, self.nodes[new].prio) = (pn, px);
         for child in [l, r] {
             if child != NIL {
-                self.up[child] = new;
+                self.nodes[child].up = new;
             }
         }
         if par == NIL {
             self.root = new;
-        } else if self.left[par] == x {
-            self.left[par] = new;
+        } else if self.nodes[par].left == x {
+            self.nodes[par].left = new;
         } else {
-            self.right[par] = new;
+            self.nodes[par].right = new;
         }
         self.reset(x);
         self.live[x] = false;
@@ -183,38 +197,38 @@ impl Status {
 
     /// The node before `x` in the main tree (`NIL` if it is the first).
     pub fn before(&self, mut x: usize) -> usize {
-        if self.left[x] != NIL {
-            return self.last(self.left[x]);
+        if self.nodes[x].left != NIL {
+            return self.last(self.nodes[x].left);
         }
-        while self.up[x] != NIL && self.left[self.up[x]] == x {
-            x = self.up[x];
+        while self.nodes[x].up != NIL && self.nodes[self.nodes[x].up].left == x {
+            x = self.nodes[x].up;
         }
-        self.up[x]
+        self.nodes[x].up
     }
 
     /// The node after `x` in the main tree (`NIL` if it is the last).
     pub fn after(&self, mut x: usize) -> usize {
-        if self.right[x] != NIL {
-            return self.first(self.right[x]);
+        if self.nodes[x].right != NIL {
+            return self.first(self.nodes[x].right);
         }
-        while self.up[x] != NIL && self.right[self.up[x]] == x {
-            x = self.up[x];
+        while self.nodes[x].up != NIL && self.nodes[self.nodes[x].up].right == x {
+            x = self.nodes[x].up;
         }
-        self.up[x]
+        self.nodes[x].up
     }
 
     /// The first node of treap `t` (`NIL` if empty).
     pub fn first(&self, mut t: usize) -> usize {
-        while t != NIL && self.left[t] != NIL {
-            t = self.left[t];
+        while t != NIL && self.nodes[t].left != NIL {
+            t = self.nodes[t].left;
         }
         t
     }
 
     /// The last node of treap `t` (`NIL` if empty).
     pub fn last(&self, mut t: usize) -> usize {
-        while t != NIL && self.right[t] != NIL {
-            t = self.right[t];
+        while t != NIL && self.nodes[t].right != NIL {
+            t = self.nodes[t].right;
         }
         t
     }
@@ -226,11 +240,11 @@ impl Status {
         while x != NIL || !stack.is_empty() {
             while x != NIL {
                 stack.push(x);
-                x = self.left[x];
+                x = self.nodes[x].left;
             }
             if let Some(y) = stack.pop() {
                 out.push(y);
-                x = self.right[y];
+                x = self.nodes[y].right;
             }
         }
     }
