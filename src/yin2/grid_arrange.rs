@@ -231,7 +231,13 @@ impl GridSweep<'_> {
     /// Report neighbours `s` and `t` if their interiors cross away from every event (at an
     /// event, both are cut: the crossing is a vertex of the arrangement).
     fn check(&mut self, s: usize, t: usize) {
-        if s == NIL || t == NIL || !cross_properly(self.seg[s], self.seg[t]) {
+        if s == NIL || t == NIL {
+            return;
+        }
+        // Neighbours apart in y (the common case) cannot cross.
+        let ys = |(a, b): (G, G)| (a.1.min(b.1), a.1.max(b.1));
+        let ((s0, s1), (t0, t1)) = (ys(self.seg[s]), ys(self.seg[t]));
+        if s1 <= t0 || t1 <= s0 || !cross_properly(self.seg[s], self.seg[t]) {
             return;
         }
         // The crossing is a grid point exactly when its pixel's centre lies on both segments.
