@@ -19,11 +19,13 @@ impl Buckets {
             start[k] += start[k - 1];
         }
         let mut values = vec![0; start[keys]];
-        let mut next = start.clone();
+        // Each start moves up to the next key's as its values are placed, then back down one.
         for (k, v) in items {
-            values[next[k]] = v;
-            next[k] += 1;
+            values[start[k]] = v;
+            start[k] += 1;
         }
+        start.rotate_right(1);
+        start[0] = 0;
         Buckets { start, values }
     }
 
