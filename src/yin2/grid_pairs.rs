@@ -120,7 +120,7 @@ impl Rows {
         }
     }
 
-    /// The strip of height `y` (clamped to the range).
+    /// The strip holding height `y` (clamped to the range).
     fn of_y(&self, y: i64) -> usize {
         (((y.max(self.bottom) - self.bottom) >> self.shift) as usize).min(self.count - 1)
     }
