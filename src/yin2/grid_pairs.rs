@@ -164,8 +164,8 @@ impl Open {
             } else {
                 strip.len()
             };
-            work += hi.saturating_sub(lo) + 1;
-            for c in strip.get(lo..hi).unwrap_or_default() {
+            work += hi - lo + 1;
+            for c in &strip[lo..hi] {
                 if c.1 >= b.0 && b.2 <= c.3 {
                     meet(c);
                 }
