@@ -28,15 +28,6 @@ impl<N: Num> Curve<N> {
         self.vertices.is_empty()
     }
 
-    /// The same curve with every vertex moved by `f`, which must preserve the lexicographic
-    /// order of points (a translation composed with a positive scaling), so that the moved
-    /// curve is still in canonical form.
-    pub(crate) fn map_points<M: Num>(&self, f: impl Fn(&Point<N>) -> Point<M>) -> Curve<M> {
-        Curve {
-            vertices: self.vertices.iter().map(f).collect(),
-        }
-    }
-
     /// The directed edges `(v_k, v_{k+1})`, closing edge last.
     pub fn edges(&self) -> impl Iterator<Item = (&Point<N>, &Point<N>)> {
         let n = self.vertices.len();

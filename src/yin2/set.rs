@@ -99,19 +99,6 @@ impl<N: Num> Spadjor<N> {
         )
     }
 
-    /// The same spadjor with every vertex moved by `f`, an order-preserving map (a translation
-    /// composed with a positive scaling): canonical form, Hasse diagram and atoms carry over.
-    pub(crate) fn map_points<M: Num>(&self, f: impl Fn(&Point<N>) -> Point<M>) -> Spadjor<M> {
-        Spadjor {
-            curves: self.curves.iter().map(|c| c.map_points(&f)).collect(),
-            positive: self.positive.clone(),
-            parent: self.parent.clone(),
-            atoms: self.atoms.clone(),
-            betti: self.betti.clone(),
-            bounded: self.bounded,
-        }
-    }
-
     /// All directed edges of all curves.
     pub(crate) fn edges(&self) -> Vec<(&Point<N>, &Point<N>)> {
         self.curves.iter().flat_map(|c| c.edges()).collect()
@@ -162,21 +149,6 @@ impl<N: Num> YinSet2<N> {
     /// [`crate::num::Tolerance`]); `None` in exact mode.
     pub fn grid(&self) -> Option<f64> {
         N::grid(&self.ctx)
-    }
-
-    /// The same set in number type `M`, every vertex moved by `f` (an order-preserving map:
-    /// a translation composed with a positive scaling), with context `ctx`.
-    pub(crate) fn map_points<M: Num>(
-        &self,
-        f: impl Fn(&Point<N>) -> Point<M>,
-        ctx: M::Ctx,
-    ) -> YinSet2<M> {
-        let repr = match &self.repr {
-            Repr::Empty => Repr::Empty,
-            Repr::Full => Repr::Full,
-            Repr::Spadjor(s) => Repr::Spadjor(s.map_points(f)),
-        };
-        YinSet2 { repr, ctx }
     }
 
     /// True for 0̂.

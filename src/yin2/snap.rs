@@ -5,13 +5,13 @@
 use super::buckets::Buckets;
 use super::error::YinError;
 use super::fill::fill_arranged;
-use super::grid_arrange::{arrange_grid, crossing_pixel, unit, G};
+use super::grid_arrange::{arrange_grid, crossing_pixel, G};
 use super::grid_pairs::grid_crossing_pairs;
 use super::hot_pixels::HotPixels;
 use super::set::YinSet2;
 use super::winding::{Pair, Winding};
 use crate::kernel::Point;
-use crate::num::{Float, Num, Tolerance};
+use crate::num::Num;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// A closed ring of points (the last one joined to the first) with its label.
@@ -79,9 +79,11 @@ fn regularize_as<'a, N: Num>(
             a < b
         };
         let inside = |w: Pair| inside(w.0);
-        let exact = Tolerance::default();
-        let unit_set = fill_arranged(arr, unit, label, ascending, exact, inside)?;
-        return Ok(unit_set.map_points(|p| frame.to_point(p), ctx));
+        // The grid points are exact numbers and the map from the grid is a translation and a
+        // scaling by a power of two: the exact predicates decide the same on either side.
+        let point = |k: G| frame.at(k);
+        let set = fill_arranged(arr, point, label, ascending, N::Ctx::default(), inside)?;
+        return Ok(set.with_ctx(ctx));
     }
 }
 
@@ -141,11 +143,6 @@ impl<N: Num> Frame<N> {
     fn to_grid(&self, p: &Point<N>) -> G {
         let k = |v: &N| self.snap(v.to_f64());
         (k(&p.x) - self.origin.0, k(&p.y) - self.origin.1)
-    }
-
-    /// The point of a vertex given in grid units relative to the origin (exact).
-    fn to_point(&self, p: &Point<Float>) -> Point<N> {
-        self.at((p.x.get() as i64, p.y.get() as i64))
     }
 
     /// The point of grid point `k` (exact).
@@ -429,6 +426,7 @@ impl Route<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::{Float, Tolerance};
     use crate::yin2::set::Repr;
     use crate::yin2::FillRule;
     use proptest::prelude::*;
