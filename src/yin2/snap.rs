@@ -201,37 +201,36 @@ impl Snap {
         let by_left = Buckets::new(vertices.len(), lower_ends);
         let family = |k: usize| Some(segments[k].1).filter(|&label| apart(label));
         let pairs = grid_crossing_pairs(&grid, by_left.all(), family);
-        let pixels: Vec<G> = pairs
+        // The pixel of each crossing pair, with the pair's index, sorted.
+        let mut crossings: Vec<(G, usize)> = pairs
             .iter()
-            .map(|&(i, j)| crossing_pixel(grid[i], grid[j]))
+            .enumerate()
+            .map(|(k, &(i, j))| (crossing_pixel(grid[i], grid[j]), k))
             .collect();
-        let mut crossings = pixels.clone();
-        crossings.sort_unstable();
-        crossings.dedup();
-        // The vertices and the crossings merged, each pixel once, and where each vertex went.
+        sort_by_grid(&mut crossings, |c| c.0);
+        // The vertices and the crossings merged, each pixel once; where each vertex went, and
+        // where the pixel of each crossing pair is.
         let mut hot: Vec<G> = Vec::with_capacity(vertices.len() + crossings.len());
         let mut at_hot = Vec::with_capacity(vertices.len());
+        let mut at = vec![0; crossings.len()];
         let mut next = crossings.iter().peekable();
         for &v in &vertices {
-            while let Some(&c) = next.next_if(|&&c| c < v) {
-                hot.push(c);
+            while let Some(&(c, k)) = next.next_if(|c| c.0 < v) {
+                at[k] = push_new(&mut hot, c);
             }
-            next.next_if_eq(&&v);
             at_hot.push(hot.len());
             hot.push(v);
+            while let Some(&(_, k)) = next.next_if(|c| c.0 == v) {
+                at[k] = hot.len() - 1;
+            }
         }
-        hot.extend(next);
+        for &(c, k) in next {
+            at[k] = push_new(&mut hot, c);
+        }
         for end in &mut ends {
             *end = (at_hot[end.0], at_hot[end.1]);
         }
         let lazy = lazy.then(|| {
-            let at: Vec<usize> = pixels
-                .iter()
-                .map(|c| {
-                    hot.binary_search(c)
-                        .expect("crossing pixels are hot pixels")
-                })
-                .collect();
             let own = pairs
                 .iter()
                 .zip(&at)
@@ -344,6 +343,31 @@ impl Snap {
 /// 8 in unit tests, so that both ways are taken.
 const RADIX_FROM: usize = if cfg!(test) { 8 } else { 1024 };
 
+/// Pushes `p` onto the sorted `hot` unless it is the last one there; its index in `hot`.
+fn push_new(hot: &mut Vec<G>, p: G) -> usize {
+    if hot.last() != Some(&p) {
+        hot.push(p);
+    }
+    hot.len() - 1
+}
+
+/// Sorts `items` by their grid point `key`: by radix from [`RADIX_FROM`] items, each
+/// coordinate counted from its least value, so that the high digits all keys share (the same
+/// for negative and positive values around the local origin) are skipped.
+fn sort_by_grid<T>(items: &mut [T], key: impl Fn(&T) -> G) {
+    if items.len() < RADIX_FROM {
+        items.sort_unstable_by_key(key);
+        return;
+    }
+    let least = items
+        .iter()
+        .map(&key)
+        .fold((i64::MAX, i64::MAX), |m, k| (m.0.min(k.0), m.1.min(k.1)));
+    // Differences from the least are non-negative and below 2⁶³ (coordinates below 2⁵²).
+    let from_least = |k: G| ((k.0 - least.0) as u64, (k.1 - least.1) as u64);
+    radsort::sort_by_key(items, |t| from_least(key(t)));
+}
+
 /// The distinct ends of the grid `segments`, sorted, and the indices in them of every
 /// segment's ends. A segment's end that is the next one's start (along a curve) is not sorted
 /// again.
@@ -357,11 +381,7 @@ fn rank_ends(segments: &[(G, G)]) -> (Vec<G>, Vec<(usize, usize)>) {
             coded.push((b, 2 * k + 1));
         }
     }
-    if coded.len() < RADIX_FROM {
-        coded.sort_unstable_by_key(|e| e.0);
-    } else {
-        radsort::sort_by_key(&mut coded, |e| e.0);
-    }
+    sort_by_grid(&mut coded, |e| e.0);
     let mut vertices: Vec<G> = Vec::with_capacity(coded.len());
     let mut ends = vec![(0, 0); segments.len()];
     for (g, code) in coded {
@@ -427,6 +447,7 @@ impl Route<'_> {
 mod tests {
     use super::*;
     use crate::num::{Float, Tolerance};
+    use crate::yin2::grid_arrange::cross_properly;
     use crate::yin2::set::Repr;
     use crate::yin2::FillRule;
     use proptest::prelude::*;
@@ -444,6 +465,33 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig { cases: 300, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The hot pixels are sorted and distinct, each segment's ends are found at `ends`,
+        /// and the pixels each segment is rerouted through first (lazily) are exactly the
+        /// pixels of its crossings, against every pair tested directly: segments on a 13×13
+        /// lattice, whose crossings' pixels are often other segments' ends (both sorts taken).
+        #[test]
+        fn lazy_stops_are_the_pixels_of_each_segments_crossings(
+            drawn in proptest::collection::vec(((0..=12i64, 0..=12i64), (0..=12i64, 0..=12i64)), 1..30),
+        ) {
+            let segments: Vec<Labelled> =
+                drawn.into_iter().filter(|s| s.0 != s.1).map(|s| (s, 0)).collect();
+            let snap = Snap::new(segments.clone(), |_| false, true);
+            prop_assert!(snap.hot.windows(2).all(|w| w[0] < w[1]));
+            let own = snap.lazy.as_ref().expect("lazy rerouting");
+            for (k, &(s, _)) in segments.iter().enumerate() {
+                prop_assert_eq!((snap.hot[snap.ends[k].0], snap.hot[snap.ends[k].1]), s);
+                let mut want: Vec<G> = segments
+                    .iter()
+                    .filter(|t| cross_properly(s, t.0))
+                    .map(|t| crossing_pixel(s, t.0))
+                    .collect();
+                let mut got: Vec<G> = own.get(k).iter().map(|&h| snap.hot[h]).collect();
+                want.sort_unstable();
+                got.sort_unstable();
+                prop_assert_eq!(got, want);
+            }
+        }
 
         /// Skipping the crossing tests between segments of one valid operand (`valid`) changes
         /// nothing: the meet, join and difference of two float sets whose vertices snapping
