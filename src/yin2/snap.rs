@@ -351,21 +351,23 @@ fn push_new(hot: &mut Vec<G>, p: G) -> usize {
     hot.len() - 1
 }
 
-/// Sorts `items` by their grid point `key`: by radix from [`RADIX_FROM`] items, each
-/// coordinate counted from its least value, so that the high digits all keys share (the same
-/// for negative and positive values around the local origin) are skipped.
+/// Sorts `items` by their grid point `key`: from [`RADIX_FROM`] items, by radix on x alone
+/// (counting one digit of every key costs a pass over them, and x mostly decides), then by y
+/// within each run of one x.
 fn sort_by_grid<T>(items: &mut [T], key: impl Fn(&T) -> G) {
     if items.len() < RADIX_FROM {
         items.sort_unstable_by_key(key);
         return;
     }
-    let least = items
-        .iter()
-        .map(&key)
-        .fold((i64::MAX, i64::MAX), |m, k| (m.0.min(k.0), m.1.min(k.1)));
-    // Differences from the least are non-negative and below 2⁶³ (coordinates below 2⁵²).
-    let from_least = |k: G| ((k.0 - least.0) as u64, (k.1 - least.1) as u64);
-    radsort::sort_by_key(items, |t| from_least(key(t)));
+    // By x counted from the least (below 2⁶³: coordinates are below 2⁵²), so that the high
+    // digits all keys share are skipped; then each run of one x by y.
+    let least = items.iter().map(|t| key(t).0).min().unwrap_or(0);
+    radsort::sort_by_key(items, |t| (key(t).0 - least) as u64);
+    for run in items.chunk_by_mut(|a, b| key(a).0 == key(b).0) {
+        if run.len() > 1 {
+            run.sort_unstable_by_key(|t| key(t).1);
+        }
+    }
 }
 
 /// The distinct ends of the grid `segments`, sorted, and the indices in them of every
