@@ -200,15 +200,21 @@ fn filtered(det: f64, permanent: f64, bound: f64, slack: f64) -> Option<Ordering
 }
 
 /// The sign of (b − a) × (c − a) for `f64` points, exactly: a static filter on the values
-/// ([`filtered`]), else [`exact_sign_f64`].
+/// ([`filtered`]), inlined, else [`unfiltered_orient_f64`].
+#[inline]
 pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
     let left = (a[0] - c[0]) * (b[1] - c[1]);
     let right = (a[1] - c[1]) * (b[0] - c[0]);
     let bound = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
     // An underflowed product is off by at most 2^-1075, far below the bound.
-    if let Some(sign) = filtered(left - right, left.abs() + right.abs(), bound, 0.0) {
-        return sign;
-    }
+    filtered(left - right, left.abs() + right.abs(), bound, 0.0)
+        .unwrap_or_else(|| unfiltered_orient_f64(a, b, c))
+}
+
+/// [`exact_orient_f64`] where its filter failed: [`exact_sign_f64`].
+#[cold]
+#[inline(never)]
+fn unfiltered_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
     // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
     // product of two stays representable, and none overflows.
     let robust_sign = |p: [f64; 6]| {
