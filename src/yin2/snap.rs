@@ -351,22 +351,82 @@ fn push_new(hot: &mut Vec<G>, p: G) -> usize {
     hot.len() - 1
 }
 
-/// Sorts `items` by their grid point `key`: from [`RADIX_FROM`] items, by radix on x alone
-/// (counting one digit of every key costs a pass over them, and x mostly decides), then by y
-/// within each run of one x.
+/// Sorts `items` by their grid point `key`: from [`RADIX_FROM`] items by radix, on one word
+/// holding both coordinates where they fit ([`Packing`]), else on x alone (counting one digit
+/// of every key costs a pass over them, and x mostly decides) and then by y within each run of
+/// one x.
 fn sort_by_grid<T>(items: &mut [T], key: impl Fn(&T) -> G) {
     if items.len() < RADIX_FROM {
         items.sort_unstable_by_key(key);
         return;
     }
-    // By x counted from the least (below 2⁶³: coordinates are below 2⁵²), so that the high
-    // digits all keys share are skipped; then each run of one x by y.
-    let least = items.iter().map(|t| key(t).0).min().unwrap_or(0);
-    radsort::sort_by_key(items, |t| (key(t).0 - least) as u64);
-    for run in items.chunk_by_mut(|a, b| key(a).0 == key(b).0) {
-        if run.len() > 1 {
-            run.sort_unstable_by_key(|t| key(t).1);
+    let packing = Packing::of(key(&items[0]), items.iter().map(&key));
+    match packing.bits() {
+        0..=32 => radsort::sort_by_key(items, |t| packing.pack(key(t)) as u32),
+        33..=64 => radsort::sort_by_key(items, |t| packing.pack(key(t))),
+        _ => {
+            let least = packing.least.0;
+            radsort::sort_by_key(items, |t| (key(t).0 - least) as u64);
+            for run in items.chunk_by_mut(|a, b| key(a).0 == key(b).0) {
+                if run.len() > 1 {
+                    run.sort_unstable_by_key(|t| key(t).1);
+                }
+            }
         }
+    }
+}
+
+/// Grid points as one ordered word: each coordinate counted from its least value and divided
+/// by the power of two that divides all of them (points on a coarser lattice than the grid),
+/// x above y.
+struct Packing {
+    least: G,
+    shift: (u32, u32),
+    /// The bits of y's field.
+    low: u32,
+    /// The bits of x's field.
+    high: u32,
+}
+
+impl Packing {
+    /// The packing of `points`, of which `first` is one.
+    fn of(first: G, points: impl Iterator<Item = G>) -> Packing {
+        // Differences from the first point share their low zero bits with those from the least.
+        let (least, most, spread) = points.fold((first, first, (0u64, 0u64)), |(l, m, d), k| {
+            let step = |v: i64, f: i64| v.wrapping_sub(f) as u64;
+            (
+                (l.0.min(k.0), l.1.min(k.1)),
+                (m.0.max(k.0), m.1.max(k.1)),
+                (d.0 | step(k.0, first.0), d.1 | step(k.1, first.1)),
+            )
+        });
+        let shift = (
+            spread.0.trailing_zeros() % 64,
+            spread.1.trailing_zeros() % 64,
+        );
+        // Coordinates are below 2⁵²: spans are below 2⁵³.
+        let width = |span: i64, shift: u32| 64 - ((span as u64) >> shift).leading_zeros();
+        Packing {
+            least,
+            shift,
+            low: width(most.1 - least.1, shift.1),
+            high: width(most.0 - least.0, shift.0),
+        }
+    }
+
+    /// The bits a packed point takes.
+    fn bits(&self) -> u32 {
+        self.low + self.high
+    }
+
+    /// Point `k`, one of those packed, as a word ordered as the points (if it has at most 64
+    /// bits).
+    fn pack(&self, k: G) -> u64 {
+        let field = |v: i64, least: i64, shift: u32| ((v - least) as u64) >> shift;
+        let y = field(k.1, self.least.1, self.shift.1);
+        // y may take all 64 bits, x then none.
+        let x = field(k.0, self.least.0, self.shift.0).checked_shl(self.low);
+        x.unwrap_or(0) | y
     }
 }
 
@@ -467,6 +527,31 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig { cases: 300, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// Grid points sort as the standard sort orders them, on each of the three ways:
+        /// points on a lattice coarser than the grid (packed in a 32-bit word once the shared
+        /// low bits are dropped), points spanning 2²⁶ (a 64-bit word), and points spanning 2⁵²
+        /// on three vertical lines (x first, then each run by y).
+        #[test]
+        fn grid_points_sort_lexicographically(
+            (points, way) in prop_oneof![
+                (0u32..30, -1000i64..1000, proptest::collection::vec((-3000i64..3000, -3000i64..3000), 8..200))
+                    .prop_map(|(s, o, v)| (v.into_iter().map(|(x, y)| ((x << s) + o, (y << s) - o)).collect::<Vec<G>>(), 0)),
+                proptest::collection::vec((-(1i64 << 25)..1 << 25, -(1i64 << 25)..1 << 25), 8..200)
+                    .prop_map(|v| (v, 1)),
+                (-(1i64 << 50)..0, (1i64 << 40)..1 << 49, proptest::collection::vec((0i64..3, -(1i64 << 51)..1 << 51), 8..200))
+                    .prop_map(|(a, d, v)| (v.into_iter().map(|(i, y)| (a + i * d, y)).collect::<Vec<G>>(), 2)),
+            ],
+        ) {
+            let bits = Packing::of(points[0], points.iter().copied()).bits();
+            let ways = [bits <= 32, (33..=64).contains(&bits), bits > 64];
+            prop_assume!(ways[way]);
+            let mut got = points.clone();
+            sort_by_grid(&mut got, |&k| k);
+            let mut want = points;
+            want.sort_unstable();
+            prop_assert_eq!(got, want);
+        }
 
         /// The hot pixels are sorted and distinct, each segment's ends are found at `ends`,
         /// and the pixels each segment is rerouted through first (lazily) are exactly the
