@@ -65,20 +65,24 @@ impl<P> Arrangement<P> {
     /// `mult(e)` from below to above (a directed edge adds its multiplicity from its right to
     /// its left, and `lo → hi` has its left above); the far face below all has `W::default()`.
     /// Along a piece they are constant when the edges are closed (as many enter as leave every
-    /// vertex), as in every fill and Boolean operation.
-    pub fn windings<W>(&self, mult: impl Fn(usize) -> W) -> Vec<(W, W)>
+    /// vertex), as in every fill and Boolean operation. Group by group, in order (each needs
+    /// the ones before it: only the faces above are kept).
+    pub fn windings<'a, W>(
+        &'a self,
+        mult: impl Fn(usize) -> W + 'a,
+    ) -> impl Iterator<Item = (W, W)> + 'a
     where
-        W: Copy + Default + std::ops::Add<Output = W>,
+        W: Copy + Default + std::ops::Add<Output = W> + 'a,
     {
-        let mut out: Vec<(W, W)> = Vec::with_capacity(self.groups.len());
-        for g in &self.groups {
-            let below = g.below.map_or_else(W::default, |b| out[b].1);
-            let above = self.members[g.members.clone()]
+        let mut above: Vec<W> = Vec::with_capacity(self.groups.len());
+        self.groups.iter().map(move |g| {
+            let below = g.below.map_or_else(W::default, |b| above[b]);
+            let up = self.members[g.members.clone()]
                 .iter()
                 .fold(below, |w, &e| w + mult(e));
-            out.push((below, above));
-        }
-        out
+            above.push(up);
+            (below, up)
+        })
     }
 }
 

@@ -454,7 +454,7 @@ mod tests {
         let edges = edges_of::<Rational>(segs);
         let arr = arrange(&edges, &());
         let up = |e: usize| if edges[e].0 < edges[e].1 { 1i64 } else { -1 };
-        let windings = arr.windings(up);
+        let windings: Vec<(i64, i64)> = arr.windings(up).collect();
         let end = |g: &Group| (arr.points[g.from].point(), arr.points[g.to].point());
         for (e, (a, b)) in edges.iter().enumerate() {
             let mut chain: Vec<_> = arr

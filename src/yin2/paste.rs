@@ -6,7 +6,7 @@ use super::hasse::swept_parents;
 use super::set::{Spadjor, YinSet2};
 use crate::kernel::{cmp_clockwise_from, Point};
 use crate::num::Num;
-use foldhash::{HashMap, HashMapExt, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 
 /// Jordan curves as vertex cycles, the touching points among their vertices, and the loop
 /// of each piece.
@@ -113,10 +113,12 @@ impl<N: Num> Segmented<N> {
         for &(_, b) in &self.edges {
             indegree[b] += 1;
         }
-        let touching = (0..n)
-            .filter(|&v| indegree[v] > 1)
-            .map(|v| self.points[v].clone())
-            .collect();
+        let mut touching = HashSet::with_capacity(indegree.iter().filter(|&&d| d > 1).count());
+        touching.extend(
+            (0..n)
+                .filter(|&v| indegree[v] > 1)
+                .map(|v| self.points[v].clone()),
+        );
         let mut used = vec![false; self.edges.len()];
         let mut pos = vec![usize::MAX; n];
         let mut loops = Vec::new();
