@@ -17,9 +17,6 @@ use std::collections::{BTreeMap, BTreeSet};
 /// A closed ring of points (the last one joined to the first) with its label.
 pub(crate) type Ring<'a, N> = (&'a [Point<N>], usize);
 
-/// A grid segment with the operand (`0` or `1`) its piece came from.
-type Labelled = ((G, G), usize);
-
 /// A fragment of a rerouted segment: the indices of its ends among the hot pixels, with its
 /// segment's label.
 type Fragment = ((usize, usize), usize);
@@ -52,7 +49,8 @@ fn regularize_as<'a, N: Num>(
     let frame = Frame::of(rings.clone().flat_map(|(ring, _)| ring), ctx);
     let ctx = frame.ctx;
     let count = rings.clone().map(|(ring, _)| ring.len()).sum();
-    let (mut segments, mut grid): (Vec<Labelled>, Vec<G>) = (Vec::with_capacity(count), Vec::new());
+    let (mut segments, mut labels) = (Vec::with_capacity(count), Vec::with_capacity(count));
+    let mut grid: Vec<G> = Vec::new();
     let mut moved = [!valid; 2];
     for (ring, label) in rings {
         grid.clear();
@@ -60,12 +58,13 @@ fn regularize_as<'a, N: Num>(
         moved[label] |= ring.iter().zip(&grid).any(|(p, &k)| frame.at(k) != *p);
         let next = grid.iter().skip(1).chain(grid.first());
         let sides = grid.iter().zip(next).filter(|(a, b)| a != b);
-        segments.extend(sides.map(|(&a, &b)| ((a, b), label)));
+        segments.extend(sides.map(|(&a, &b)| (a, b)));
+        labels.resize(segments.len(), label);
     }
     // Snapped fragments should not cross: their arrangement is swept on the grid integers with
     // exact integer orientations. Where two still cross (the arrangement reports them), the
     // segments are rerouted through more pixels ([`Snap::force`]).
-    let mut snap = Snap::new(segments, |label| !moved[label], lazy);
+    let mut snap = Snap::new(segments, labels, |label| !moved[label], lazy);
     loop {
         let (fragments, owner) = snap.fragments();
         let arr = arrange_grid(&snap.hot, fragments.iter().map(|f| f.0));
@@ -176,7 +175,9 @@ pub(crate) fn inside_set(w: i64, unbounded: bool) -> bool {
 /// both paths where their segments do not meet it; paths stay monotone along their segments
 /// and every such round adds a new (segment, centre) stop, so the iteration ends.
 struct Snap {
-    segments: Vec<Labelled>,
+    segments: Vec<(G, G)>,
+    /// The operand (`0` or `1`) each segment came from.
+    labels: Vec<usize>,
     /// The segments' ends and the pixels of crossings: the points of the arrangement, sorted,
     /// without repeats.
     hot: Vec<G>,
@@ -193,14 +194,19 @@ impl Snap {
     /// The hot pixels of `segments`: endpoints and the pixels of crossings (none between two
     /// segments of a label that is `apart`, whose segments do not cross each other); rerouting
     /// `lazy` first, or as Hobby's at once.
-    fn new(segments: Vec<Labelled>, apart: impl Fn(usize) -> bool, lazy: bool) -> Snap {
-        let grid: Vec<(G, G)> = segments.iter().map(|s| s.0).collect();
-        let (vertices, mut ends) = rank_ends(&grid);
+    fn new(
+        segments: Vec<(G, G)>,
+        labels: Vec<usize>,
+        apart: impl Fn(usize) -> bool,
+        lazy: bool,
+    ) -> Snap {
+        let grid = &segments;
+        let (vertices, mut ends) = rank_ends(grid);
         // The segments by their left side: by their lower end in the order of the vertices.
         let lower_ends = ends.iter().enumerate().map(|(k, &(i, j))| (i.min(j), k));
         let by_left = Buckets::new(vertices.len(), lower_ends);
-        let family = |k: usize| Some(segments[k].1).filter(|&label| apart(label));
-        let pairs = grid_crossing_pairs(&grid, by_left.all(), family);
+        let family = |k: usize| Some(labels[k]).filter(|&label| apart(label));
+        let pairs = grid_crossing_pairs(grid, by_left.all(), family);
         // The pixel of each crossing pair, with the pair's index, sorted.
         let mut crossings: Vec<(G, usize)> = pairs
             .iter()
@@ -239,6 +245,7 @@ impl Snap {
         });
         Snap {
             segments,
+            labels,
             hot,
             ends,
             lazy,
@@ -256,7 +263,7 @@ impl Snap {
         self.ends = self
             .segments
             .iter()
-            .map(|&((a, b), _)| (index(a), index(b)))
+            .map(|&(a, b)| (index(a), index(b)))
             .collect();
     }
 
@@ -267,7 +274,7 @@ impl Snap {
         let most = self.segments.len() + self.segments.len() / 4;
         let (mut fragments, mut owner) = (Vec::with_capacity(most), Vec::with_capacity(most));
         let mut path = Vec::new();
-        for (k, &(s, label)) in self.segments.iter().enumerate() {
+        for (k, (&s, &label)) in self.segments.iter().zip(&self.labels).enumerate() {
             path.clear();
             match &self.lazy {
                 Some(own) => path.extend_from_slice(own.get(k)),
@@ -323,7 +330,7 @@ impl Snap {
                 progress = true;
             }
             for k in owners {
-                progress |= inside_projection(self.segments[k].0, c)
+                progress |= inside_projection(self.segments[k], c)
                     && self.forced.entry(k).or_default().insert(c);
             }
         }
@@ -561,17 +568,17 @@ mod tests {
         fn lazy_stops_are_the_pixels_of_each_segments_crossings(
             drawn in proptest::collection::vec(((0..=12i64, 0..=12i64), (0..=12i64, 0..=12i64)), 1..30),
         ) {
-            let segments: Vec<Labelled> =
-                drawn.into_iter().filter(|s| s.0 != s.1).map(|s| (s, 0)).collect();
-            let snap = Snap::new(segments.clone(), |_| false, true);
+            let segments: Vec<(G, G)> = drawn.into_iter().filter(|s| s.0 != s.1).collect();
+            let labels = vec![0; segments.len()];
+            let snap = Snap::new(segments.clone(), labels, |_| false, true);
             prop_assert!(snap.hot.windows(2).all(|w| w[0] < w[1]));
             let own = snap.lazy.as_ref().expect("lazy rerouting");
-            for (k, &(s, _)) in segments.iter().enumerate() {
+            for (k, &s) in segments.iter().enumerate() {
                 prop_assert_eq!((snap.hot[snap.ends[k].0], snap.hot[snap.ends[k].1]), s);
                 let mut want: Vec<G> = segments
                     .iter()
-                    .filter(|t| cross_properly(s, t.0))
-                    .map(|t| crossing_pixel(s, t.0))
+                    .filter(|&&t| cross_properly(s, t))
+                    .map(|&t| crossing_pixel(s, t))
                     .collect();
                 let mut got: Vec<G> = own.get(k).iter().map(|&h| snap.hot[h]).collect();
                 want.sort_unstable();
@@ -648,7 +655,8 @@ mod tests {
             (((0, 4), (9, 0)), 1),
             (((5, -2), (4, 7)), 0),
         ];
-        let mut snap = Snap::new(segments, |_| false, true);
+        let (segments, labels) = segments.into_iter().unzip();
+        let mut snap = Snap::new(segments, labels, |_| false, true);
         let pixels = [(5, 2), (5, 1)];
         assert!(
             pixels.iter().all(|c| snap.hot.contains(c)),
@@ -692,7 +700,8 @@ mod tests {
             (((10, 11), (6, 5)), 1),
             (((8, 1), (2, 12)), 0),
         ];
-        let mut snap = Snap::new(segments, |_| false, true);
+        let (segments, labels) = segments.into_iter().unzip();
+        let mut snap = Snap::new(segments, labels, |_| false, true);
         let hot = snap.hot.clone();
         let paths = |fragments: &[Fragment]| -> Vec<(G, G)> {
             fragments
