@@ -39,9 +39,17 @@ pub(crate) fn cross_properly(s: (G, G), t: (G, G)) -> bool {
 }
 
 /// The pixel (nearest grid point, ties up) of the crossing of the lines `ab` and `cd`, exactly:
-/// in `i128` when it cannot overflow, else in big integers (coordinates below 2⁵² need up to
-/// 160 bits).
+/// read off a horizontal and a vertical line, else in `i128` when it cannot overflow, else in
+/// big integers (coordinates below 2⁵² need up to 160 bits).
 pub(crate) fn crossing_pixel(s: (G, G), t: (G, G)) -> G {
+    // A horizontal and a vertical segment (rectilinear input) cross at a grid point.
+    let (vertical, horizontal) = (|(a, b): (G, G)| a.0 == b.0, |(a, b): (G, G)| a.1 == b.1);
+    if horizontal(s) && vertical(t) {
+        return (t.0 .0, s.0 .1);
+    }
+    if vertical(s) && horizontal(t) {
+        return (s.0 .0, t.0 .1);
+    }
     pixel_in::<i128>(s, t)
         .or_else(|| pixel_in::<BigInt>(s, t))
         .expect("the pixel of a crossing of two grid segments is a grid point")
