@@ -183,8 +183,8 @@ struct Snap {
     hot: Vec<G>,
     /// The indices in `hot` of each segment's ends.
     ends: Vec<(usize, usize)>,
-    /// The indices in `hot` of the pixels of each segment's crossings, while rerouting is lazy;
-    /// `None` once it is through every hot pixel met.
+    /// The indices in `hot` of the pixels of each segment's crossings that project strictly
+    /// inside it, while rerouting is lazy; `None` once it is through every hot pixel met.
     lazy: Option<Buckets>,
     /// The pixels forced into the paths of segments, by segment (few segments have any).
     forced: BTreeMap<usize, BTreeSet<G>>,
@@ -207,11 +207,17 @@ impl Snap {
         let by_left = Buckets::new(vertices.len(), lower_ends);
         let family = |k: usize| Some(labels[k]).filter(|&label| apart(label));
         let pairs = grid_crossing_pairs(grid, by_left.all(), family);
-        // The pixel of each crossing pair, with the pair's index, sorted.
+        // The pixel of each crossing pair, with the pair's index, sorted; whether it projects
+        // strictly inside each segment of the pair.
+        let mut inside = Vec::with_capacity(pairs.len());
         let mut crossings: Vec<(G, usize)> = pairs
             .iter()
             .enumerate()
-            .map(|(k, &(i, j))| (crossing_pixel(grid[i], grid[j]), k))
+            .map(|(k, &(i, j))| {
+                let c = crossing_pixel(grid[i], grid[j]);
+                inside.push([inside_projection(grid[i], c), inside_projection(grid[j], c)]);
+                (c, k)
+            })
             .collect();
         sort_by_grid(&mut crossings, |c| c.0);
         // The vertices and the crossings merged, each pixel once; where each vertex went, and
@@ -240,7 +246,13 @@ impl Snap {
             let own = pairs
                 .iter()
                 .zip(&at)
-                .flat_map(|(&(i, j), &h)| [(i, h), (j, h)]);
+                .zip(&inside)
+                .flat_map(|((&(i, j), &h), &on)| {
+                    [(on[0], i), (on[1], j)]
+                        .into_iter()
+                        .filter(|s| s.0)
+                        .map(move |s| (s.1, h))
+                });
             Buckets::new(segments.len(), own)
         });
         Snap {
@@ -278,7 +290,10 @@ impl Snap {
             path.clear();
             match &self.lazy {
                 Some(own) => path.extend_from_slice(own.get(k)),
-                None => pixels.met_by(s, self.ends[k], &mut path),
+                None => {
+                    pixels.met_by(s, self.ends[k], &mut path);
+                    path.retain(|&h| inside_projection(s, self.hot[h]));
+                }
             }
             let forced = self.forced.get(&k);
             if path.is_empty() && forced.is_none() {
@@ -489,9 +504,9 @@ struct Route<'a> {
 
 impl Route<'_> {
     /// The path of the segment `s = ab` rerouted through the centres of the hot pixels in
-    /// `path` (indices of the ones it meets, on entry) and through the `forced` centres, in
-    /// order along `s` (centres projecting strictly inside `s` only), into `path` as indices of
-    /// the hot pixels (from `a` to `b`, no point repeated in a row).
+    /// `path` (indices of ones it meets, on entry) and through the `forced` centres, all
+    /// projecting strictly inside `s`, in order along `s`, into `path` as indices of the hot
+    /// pixels (from `a` to `b`, no point repeated in a row).
     fn through(&self, forced: Option<&BTreeSet<G>>, path: &mut Vec<usize>) {
         let (s, sorted, ends) = (self.s, self.sorted, self.ends);
         let (a, b) = s;
@@ -500,7 +515,6 @@ impl Route<'_> {
                 .binary_search(c)
                 .expect("forced pixels are hot pixels")
         }));
-        path.retain(|&k| inside_projection(s, sorted[k]));
         if path.len() > 1 {
             let d = ((b.0 - a.0) as i128, (b.1 - a.1) as i128);
             let along = |c: G| (c.0 - a.0) as i128 * d.0 + (c.1 - a.1) as i128 * d.1;
@@ -515,7 +529,7 @@ impl Route<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::{Float, Tolerance};
+    use crate::num::{Float, Rational, Tolerance};
     use crate::yin2::grid_arrange::cross_properly;
     use crate::yin2::set::Repr;
     use crate::yin2::FillRule;
@@ -530,6 +544,15 @@ mod tests {
             YinSet2::from_rings_filled_with(rings, FillRule::NonZero, Tolerance::new(0.25))
                 .expect("finite rings")
         })
+    }
+
+    /// True if `c` projects strictly inside the segment `(a, b)`: the projection's parameter
+    /// along it, a rational, is strictly between 0 and 1.
+    fn along_inside((a, b): (G, G), c: G) -> bool {
+        let r = |v: i64| Rational::from_integer(v.into());
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let t = (r(c.0 - a.0) * r(dx) + r(c.1 - a.1) * r(dy)) / (r(dx) * r(dx) + r(dy) * r(dy));
+        t > r(0) && t < r(1)
     }
 
     proptest! {
@@ -562,7 +585,8 @@ mod tests {
 
         /// The hot pixels are sorted and distinct, each segment's ends are found at `ends`,
         /// and the pixels each segment is rerouted through first (lazily) are exactly the
-        /// pixels of its crossings, against every pair tested directly: segments on a 13×13
+        /// pixels of its crossings that project strictly inside it, against every pair tested
+        /// directly and the projection taken as a rational: segments on a 13×13
         /// lattice, whose crossings' pixels are often other segments' ends (both sorts taken).
         #[test]
         fn lazy_stops_are_the_pixels_of_each_segments_crossings(
@@ -579,6 +603,7 @@ mod tests {
                     .iter()
                     .filter(|&&t| cross_properly(s, t))
                     .map(|&t| crossing_pixel(s, t))
+                    .filter(|&c| along_inside(s, c))
                     .collect();
                 let mut got: Vec<G> = own.get(k).iter().map(|&h| snap.hot[h]).collect();
                 want.sort_unstable();
