@@ -93,19 +93,19 @@ where
 /// first, the rest of the arrangement is not valid). O(n log n + m) for n segments and m points.
 pub(crate) fn arrange_grid(
     points: &[G],
-    spans: impl Iterator<Item = (usize, usize)>,
+    spans: impl Iterator<Item = (usize, usize)> + Clone,
 ) -> Arrangement<G> {
     // Each segment lo → hi in the sweep order (lexicographic: the sweep line is tilted
     // infinitesimally, and a vertical segment runs from its lower end to its upper one), as
     // indices of `points`, whose order is the sweep's.
-    let span: Vec<(usize, usize)> = spans.map(|(i, j)| (i.min(j), i.max(j))).collect();
+    let span = spans.map(|(i, j)| (i.min(j), i.max(j)));
     // The segment ends at each point: 2·segment + 1 for an upper end.
     let ends = span
-        .iter()
+        .clone()
         .enumerate()
-        .flat_map(|(e, &(i, j))| [(i, 2 * e), (j, 2 * e + 1)]);
+        .flat_map(|(e, (i, j))| [(i, 2 * e), (j, 2 * e + 1)]);
     let at = Buckets::new(points.len(), ends);
-    let seg: Vec<(G, G)> = span.iter().map(|&(i, j)| (points[i], points[j])).collect();
+    let seg: Vec<(G, G)> = span.map(|(i, j)| (points[i], points[j])).collect();
     let mut sweep = GridSweep {
         seg: &seg,
         points,
