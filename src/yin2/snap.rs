@@ -191,9 +191,9 @@ struct Snap {
 }
 
 impl Snap {
-    /// The hot pixels of `segments`: endpoints and the pixels of crossings (none between two
-    /// segments of a label that is `apart`, whose segments do not cross each other); rerouting
-    /// `lazy` first, or as Hobby's at once.
+    /// The hot pixels of `segments`, segment k from operand `labels[k]`: endpoints and the
+    /// pixels of crossings (none between two segments of a label that is `apart`, whose
+    /// segments do not cross each other); rerouting `lazy` first, or as Hobby's at once.
     fn new(
         segments: Vec<(G, G)>,
         labels: Vec<usize>,
