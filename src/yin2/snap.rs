@@ -200,22 +200,24 @@ impl Snap {
         apart: impl Fn(usize) -> bool,
         lazy: bool,
     ) -> Snap {
-        let grid = &segments;
-        let (vertices, mut ends) = rank_ends(grid);
+        let (vertices, mut ends) = rank_ends(&segments);
         // The segments by their left side: by their lower end in the order of the vertices.
         let lower_ends = ends.iter().enumerate().map(|(k, &(i, j))| (i.min(j), k));
         let by_left = Buckets::new(vertices.len(), lower_ends);
         let family = |k: usize| Some(labels[k]).filter(|&label| apart(label));
-        let pairs = grid_crossing_pairs(grid, by_left.all(), family);
-        // The pixel of each crossing pair, with the pair's index, sorted; whether it projects
-        // strictly inside each segment of the pair.
-        let mut inside = Vec::with_capacity(pairs.len());
+        let pairs = grid_crossing_pairs(&segments, by_left.all(), family);
+        // The pixel of each crossing pair, with the pair's index, sorted; while rerouting is
+        // lazy, whether it projects strictly inside each segment of the pair.
+        let mut inside = Vec::with_capacity(if lazy { pairs.len() } else { 0 });
         let mut crossings: Vec<(G, usize)> = pairs
             .iter()
             .enumerate()
             .map(|(k, &(i, j))| {
-                let c = crossing_pixel(grid[i], grid[j]);
-                inside.push([inside_projection(grid[i], c), inside_projection(grid[j], c)]);
+                let (s, t) = (segments[i], segments[j]);
+                let c = crossing_pixel(s, t);
+                if lazy {
+                    inside.push([inside_projection(s, c), inside_projection(t, c)]);
+                }
                 (c, k)
             })
             .collect();
