@@ -684,3 +684,22 @@ fn malformed_wkb_is_refused_at_its_byte() {
     let rounded = ok(&["convert", s(&third), "--to", "wkb-hex"], "");
     assert_eq!(rounded.trim().len(), 2 * (9 + 9 + 4 + 4 * 16));
 }
+
+/// Float-mode areas are the exact areas of the `f64` vertices: the square of side 2⁹⁹⁶ (about
+/// 6.7·10²⁹⁹) has its exact area (beyond `f64`: `float` is null, never infinite or NaN), the
+/// square of side 2⁻⁹⁹⁶ its exact area (below `f64`: `float` is 0), both labelled exact
+/// because they are (both sides are grid points, so float mode keeps the corners).
+#[test]
+fn float_areas_are_exact_beyond_the_range_of_f64() {
+    for (k, eps, float) in [(996, "1e290", Value::Null), (-996, "1e-310", 0.0.into())] {
+        let side = Rational::from_float(2f64.powi(k)).unwrap();
+        let square = format!("0 0\n{side} 0\n{side} {side}\n0 {side}\n");
+        let info: Value = serde_json::from_str(&ok(&["info", "-", "--eps", eps], &square)).unwrap();
+        assert_eq!(
+            info["area"]["exact"],
+            (side.clone() * side).to_string(),
+            "side 2^{k}"
+        );
+        assert_eq!(info["area"]["float"], float, "side 2^{k}");
+    }
+}

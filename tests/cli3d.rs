@@ -627,3 +627,31 @@ fn render_draws_cavities_in_their_own_colour() {
     // With -o, nothing goes to standard output.
     assert!(ok_bytes(&["render", s(&h), "-o", s(&png)]).is_empty());
 }
+
+/// Float-mode volumes are the exact volumes of the `f64` vertices, labelled exact only when
+/// they are: a cube of side 2 at 10⁹ has volume 8 (not 0), one at 10¹⁵ of side 64 has 262144,
+/// and [10³⁰⁰, 3·10³⁰⁰]³ has its exact volume (beyond `f64`: `float` is null, never NaN).
+#[test]
+fn float_volumes_are_exact_far_out_and_beyond_f64() {
+    let dir = scratch();
+    for (lo, hi, volume) in [
+        ("1000000000", "1000000002", "8"),
+        ("30000000000", "30000000002", "8"),
+        ("1000000000000000", "1000000000000064", "262144"),
+    ] {
+        let c = file(&dir, "c.obj", &cuboid([lo; 3], [hi; 3], false));
+        let r = info(&["info", s(&c), "--eps", "1"], "");
+        assert_eq!(r["volume"]["exact"], volume, "cube at {lo}");
+        assert_eq!(
+            r["volume"]["float"],
+            volume.parse::<f64>().unwrap(),
+            "cube at {lo}"
+        );
+    }
+    let c = file(&dir, "c.obj", &cuboid(["1e300"; 3], ["3e300"; 3], false));
+    let r = info(&["info", s(&c), "--eps", "1e290"], "");
+    let side = Rational::from_float(3e300).unwrap() - Rational::from_float(1e300).unwrap();
+    let exact = side.clone() * side.clone() * side;
+    assert_eq!(r["volume"]["exact"], exact.to_string());
+    assert_eq!(r["volume"]["float"], Value::Null);
+}

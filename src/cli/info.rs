@@ -1,13 +1,14 @@
 //! `info`: a Yin set's topology, size and extent as a JSON object (2D and 3D).
 
 use crate::kernel::{Point, Point3};
-use crate::num::Num;
+use crate::num::{Num, Rational};
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
 use serde_json::{json, Value};
 
-/// The JSON report on `set`. Numbers of the backend are given as text (`p/q` in exact mode)
-/// and as the nearest `f64`.
+/// The JSON report on `set`. Every number is given as its exact value in text (`p/q` where it
+/// is not an integer; in float mode the exact value of the `f64`s, and the exact area of the
+/// `f64` vertices) and as the nearest `f64` (`null` beyond the range of `f64`).
 pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
     let betti = set.betti();
     let homology = set.homology();
@@ -48,7 +49,7 @@ pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
         "vertices": set.curves().iter().map(|c| c.len()).sum::<usize>(),
         "hasse": curves,
         "atoms": atoms,
-        "area": set.area().map(|a| number(&a)),
+        "area": set.area_exact().map(measure),
         "bbox": set.bbox().map(|b| json!({ "min": point(&b.min), "max": point(&b.max) })),
     })
 }
@@ -108,7 +109,7 @@ pub fn report3<N: Num>(set: &YinSet3<N>) -> Value {
         "atoms": atoms,
         "vertices": set.vertices().len(),
         "triangles": set.triangles().len(),
-        "volume": set.volume().map(|v| number(&v)),
+        "volume": set.volume_exact().map(measure),
         "bbox": set.bbox().map(|b| json!({ "min": point3(&b.min), "max": point3(&b.max) })),
     })
 }
@@ -124,9 +125,16 @@ fn kind(empty: bool, full: bool, boundary: &'static str) -> &'static str {
     }
 }
 
-/// A number as its exact text and its nearest `f64`.
+/// An exact value as its text and its nearest `f64` (`null` where that is infinite).
+fn measure(v: Rational) -> Value {
+    let float = Some(v.to_f64()).filter(|f| f.is_finite());
+    json!({ "exact": v.to_string(), "float": float })
+}
+
+/// A number of the backend as [`measure`] gives its exact value.
 fn number<N: Num>(v: &N) -> Value {
-    json!({ "exact": v.to_string(), "float": v.to_f64() })
+    let (n, d) = v.fraction();
+    measure(Rational::new(n, d))
 }
 
 /// A point as `[x, y]` of [`number`]s.
@@ -142,7 +150,6 @@ fn point3<N: Num>(p: &Point3<N>) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::Rational;
 
     #[test]
     fn reports_topology_area_and_box_exactly() {

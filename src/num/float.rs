@@ -478,6 +478,10 @@ impl Num for Float {
     type Ctx = Tolerance;
     const EXACT: bool = false;
 
+    fn nearest(r: &Rational) -> Self {
+        Float::new(r.to_f64())
+    }
+
     fn from_i64(v: i64) -> Self {
         Float::new(v as f64)
     }

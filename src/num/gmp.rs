@@ -51,6 +51,13 @@ impl Num for GmpRational {
     type Ctx = ();
     const EXACT: bool = true;
 
+    fn nearest(r: &super::Rational) -> Self {
+        let parse = |i: num_bigint::BigInt| {
+            Integer::from_str_radix(&i.to_str_radix(16), 16).expect("a BigInt's hex digits")
+        };
+        GmpRational(Rational::from((parse(r.numer()), parse(r.denom()))))
+    }
+
     fn from_i64(v: i64) -> Self {
         GmpRational(Rational::from(v))
     }

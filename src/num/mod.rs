@@ -8,6 +8,7 @@
 //! without rounding, and convert from `f64` losslessly.
 
 mod big;
+mod dyadic;
 mod float;
 #[cfg(feature = "gmp")]
 mod gmp;
@@ -18,6 +19,7 @@ mod quotient;
 mod rational;
 
 pub(crate) use big::{from_words, gcd_u128};
+pub(crate) use dyadic::det_sum;
 pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance, PlaneF64};
 pub use float::{Float, Tolerance, TooFine};
 #[cfg(feature = "gmp")]
@@ -190,6 +192,10 @@ pub trait Num:
     fn half(&self) -> Self {
         self.clone() / Self::from_i64(2)
     }
+
+    /// The number nearest to the exact `r`: `r` itself in exact backends; in float mode the
+    /// nearest `f64` (0 below half the least subnormal, an infinity beyond `f64::MAX`).
+    fn nearest(r: &Rational) -> Self;
 }
 
 /// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within 3 ulps of

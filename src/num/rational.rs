@@ -522,6 +522,10 @@ impl Num for Rational {
     type Ctx = ();
     const EXACT: bool = true;
 
+    fn nearest(r: &Rational) -> Self {
+        r.clone()
+    }
+
     fn from_i64(v: i64) -> Self {
         lowest(v.into(), 1)
     }

@@ -4,7 +4,7 @@ use super::curve::{balanced_sum, canonical_curve, Curve};
 use super::hasse::{atoms, parents, Atom, Betti};
 use super::locate::{locate_within, Location};
 use crate::kernel::{BBox, Point};
-use crate::num::Num;
+use crate::num::{det_sum, Num, Rational};
 use foldhash::HashSet;
 use std::hash::{Hash, Hasher};
 
@@ -35,6 +35,21 @@ pub(crate) struct Spadjor<N: Num> {
 }
 
 impl<N: Num> Spadjor<N> {
+    /// The exact area of a float spadjor's `f64` vertices: half of Σ det[p − o, q − o] over
+    /// the curves' directed edges pq, on the integers of their power-of-two grid ([`det_sum`]).
+    fn float_area(&self) -> Rational {
+        let points: Vec<[f64; 2]> = (self.curves.iter())
+            .flat_map(|c| c.vertices().iter().map(|p| p.to_f64()))
+            .collect();
+        let mut start = 0;
+        let edges = self.curves.iter().flat_map(|c| {
+            let (first, n) = (start, c.vertices().len());
+            start += n;
+            (0..n).map(move |k| [first + k, first + (k + 1) % n])
+        });
+        det_sum(&points, edges) / Rational::from_i64(2)
+    }
+
     /// Build from curves already simple and pairwise almost disjoint, with every touching point
     /// among `touching`: canonical form, Hasse diagram, atoms, Betti numbers. Also returns, for
     /// each canonical curve, the index of the loop it came from.
@@ -207,15 +222,44 @@ impl<N: Num> YinSet2<N> {
         }
     }
 
-    /// The area (exact in exact mode); `None` if the set is unbounded.
+    /// The area; `None` if the set is unbounded. Exact in exact mode; in float mode the
+    /// nearest `f64` of [`YinSet2::area_exact`], so a set far from the origin keeps its area,
+    /// and the value is 0 or infinite only where the exact one is below or beyond the range
+    /// of `f64`.
+    ///
+    /// ```
+    /// use yinset::kernel::Point;
+    /// use yinset::num::{Float, Rational, Tolerance};
+    /// use yinset::yin2::YinSet2;
+    /// let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+    /// let huge = 1e300; // the square [0, 10³⁰⁰]²: its area overflows f64, not its vertices
+    /// let square = vec![p(0.0, 0.0), p(huge, 0.0), p(huge, huge), p(0.0, huge)];
+    /// let set = YinSet2::from_curves_with(vec![square], Tolerance::default()).unwrap();
+    /// assert_eq!(set.area(), Some(Float::new(f64::INFINITY)));
+    /// let side = Rational::from_float(huge).unwrap();
+    /// assert_eq!(set.area_exact(), Some(side.clone() * side));
+    /// ```
     pub fn area(&self) -> Option<N> {
         match &self.repr {
             Repr::Empty => Some(N::zero()),
             Repr::Full => None,
-            Repr::Spadjor(s) if s.bounded => {
+            Repr::Spadjor(s) if s.bounded && N::EXACT => {
                 Some(balanced_sum(s.curves.iter().map(|c| c.twice_signed_area()).collect()).half())
             }
+            Repr::Spadjor(s) if s.bounded => Some(N::nearest(&s.float_area())),
             Repr::Spadjor(_) => None,
+        }
+    }
+
+    /// The exact area of the set its vertices bound (in float mode: of their `f64` values,
+    /// read as the rationals they are); `None` if the set is unbounded.
+    pub fn area_exact(&self) -> Option<Rational> {
+        match &self.repr {
+            Repr::Spadjor(s) if s.bounded && !N::EXACT => Some(s.float_area()),
+            _ => self.area().map(|a| {
+                let (n, d) = a.fraction();
+                Rational::new(n, d)
+            }),
         }
     }
 

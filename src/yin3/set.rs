@@ -11,7 +11,7 @@ use super::glue::{corner_cycles, glued_surfaces};
 use super::hasse::{hasse, Atom3};
 use super::locate::{on_triangles, winding, TriBoxes};
 use crate::kernel::{BBox3, Point3};
-use crate::num::Num;
+use crate::num::{det_sum, Num, Rational};
 use crate::yin2::Location;
 use std::hash::{Hash, Hasher};
 use std::sync::OnceLock;
@@ -175,6 +175,13 @@ impl<N: Num> Brep<N> {
     /// The corners of triangle `t`.
     pub(crate) fn corners(&self, t: usize) -> [&Point3<N>; 3] {
         self.tris[t].map(|v| &self.points[v])
+    }
+
+    /// The exact volume of a float boundary's `f64` vertices: a sixth of Σ det[p − o, q − o,
+    /// r − o] over its triangles, on the integers of their power-of-two grid ([`det_sum`]).
+    fn float_volume(&self) -> Rational {
+        let points: Vec<[f64; 3]> = self.points.iter().map(|p| p.to_f64()).collect();
+        det_sum(&points, self.tris.iter().copied()) / Rational::from_i64(6)
     }
 
     /// All triangles' corners.
@@ -355,18 +362,46 @@ impl<N: Num> YinSet3<N> {
         }
     }
 
-    /// The volume (exact in exact mode); `None` if the set is unbounded.
+    /// The volume; `None` if the set is unbounded. Exact in exact mode; in float mode the
+    /// nearest `f64` of [`YinSet3::volume_exact`], so a set far from the origin keeps its
+    /// volume, and the value is 0 or infinite only where the exact one is below or beyond the
+    /// range of `f64`.
+    ///
+    /// ```
+    /// use yinset::kernel::Point3;
+    /// use yinset::num::{Float, Num, Rational, Tolerance};
+    /// use yinset::yin3::{shapes, YinSet3};
+    /// let p = |x: f64, y: f64, z: f64| Point3::new(Float::new(x), Float::new(y), Float::new(z));
+    /// let far = 1e9; // side 2 at 10⁹: f64 products of the corners would cancel
+    /// let (corners, faces) = shapes::cuboid(&p(far, far, far), &p(far + 2.0, far + 2.0, far + 2.0));
+    /// let cube = YinSet3::from_triangles_with(corners, faces, Tolerance::new(1.0)).unwrap();
+    /// assert_eq!(cube.volume(), Some(Float::new(8.0)));
+    /// assert_eq!(cube.volume_exact(), Some(Rational::from_i64(8)));
+    /// ```
     pub fn volume(&self) -> Option<N> {
         match &self.repr {
             Repr3::Empty => Some(N::zero()),
             Repr3::Full => None,
-            Repr3::Brep(b) if b.bounded => {
+            Repr3::Brep(b) if b.bounded && N::EXACT => {
                 let sum = b
                     .all_corners()
                     .fold(N::zero(), |s, [p, q, r]| s + det3(p, q, r));
                 Some(sum / N::from_i64(6))
             }
+            Repr3::Brep(b) if b.bounded => Some(N::nearest(&b.float_volume())),
             Repr3::Brep(_) => None,
+        }
+    }
+
+    /// The exact volume of the set its vertices bound (in float mode: of their `f64` values,
+    /// read as the rationals they are); `None` if the set is unbounded.
+    pub fn volume_exact(&self) -> Option<Rational> {
+        match &self.repr {
+            Repr3::Brep(b) if b.bounded && !N::EXACT => Some(b.float_volume()),
+            _ => self.volume().map(|v| {
+                let (n, d) = v.fraction();
+                Rational::new(n, d)
+            }),
         }
     }
 
