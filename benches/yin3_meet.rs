@@ -1,5 +1,4 @@
-//! The exact and float 3D meet on the shared meshes (issue 16's closing figures, issue 18's
-//! float/exact ratio): ballmid ∧ ballright (no contact, a ball 10⁻⁶ inside another) and
+//! The exact and float 3D meet on the shared meshes, and their ratio: ballmid ∧ ballright (no contact, a ball 10⁻⁶ inside another) and
 //! torus ∧ innerball (touching along a closed polygon of shared edges), operands built
 //! beforehand. Where ../shared/tools/cgal3d is built
 //! at target/cgal3d/cgal3d, its exact Nef-polyhedron and corefinement CPU times on the same

@@ -1,4 +1,4 @@
-//! The 3D table of issue 19: our exact and float meet against Manifold, CGAL (corefinement and
+//! The 3D table of BENCHMARKS.md: our exact and float meet against Manifold, CGAL (corefinement and
 //! Nef polyhedra) and boolmesh on the same OBJ files (benches/yin3_work), in one run, printed
 //! as a Markdown table and written to target/yin3_table.md. Run by benches/yin3_peers.sh,
 //! which builds the peers; a peer that is missing shows as "n/a".
