@@ -1,4 +1,4 @@
-//! The arrangement of triangles against each other (seed 004 steps 1–2; DESIGN-3D §2.3–2.4):
+//! The arrangement of triangles against each other (seed 004 steps 1–2; yin3 docs: *Triangle–triangle*, *Re-triangulation*):
 //! every contact of two triangles is computed exactly, every contact point is given to every
 //! triangle that contains it, and each triangle that received points or cut segments is
 //! re-triangulated in its plane. Because a triangle receives *every* contact point lying on it,

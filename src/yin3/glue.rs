@@ -1,4 +1,4 @@
-//! Glued-surface decomposition (seed 003 Def. 7.8; DESIGN-3D §2.7) and the corner cycles
+//! Glued-surface decomposition (seed 003 Def. 7.8; yin3 docs: *Glued surfaces*) and the corner cycles
 //! around vertices that the Betti numbers and genera count.
 //!
 //! CC.1–3 are implicit: triangles are only ever joined across paired fins, never through a

@@ -1,5 +1,5 @@
-//! The faces of a vertex's link that lie in the set, r_p of the Betti numbers (DESIGN-3D
-//! §2.12; [`super::betti`]): where the link of a vertex p has several components, each lies
+//! The faces of a vertex's link that lie in the set, r_p of the Betti numbers (yin3 docs:
+//! *Betti numbers*; [`super::betti`]): where the link of a vertex p has several components, each lies
 //! in one face of each other, found by walking an arc of the link from one to the other.
 //! Points of the link are directions from p, integer vectors with no point constructed: a
 //! segment x → y not through p sweeps the directions λ(x − p) + μ(y − p), λ, μ ≥ 0, in the
