@@ -31,7 +31,8 @@ use yinset::yin3::{Yin3Error, YinSet3};
 
 type F3 = YinSet3<Float>;
 
-/// The constant of the measured error bound vol(F △ E) ≤ C · ε · A (the `yinset::yin3` docs, *Float mode*).
+/// The constant of the measured error bound vol(F △ E) ≤ C · ε · A (the `yinset::yin3` docs, *Float
+/// mode*).
 const VOLUME_C: f64 = 1.0;
 
 /// The exact set of a float set's `f64` values, built independently of the kernel's float

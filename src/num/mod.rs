@@ -50,7 +50,8 @@ pub enum NumError {
     NotFinite(f64),
 }
 
-/// A coordinate number: exact rationals or ε-floats behind one interface (crate docs: *Architecture*).
+/// A coordinate number: exact rationals or ε-floats behind one interface (crate docs:
+/// *Architecture*).
 ///
 /// Arithmetic is by value; `Ord` is the exact order of the stored values (for [`Float`], the
 /// total order of `f64`), so sweeps and canonical forms are deterministic. The tolerance of

@@ -78,7 +78,8 @@ pub enum Yin3Error {
         /// The face, counting from 0 in the order given.
         face: usize,
     },
-    /// Faces around an edge whose orientations do not alternate (invariant I3 of the yin3 docs, seed 003 Lemma 5.5(c)).
+    /// Faces around an edge whose orientations do not alternate (invariant I3 of the yin3 docs,
+    /// seed 003 Lemma 5.5(c)).
     #[error("faces {a} and {b} are neighbours around the edge from {from} to {to} with inconsistent orientations: around an edge, faces must alternate between bounding the set from one side and from the other")]
     Inconsistent {
         /// The edge's start, as text.
@@ -90,7 +91,8 @@ pub enum Yin3Error {
         /// The second face.
         b: usize,
     },
-    /// A closed surface whose normals point the wrong way relative to the rest (invariant I4 of the yin3 docs).
+    /// A closed surface whose normals point the wrong way relative to the rest (invariant I4 of the
+    /// yin3 docs).
     #[error("the closed surface through face {face} is oriented against the rest: the winding number on the side its normals point to is {winding}, not {expected} (normals must point out of the set, by the right-hand rule)")]
     Orientation {
         /// The face, counting from 0 in the order given.

@@ -1,7 +1,7 @@
-//! The meet of two 3D Yin sets (yin3 docs: *Selection*, *Meet*; seed 004 steps 1–5; the 3D MRS-b..d of
-//! seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8): arrange both boundaries against each other, keep
-//! the pieces of each that lie in the other (coincident pieces: one copy if equally oriented,
-//! none if opposite), and paste the kept pieces into glued surfaces.
+//! The meet of two 3D Yin sets (yin3 docs: *Selection*, *Meet*; seed 004 steps 1–5; the 3D MRS-b..d
+//! of seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8): arrange both boundaries against each other, keep the
+//! pieces of each that lie in the other (coincident pieces: one copy if equally oriented, none if
+//! opposite), and paste the kept pieces into glued surfaces.
 
 use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
