@@ -1,4 +1,4 @@
-//! Float meet against exact meet (issue 3, item 6) on non-degenerate inputs: the paper's
+//! Float meet against exact meet on non-degenerate inputs: the paper's
 //! panda ∧ Mickey (read from `../shared/data/2d`), and two random star-shaped polygons of 10⁴
 //! vertices each. Only the meet is timed; the operands are built beforehand, exactly
 //! (`Rational`, decimal text read without rounding, random `f64` values read as rationals) and

@@ -1,4 +1,4 @@
-//! Issue 20 item 3: the meet of two polygons given as `geo_types` values, by geo's own
+//! The meet of two polygons given as `geo_types` values, by geo's own
 //! `BooleanOps` and by yinset through the `geo-types` conversions (exact and float mode),
 //! conversions included. Run: `cargo bench --features geo-types --bench geo_types`.
 

@@ -1,4 +1,4 @@
-//! rayon's share (issue 20, item 8): the exact meet of W1 (the per-edge cuts of S_V run in
+//! rayon's share: the exact meet of W1 (the per-edge cuts of S_V run in
 //! parallel) and batch locate of 10⁵ random points in W1's first star, exact and in float mode
 //! (chunks of queries swept in parallel; float mode's ε test per point in parallel), and the cut
 //! of the panda by the cells of a 16×16 grid (`meet_each`, cells in parallel).

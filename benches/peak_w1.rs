@@ -1,4 +1,4 @@
-//! Peak memory of W1 at n = 10⁶ (issue 8, item 5): builds the two random star-shaped polygons
+//! Peak memory of W1 at n = 10⁶: builds the two random star-shaped polygons
 //! of benches/peers.rs (10⁶ vertices each) in float mode and meets them once; prints the CPU
 //! times and the process's peak resident set (VmHWM). Run it under `/usr/bin/time -v`:
 //!

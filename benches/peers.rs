@@ -1,4 +1,4 @@
-//! yinset against its peers (issues 8, 13): meet, join, complement, locate and Betti numbers,
+//! yinset against its peers: meet, join, complement, locate and Betti numbers,
 //! exact and float, on the workloads W1–W6, with i_overlay, geo's BooleanOps and Clipper2 on the
 //! same `f64` coordinates, and CGAL's exact kernel on the same values as exact fractions when
 //! `YINSET_CGAL2D` names the harness of ../shared/tools/cgal2d (peers/cgal.rs). The report is
@@ -732,7 +732,7 @@ fn cells_case<C, O>(
     );
 }
 
-/// W6 (issue 13, item 2): the union of 25 to 300 nearly coincident copies of a small polygon, filled
+/// W6: the union of 25 to 300 nearly coincident copies of a small polygon, filled
 /// non-zero: ours from the rings in one fill, as `join_all` of the one-ring sets and as a fold of
 /// binary joins of them, exact and float;
 /// i_overlay's and Clipper2's union of the rings under the non-zero rule, geo's `unary_union`,

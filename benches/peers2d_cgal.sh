@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The 2D peer table of benches/BENCHMARKS.md with CGAL's exact kernel (Epeck) as a column
-# (issue 13): builds ../shared/tools/cgal2d into target/cgal2d (needs libcgal-dev, libgmp-dev,
+# The 2D peer table of benches/BENCHMARKS.md with CGAL's exact kernel (Epeck) as a column:
+# builds ../shared/tools/cgal2d into target/cgal2d (needs libcgal-dev, libgmp-dev,
 # libmpfr-dev), then runs `cargo bench --bench peers` with YINSET_CGAL2D set, once per filter.
 #
-#   bash benches/peers2d_cgal.sh              # W4/ W3/ W6/ W1/meet (the run of BENCHMARKS.md)
+#   bash benches/peers2d_cgal.sh              # W4/ W3/ W6/ W1/meet (the default filters)
 #   bash benches/peers2d_cgal.sh W4/ W2       # other filters
 #
 # The log (with `uptime` before and after) goes to target/peers2d_cgal.log.

@@ -1,9 +1,8 @@
-//! The exact and float 3D meet on the shared meshes (issue 16's closing figures, issue 18's
-//! float/exact ratio): ballmid ∧ ballright (no contact, a ball 10⁻⁶ inside another) and
-//! torus ∧ innerball (touching along a closed polygon of shared edges), operands built
-//! beforehand. Where ../shared/tools/cgal3d is built
-//! at target/cgal3d/cgal3d, its exact Nef-polyhedron and corefinement CPU times on the same
-//! files are printed beside ours, as a peer column.
+//! The exact and float 3D meet on the shared meshes, and their ratio: ballmid ∧ ballright (no
+//! contact, a ball 10⁻⁶ inside another) and torus ∧ innerball (touching along a closed polygon of
+//! shared edges), operands built beforehand. Where ../shared/tools/cgal3d is built at
+//! target/cgal3d/cgal3d, its exact Nef-polyhedron and corefinement CPU times on the same files are
+//! printed beside ours, as a peer column.
 //!
 //! `cargo bench --bench yin3_meet`
 
@@ -58,7 +57,7 @@ fn meets(c: &mut Criterion) {
         g.bench_function(format!("{a} ∧ {b}"), |bench| {
             bench.iter(|| black_box(&x & &y))
         });
-        // 3D float mode (README): exact on the f64 values, the result rounded.
+        // 3D float mode (yin3 docs): exact on the f64 values, the result rounded.
         let (x, y) = (load::<Float>(a), load::<Float>(b));
         g.bench_function(format!("float {a} ∧ {b}"), |bench| {
             bench.iter(|| black_box(x.try_meet(&y).unwrap()))

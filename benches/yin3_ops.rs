@@ -1,4 +1,4 @@
-//! The 3D operations on the workloads of issue 19 (benches/yin3_work): meet, join, complement,
+//! The 3D operations on the workloads V1–V4 (benches/yin3_work): meet, join, complement,
 //! locate (1 000 points) and Betti numbers, exact and float, on V1–V4 at small sizes (V3
 //! without torusbig, which the table covers); V4 also on rayon's threads (`YinSet3::meet_each`)
 //! beside the single-thread figure. Operands are built (and their files written to

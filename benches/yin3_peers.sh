@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The 3D table of issue 19 in one go: builds the peers if missing (Manifold's PyPI wheel in a
+# The 3D table of BENCHMARKS.md in one go: builds the peers if missing (Manifold's PyPI wheel in a
 # venv at target/m3venv, CGAL's harness at target/cgal3d/cgal3d, boolmesh at
 # target/mesh_peers), runs benches/yin3_table.rs (ours and every peer on the same OBJ files in
 # target/yin3_workloads), then the peak memory of one V1 meet at the largest size, ours and the

@@ -1,4 +1,4 @@
-//! The 3D table of issue 19: our exact and float meet against Manifold, CGAL (corefinement and
+//! The 3D table of BENCHMARKS.md: our exact and float meet against Manifold, CGAL (corefinement and
 //! Nef polyhedra) and boolmesh on the same OBJ files (benches/yin3_work), in one run, printed
 //! as a Markdown table and written to target/yin3_table.md. Run by benches/yin3_peers.sh,
 //! which builds the peers; a peer that is missing shows as "n/a".
@@ -14,8 +14,8 @@
 //! m = M or when both of ours have stopped). A peer's row shows its exit status or
 //! error instead of a time when it rejects the input or fails, and "vol≠" when its volume
 //! differs from our exact one by more than 10⁻⁶ relative (a mangled result). Our float cell is
-//! flagged "vol≠" when its volume differs from our exact one by more than README's bound for
-//! 3D float mode, ε·A (ε the default tolerance of the pair, A the boundary area of the operands
+//! flagged "vol≠" when its volume differs from our exact one by more than the bound of 3D
+//! float mode, ε·A (ε the default tolerance of the pair, A the boundary area of the operands
 //! plus the result's); each row's difference and bound are printed after the table.
 
 #[allow(dead_code)] // only the thread clock is used here
@@ -80,7 +80,8 @@ fn fmt_ms(ms: f64) -> String {
     }
 }
 
-/// README's bound on |vol F − vol E| for our float meet F of the files against the exact E:
+/// The bound of 3D float mode on |vol F − vol E| for our float meet F of the files against the
+/// exact E:
 /// vol(F △ E) ≤ ε·A, ε the default tolerance of the pair's bounding box, A the boundary area
 /// of both operands plus the result's, at most twice the operands' (the meet's boundary lies
 /// on theirs).
@@ -240,7 +241,7 @@ fn peer(cmd: &[&str], a: &Path, b: &Path, extra: &[&str], limit_s: u64) -> Cell 
 }
 
 /// A row's results: the contenders' cells, the reference volume (ours exact, else ours
-/// float) and README's bound on our float volume's difference from it.
+/// float) and the float bound ε·A on our float volume's difference from it.
 struct Row {
     cells: Vec<Cell>,
     reference: Option<f64>,
@@ -310,7 +311,8 @@ const PEER_LIMIT_S: u64 = 60;
 
 const HEAD: &str = "| workload | ours exact | ours float | Manifold | CGAL corefine | CGAL Nef | boolmesh | exact/float | exact/corefine | exact/Nef | float/Manifold |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
 
-/// Our float volume's difference from our exact one and README's bound on it, when both ran.
+/// Our float volume's difference from our exact one and the float bound ε·A on it, when both
+/// ran.
 fn float_gap(r: &Row) -> Option<(f64, f64)> {
     match (&r.cells[0], &r.cells[1]) {
         (Cell::Time(_, e), Cell::Time(_, f)) => Some(((f - e).abs(), r.float_bound)),

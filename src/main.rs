@@ -1,5 +1,5 @@
 //! The `yinset` command. With no arguments (or `demo`) it runs the built-in demonstration; see
-//! `yinset --help` and the README for the subcommands.
+//! `yinset --help` and docs/cli.md for the subcommands.
 
 use std::process::ExitCode;
 

@@ -1,5 +1,4 @@
-//! 3D float mode against exact mode (issue 18 item 1; contract on `yinset::num::Tolerance`
-//! and in the README, "3D float mode").
+//! 3D float mode against exact mode (the contract in the `yinset::yin3` docs, *Float mode*).
 //!
 //! Every input is built twice from the same `f64` values: exactly (`Rational`, every `f64` is
 //! a rational) and in float mode (`Float` with tolerance ε). Meet, join, difference,
@@ -32,7 +31,8 @@ use yinset::yin3::{Yin3Error, YinSet3};
 
 type F3 = YinSet3<Float>;
 
-/// The constant of the measured error bound vol(F △ E) ≤ C · ε · A (README, 3D float mode).
+/// The constant of the measured error bound vol(F △ E) ≤ C · ε · A (the `yinset::yin3` docs, *Float
+/// mode*).
 const VOLUME_C: f64 = 1.0;
 
 /// The exact set of a float set's `f64` values, built independently of the kernel's float

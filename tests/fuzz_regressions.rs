@@ -128,7 +128,7 @@ fn float_locate_far_from_a_sliver_hole() {
 /// the input's and E's boundary length alone. Here the same in small numbers: the complement
 /// of a square of side 2⁻⁶ centred on the cell (0, 1)² of the grid g = 1. The hole is kept
 /// (never silently emptied) and area(F △ E) = 1 − 2⁻¹² is within g·L only with F's boundary
-/// length (4) in L — the README's contract.
+/// length (4) in L — the contract on `Tolerance`.
 #[test]
 fn float_tiny_hole_grows_to_a_grid_cell_within_the_contract() {
     let (lo, hi) = (0.5 - 2f64.powi(-7), 0.5 + 2f64.powi(-7));

@@ -1,5 +1,6 @@
-//! The degenerate configurations of 3D Yin sets listed in DESIGN-3D §3, one test each, plus
-//! the errors `from_triangles` must report.
+//! The degenerate configurations of 3D Yin sets (shared faces, edges and vertices, coplanar
+//! overlaps, point and edge contacts, cavities, star vertices, unbounded operands), one test each,
+//! plus the errors `from_triangles` must report.
 //!
 //! All shapes have integer coordinates; C = [0,1]³. The expected values (volumes, Betti
 //! numbers (b0, b1, b2) of the open set, glued surfaces and how many are positive, point

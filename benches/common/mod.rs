@@ -1,4 +1,4 @@
-//! Workloads of the benches (issue 8), as `f64` curves that every contender reads: yinset in
+//! Workloads of the benches, as `f64` curves that every contender reads: yinset in
 //! exact mode (each `f64` taken as the rational it is), yinset in float mode, and the peers.
 //!
 //! Curves follow yinset's convention (counterclockwise bounds a region, clockwise a hole), which
@@ -252,7 +252,7 @@ pub fn vertices(c: &Curves) -> usize {
     c.iter().map(Vec::len).sum()
 }
 
-/// The number of copies in W6 of issue 13.
+/// The number of copies in W6 at its largest.
 pub const W6_COPIES: usize = 300;
 
 /// W6's polygon: 16 vertices at equal angles about the origin, radii alternating between
@@ -271,7 +271,7 @@ pub fn w6_polygon() -> Vec<[f64; 2]> {
         .collect()
 }
 
-/// W6 (issue 13, item 2; [`W6_COPIES`] copies there): `copies` copies of [`w6_polygon`], copy k
+/// W6 ([`W6_COPIES`] copies at its largest): `copies` copies of [`w6_polygon`], copy k
 /// turned by k·10⁻⁶ rad about its centre and shifted by k·10⁻⁶ (of its size, 1) along (1, 1/2):
 /// rings to be filled under the non-zero rule, their union.
 pub fn w6(copies: usize) -> Curves {

@@ -1,4 +1,4 @@
-//! CGAL's exact kernel (Epeck) as a peer (issue 13, item 3): the operands written exactly under
+//! CGAL's exact kernel (Epeck) as a peer: the operands written exactly under
 //! target/peers2d_cgal, the harness ../shared/tools/cgal2d run on them (the binary named by
 //! `YINSET_CGAL2D`; benches/peers2d_cgal.sh builds it and runs the bench), and its CPU time of
 //! the operation alone and its exact area read back from its JSON line.

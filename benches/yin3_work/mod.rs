@@ -1,4 +1,4 @@
-//! Workloads of the 3D benches (issue 19), as `f64` triangle meshes written to OBJ files that
+//! Workloads of the 3D benches, as `f64` triangle meshes written to OBJ files that
 //! every contender reads: yinset exact (each decimal of the file as the rational it is, as
 //! CGAL reads it), yinset float, Manifold, CGAL and boolmesh.
 //!

@@ -18,39 +18,64 @@ pub enum CliError {
     /// A file or standard input could not be read.
     #[error("cannot read {name}: {source}")]
     Read {
+        /// The file or stream, as the user named it.
         name: String,
+        /// The underlying error.
         source: std::io::Error,
     },
     /// An input longer than `--max-bytes`.
     #[error("{name} is larger than {limit} bytes, the limit of --max-bytes: not read")]
-    TooLarge { name: String, limit: u64 },
+    TooLarge {
+        /// The file or stream, as the user named it.
+        name: String,
+        /// The limit in force.
+        limit: u64,
+    },
     /// A file or standard output could not be written.
     #[error("cannot write {name}: {source}")]
     Write {
+        /// The file or stream, as the user named it.
         name: String,
+        /// The underlying error.
         source: std::io::Error,
     },
     /// Malformed text.
     #[error("{name}: {source}")]
-    Parse { name: String, source: ParseError },
+    Parse {
+        /// The file or stream, as the user named it.
+        name: String,
+        /// The underlying error.
+        source: ParseError,
+    },
     /// Malformed WKB (binary or hex).
     #[error("{name}: {format}: {source}")]
     Wkb {
+        /// The file or stream, as the user named it.
         name: String,
+        /// The format concerned.
         format: &'static str,
+        /// The underlying error.
         source: WkbError,
     },
     /// A malformed mesh file (text or binary).
     #[error("{name}: {source}")]
-    Mesh { name: String, source: MeshError },
+    Mesh {
+        /// The file or stream, as the user named it.
+        name: String,
+        /// The underlying error.
+        source: MeshError,
+    },
     /// A set that the output format cannot hold exactly.
     #[error(transparent)]
     NotF32(#[from] NotF32),
     /// Well-formed text whose curves (or faces) do not bound a Yin set.
     #[error("{name} is not a Yin set: {source}{note}")]
     Invalid {
+        /// The file or stream, as the user named it.
         name: String,
+        /// The underlying error.
         source: Reason,
+        /// What to do about it, or empty.
         note: String,
     },
     /// An operation without a valid result in the chosen mode (3D float mode: the exact result
@@ -59,16 +84,26 @@ pub enum CliError {
     Operation(String),
     /// An unbounded set asked for in a format of bounded polygons.
     #[error("the set is unbounded (it contains everything far enough out), so it cannot be written as {format} polygons: write yin2 instead (--to yin2)")]
-    Unbounded { format: &'static str },
+    Unbounded {
+        /// The format concerned.
+        format: &'static str,
+    },
     /// A result the output format cannot spell in the asked number style.
     #[error("cannot write the result as {format}: {source}")]
     Unwritable {
+        /// The format concerned.
         format: &'static str,
+        /// The underlying error.
         source: WriteError,
     },
     /// Some random axiom checks failed.
     #[error("{failed} of {total} axiom checks failed")]
-    AxiomsFailed { failed: u64, total: u64 },
+    AxiomsFailed {
+        /// The checks that failed.
+        failed: u64,
+        /// The checks run.
+        total: u64,
+    },
 }
 
 impl CliError {

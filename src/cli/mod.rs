@@ -1,6 +1,6 @@
-//! The `yinset` command line (issue 6): Boolean operations, queries, pictures and format
+//! The `yinset` command line: Boolean operations, queries, pictures and format
 //! conversion over yin2 text, WKT and GeoJSON files, exact by default, float mode with `--eps`;
-//! and the same on 3D sets from OBJ, STL, OFF and PLY files, exactly (issues 16, 18).
+//! and the same on 3D sets from OBJ, STL, OFF and PLY files, exactly.
 
 mod args;
 mod axioms;

@@ -26,7 +26,7 @@ pub(crate) fn available() -> bool {
     let notice = format!(
         "the shared test data is missing: no 2d/ and 3d/ under {}. The data sets (the Yin set \
          papers' panda and Mickey, the JTS and Martinez overlay suites, GIS outlines, 3D meshes; \
-         see README.md, Test data) live in the project's shared directory, read in place from \
+         see README.md, Set-up) live in the project's shared directory, read in place from \
          ../shared/data beside the repository; set YINSET_DATA=/path/to/data to read them from \
          elsewhere.",
         root.display()

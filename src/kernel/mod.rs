@@ -1,5 +1,5 @@
 //! Predicates and constructions: the only layer that looks at coordinates' arithmetic
-//! (DESIGN.md, layer `kernel`). Every decision reduces to [`crate::num::Num::orient2d`] and the
+//! (crate docs: *Architecture*). Every decision reduces to [`crate::num::Num::orient2d`] and the
 //! exact order of numbers, so it is exact in exact mode and ε-consistent in float mode.
 
 mod angle;

@@ -1,4 +1,4 @@
-//! Points of space, the 3D orientation test and 3D bounding boxes (DESIGN-3D §2.1).
+//! Points of space, the 3D orientation test and 3D bounding boxes (yin3 docs: *Primitives*).
 
 use crate::num::Num;
 use std::cmp::Ordering;

@@ -63,8 +63,8 @@ impl Float {
 ///   operands' `f64` values and rounds the result's vertices to the nearest `f64`s (no grid):
 ///   a valid rounded result with the exact result's topology, or
 ///   `Yin3Error::Unrepresentable`; ε decides `locate`'s boundary
-///   band (a point within ε of a face), the default and the representable ε as above (README,
-///   "3D float mode").
+///   band (a point within ε of a face), the default and the representable ε as above (the
+///   contract in full: [`crate::yin3`], *Float mode*).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Tolerance {
     eps: f64,

@@ -52,7 +52,8 @@ pub enum NumError {
     NotFinite(f64),
 }
 
-/// A coordinate number: exact rationals or ε-floats behind one interface (DESIGN.md, layer `num`).
+/// A coordinate number: exact rationals or ε-floats behind one interface (crate docs:
+/// *Architecture*).
 ///
 /// Arithmetic is by value; `Ord` is the exact order of the stored values (for [`Float`], the
 /// total order of `f64`), so sweeps and canonical forms are deterministic. The tolerance of
@@ -123,7 +124,7 @@ pub trait Num:
 
     /// Orientation of `d` relative to the plane through `a`, `b`, `c`: the sign of
     /// det[b − a, c − a, d − a], `Greater` on the side the normal (b − a) × (c − a) points to
-    /// (DESIGN-3D §2.1), `Equal` on the plane (in float mode: within ε of it; the sign
+    /// (yin3 docs: *Primitives*), `Equal` on the plane (in float mode: within ε of it; the sign
     /// otherwise is exact, by Shewchuk's adaptive `orient3d`).
     fn orient3d(
         a: [&Self; 3],

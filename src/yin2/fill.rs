@@ -74,6 +74,19 @@ impl<N: Num> YinSet2<N> {
     }
 
     /// As [`YinSet2::from_rings_filled`], with the given context (float mode: the tolerance ε).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Float, Tolerance}, yin2::{FillRule, YinSet2}};
+    /// let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+    /// // Two overlapping squares as polygon soup, in float mode: their union.
+    /// let rings = vec![
+    ///     vec![p(0.0, 0.0), p(2.0, 0.0), p(2.0, 2.0), p(0.0, 2.0)],
+    ///     vec![p(1.0, 1.0), p(3.0, 1.0), p(3.0, 3.0), p(1.0, 3.0)],
+    /// ];
+    /// let u = YinSet2::from_rings_filled_with(rings, FillRule::NonZero, Tolerance::new(1e-9))?;
+    /// assert_eq!(u.area().unwrap().get(), 7.0);
+    /// # Ok::<(), yinset::yin2::YinError>(())
+    /// ```
     pub fn from_rings_filled_with(
         rings: Vec<Vec<Point<N>>>,
         rule: FillRule,

@@ -28,6 +28,20 @@ impl<N: Num> YinSet2<N> {
     /// Homological Betti numbers b₀ and b₁ ([`Homology`]), from the components of the closed
     /// complement: the atoms of the complement (seed 000 Lemma 3.18) joined where they share a
     /// vertex.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Num, Rational}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// // A square with a hole inside: one component, one independent loop.
+    /// let ring = &sq(0, 0, 3) - &sq(1, 1, 1);
+    /// assert_eq!((ring.homology().b0, ring.homology().b1), (1, 1));
+    /// // Two squares touching at a corner: two components, no loop.
+    /// let two = &sq(0, 0, 1) | &sq(1, 1, 1);
+    /// assert_eq!((two.homology().b0, two.homology().b1), (2, 0));
+    /// ```
     pub fn homology(&self) -> Homology {
         let complement = self.complement();
         let atoms = complement.atoms();

@@ -21,14 +21,13 @@ pub type Edge<N> = (Point<N>, Point<N>);
 
 /// MRS-a (seed 002 §1.3): meeting pairs `i < j` with `wanted`, by `(i, j)`, with their contact.
 ///
-/// Exact mode: Bentley–Ottmann, O((n + I) log n). It keeps its status ordered through the
-/// crossing points (held implicitly, decided by filtered predicates, exact where the filter
-/// cannot decide: [`super::vertex`]), so it needs them exact; with rounded ones (float mode) it can
-/// miss a pair, so float mode takes the pairs of edges whose boxes meet, or, when finding them
-/// would scan more than [`BOX_SCANS_PER_EDGE`] pairs per edge, the meeting pairs of the edges'
-/// exact images by Bentley–Ottmann. That fallback finds every pair that meets exactly but not
-/// the pairs that only come within ε, which float mode's snap rounding then resolves on the
-/// ε-grid.
+/// Exact mode: Bentley–Ottmann, O((n + I) log n). It keeps its status ordered through the crossing
+/// points (held implicitly, decided by filtered predicates, exact where the filter cannot decide:
+/// the private `vertex` module), so it needs them exact; with rounded ones (float mode) it can miss
+/// a pair, so float mode takes the pairs of edges whose boxes meet, or, when finding them would
+/// scan more than [`BOX_SCANS_PER_EDGE`] pairs per edge, the meeting pairs of the edges' exact
+/// images by Bentley–Ottmann. That fallback finds every pair that meets exactly but not the pairs
+/// that only come within ε, which float mode's snap rounding then resolves on the ε-grid.
 pub fn intersections<N: Num>(
     edges: &[Edge<N>],
     ctx: &N::Ctx,

@@ -12,6 +12,19 @@ use crate::num::Num;
 
 impl<N: Num> YinSet2<N> {
     /// The meet 𝒥 ∧ 𝒦 (seed 000 Def. 4.8): ρ(𝒥 ∧ 𝒦) = ρ(𝒥) ∩ ρ(𝒦).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Num, Rational}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// let m = sq(0, 0, 2).meet(&sq(1, 1, 2)); // also `&a & &b`
+    /// assert_eq!(m, sq(1, 1, 1));
+    /// assert_eq!(m.area(), Some(Rational::from_i64(1)));
+    /// // Squares touching at a corner meet in nothing (the sets are open).
+    /// assert!(sq(0, 0, 1).meet(&sq(1, 1, 1)).is_empty());
+    /// ```
     pub fn meet(&self, other: &YinSet2<N>) -> YinSet2<N> {
         let ctx = N::combine_ctx(self.ctx, other.ctx);
         match (&self.repr, &other.repr) {

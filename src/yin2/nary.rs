@@ -1,4 +1,4 @@
-//! The join and meet of many Yin sets (issue 13) by divide and conquer: the operands are split
+//! The join and meet of many Yin sets by divide and conquer: the operands are split
 //! in halves, each half is reduced (on rayon's threads), and the two partial results are met or
 //! joined once more — ⌈log₂ k⌉ levels of binary operations for k operands.
 //!
@@ -35,6 +35,18 @@ impl<N: Num> YinSet2<N> {
 
     /// The meet ⋀ of all `sets`, the regularized intersection (1̂ for none), by divide and
     /// conquer over binary meets; equal to the fold of [`YinSet2::meet`] in exact mode.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Num, Rational}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// let sets = [sq(0, 0, 3), sq(1, 1, 3), sq(2, 2, 3)];
+    /// let m = YinSet2::meet_all(&sets);
+    /// assert_eq!(m, sq(2, 2, 1));
+    /// assert_eq!(m.area(), Some(Rational::from_i64(1)));
+    /// ```
     #[doc(alias = "intersection_all")]
     pub fn meet_all(sets: &[YinSet2<N>]) -> YinSet2<N> {
         reduce(sets, &YinSet2::full, &YinSet2::meet)

@@ -127,6 +127,13 @@ impl<N: Num> Spadjor<N> {
 
 impl<N: Num> YinSet2<N> {
     /// 0̂, the empty set.
+    ///
+    /// ```
+    /// use yinset::{num::{Num, Rational}, yin2::YinSet2};
+    /// let e = YinSet2::<Rational>::empty();
+    /// assert!(e.is_empty() && e.is_bounded());
+    /// assert_eq!(e.area(), Some(Rational::from_i64(0)));
+    /// ```
     pub fn empty() -> YinSet2<N> {
         YinSet2 {
             repr: Repr::Empty,
@@ -135,6 +142,14 @@ impl<N: Num> YinSet2<N> {
     }
 
     /// 1̂, the whole plane.
+    ///
+    /// ```
+    /// use yinset::{num::Rational, yin2::YinSet2};
+    /// let all = YinSet2::<Rational>::full();
+    /// assert!(all.is_full() && !all.is_bounded());
+    /// assert_eq!(all.area(), None);
+    /// assert_eq!(!&all, YinSet2::empty());
+    /// ```
     pub fn full() -> YinSet2<N> {
         YinSet2 {
             repr: Repr::Full,
@@ -162,6 +177,16 @@ impl<N: Num> YinSet2<N> {
 
     /// The effective grid spacing of float mode (every vertex is a multiple of it, see
     /// [`crate::num::Tolerance`]); `None` in exact mode.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Float, Rational, Tolerance}, yin2::YinSet2};
+    /// let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+    /// let unit = vec![vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0)]];
+    /// let a = YinSet2::from_curves_with(unit, Tolerance::new(1e-9))?;
+    /// assert_eq!(a.grid(), Some(2f64.powi(-30))); // the largest power of two not above ε
+    /// assert_eq!(YinSet2::<Rational>::empty().grid(), None); // exact mode
+    /// # Ok::<(), yinset::yin2::YinError>(())
+    /// ```
     pub fn grid(&self) -> Option<f64> {
         N::grid(&self.ctx)
     }
@@ -210,6 +235,19 @@ impl<N: Num> YinSet2<N> {
     }
 
     /// Betti numbers (seed 000 Cor. 3.14), read off the stored representation.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Num, Rational}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// // A square with two square holes: one component, two holes.
+    /// let frame = &(&sq(0, 0, 5) - &sq(1, 1, 1)) - &sq(3, 3, 1);
+    /// assert_eq!(frame.betti().components, 1);
+    /// assert_eq!(frame.betti().holes, vec![2]);
+    /// assert_eq!(frame.betti().total_holes, 2);
+    /// ```
     pub fn betti(&self) -> Betti {
         match &self.repr {
             Repr::Empty => Betti::default(),
@@ -228,15 +266,24 @@ impl<N: Num> YinSet2<N> {
     /// of `f64`.
     ///
     /// ```
-    /// use yinset::kernel::Point;
-    /// use yinset::num::{Float, Rational, Tolerance};
-    /// use yinset::yin2::YinSet2;
+    /// use yinset::{kernel::Point, num::{Float, Num, Rational, Tolerance}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// let (a, b) = (sq(0, 0, 2), sq(1, 1, 2));
+    /// assert_eq!(a.area(), Some(Rational::from_i64(4)));
+    /// // Exact: |A ∧ B| + |A ∨ B| = |A| + |B|.
+    /// assert_eq!((&a & &b).area().unwrap() + (&a | &b).area().unwrap(), Rational::from_i64(8));
+    /// assert_eq!((!&a).area(), None); // unbounded
+    ///
+    /// // Float mode: the square [0, 2⁹⁹⁶]², whose area overflows f64 but not its corners.
     /// let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
-    /// let huge = 1e300; // the square [0, 10³⁰⁰]²: its area overflows f64, not its vertices
-    /// let square = vec![p(0.0, 0.0), p(huge, 0.0), p(huge, huge), p(0.0, huge)];
+    /// let s = 2f64.powi(996);
+    /// let square = vec![p(0.0, 0.0), p(s, 0.0), p(s, s), p(0.0, s)];
     /// let set = YinSet2::from_curves_with(vec![square], Tolerance::default()).unwrap();
     /// assert_eq!(set.area(), Some(Float::new(f64::INFINITY)));
-    /// let side = Rational::from_float(huge).unwrap();
+    /// let side = Rational::from_float(s).unwrap();
     /// assert_eq!(set.area_exact(), Some(side.clone() * side));
     /// ```
     pub fn area(&self) -> Option<N> {
@@ -264,6 +311,17 @@ impl<N: Num> YinSet2<N> {
     }
 
     /// The bounding box of the boundary (`None` for 0̂ and 1̂).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Num, Rational}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// let b = (&sq(0, 0, 2) | &sq(3, 1, 2)).bbox().unwrap();
+    /// assert_eq!((b.min, b.max), (Point::int(0, 0), Point::int(5, 3)));
+    /// assert!(YinSet2::<Rational>::empty().bbox().is_none());
+    /// ```
     pub fn bbox(&self) -> Option<BBox<N>> {
         self.curves()
             .iter()
@@ -274,6 +332,18 @@ impl<N: Num> YinSet2<N> {
     /// Locate each point: inside, outside or on the boundary (seed 002 Alg. 1). Exact in exact
     /// mode; in float mode a point within ε of the boundary (Euclidean distance to the nearest
     /// edge, any direction) is on it, every other point is located exactly.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Num, Rational}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// use yinset::yin2::Location;
+    /// let a = sq(0, 0, 2);
+    /// let at = [Point::int(1, 1), Point::int(2, 1), Point::int(3, 3)];
+    /// assert_eq!(a.locate(&at), vec![Location::Inside, Location::OnBoundary, Location::Outside]);
+    /// ```
     pub fn locate(&self, points: &[Point<N>]) -> Vec<Location> {
         match &self.repr {
             Repr::Empty => vec![Location::Outside; points.len()],

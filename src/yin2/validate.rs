@@ -28,6 +28,17 @@ impl<N: Num> YinSet2<N> {
     }
 
     /// As [`YinSet2::from_curves`], with the given context (float mode: the tolerance ε).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Float, Tolerance}, yin2::YinSet2};
+    /// let p = |x: f64, y: f64| Point::new(Float::new(x), Float::new(y));
+    /// let tol = Tolerance::new(0.25);
+    /// // A vertex off the grid of ε = 0.25 is snapped to it.
+    /// let a = YinSet2::from_curves_with(vec![vec![p(0.0, 0.0), p(2.1, 0.0), p(2.1, 2.0), p(0.0, 2.0)]], tol)?;
+    /// assert_eq!(a.area().unwrap().get(), 4.0);
+    /// a.validate()?;
+    /// # Ok::<(), yinset::yin2::YinError>(())
+    /// ```
     pub fn from_curves_with(
         curves: Vec<Vec<Point<N>>>,
         ctx: N::Ctx,
@@ -49,6 +60,19 @@ impl<N: Num> YinSet2<N> {
     /// Check the representation invariant exactly (seed 000 Def. 3.17, Thm 3.21): rebuilding the
     /// set from its own curves with exact predicates succeeds and gives the same canonical form.
     /// In float mode the coordinates are read as the exact rationals they are.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point, num::{Num, Rational}, yin2::YinSet2};
+    /// let sq = |x: i64, y: i64, s: i64| {
+    ///     let p = Point::<Rational>::int;
+    ///     YinSet2::from_curves(vec![vec![p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)]]).unwrap()
+    /// };
+    /// let (a, b) = (sq(0, 0, 2), sq(1, 1, 2));
+    /// for r in [&a & &b, &a | &b, &a - &b, &a ^ &b, !&a] {
+    ///     r.validate()?; // every operation's output is a realizable spadjor
+    /// }
+    /// # Ok::<(), yinset::yin2::YinError>(())
+    /// ```
     pub fn validate(&self) -> Result<(), YinError> {
         if self.curves().is_empty() {
             return Ok(());

@@ -1,9 +1,9 @@
-//! The arrangement of triangles against each other (seed 004 steps 1–2; DESIGN-3D §2.3–2.4):
-//! every contact of two triangles is computed exactly, every contact point is given to every
-//! triangle that contains it, and each triangle that received points or cut segments is
-//! re-triangulated in its plane. Because a triangle receives *every* contact point lying on it,
-//! two triangles that share a segment split it at the same points: the pieces form a
-//! conforming complex.
+//! The arrangement of triangles against each other (seed 004 steps 1–2; yin3 docs:
+//! *Triangle–triangle*, *Re-triangulation*): every contact of two triangles is computed exactly,
+//! every contact point is given to every triangle that contains it, and each triangle that received
+//! points or cut segments is re-triangulated in its plane. Because a triangle receives *every*
+//! contact point lying on it, two triangles that share a segment split it at the same points: the
+//! pieces form a conforming complex.
 
 use super::geom::{f64_box, in_triangle3, Chart};
 use super::tri::{apart_across, corners_after, intersect, meet_only_at};

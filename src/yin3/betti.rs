@@ -1,4 +1,4 @@
-//! Betti numbers b0, b1, b2 of a 3D Yin set as an open set (DESIGN-3D §2.12):
+//! Betti numbers b0, b1, b2 of a 3D Yin set as an open set (yin3 docs: *Betti numbers*):
 //! b0 = #atoms; b2 = bounded components of the closed complement (Alexander duality);
 //! b1 = b0 + b2 − χ(𝒴), with χ(𝒴) = χ(∂𝒴_ε)/2 + [𝒴 unbounded] and
 //! χ(∂𝒴_ε) = Σ_p (2 r_p − l_p) − F/2 over the vertices p of the boundary.

@@ -1,4 +1,4 @@
-//! The canonical form that decides equality of 3D Yin sets (DESIGN-3D §1): the oriented
+//! The canonical form that decides equality of 3D Yin sets (yin3 docs: *Data model*): the oriented
 //! 2-chain ∂𝒴 determines 𝒴, and per plane the chain is the pair of 2D Yin sets covered by the
 //! triangles whose normals point to either side, which no re-triangulation changes.
 

@@ -1,5 +1,5 @@
-//! Why user data is not the boundary of a 3D Yin set (seed 003 Def. 7.1–7.8; DESIGN-3D §1,
-//! invariants I1–I4), naming the face or edge at fault.
+//! Why user data is not the boundary of a 3D Yin set (seed 003 Def. 7.1–7.8; yin3 docs:
+//! *Data model*, invariants I1–I4), naming the face or edge at fault.
 
 use crate::num::Float;
 
@@ -12,59 +12,102 @@ pub enum Yin3Error {
     NoFaces,
     /// A coordinate is NaN or infinite.
     #[error("vertex {vertex}: coordinate is not finite")]
-    NotFinite { vertex: usize },
+    NotFinite {
+        /// The vertex, counting from 0 in the order given.
+        vertex: usize,
+    },
     /// A face names a vertex that does not exist.
     #[error("face {face}: vertex index {index} is out of range (there are {count} vertices)")]
     IndexOutOfRange {
+        /// The face, counting from 0 in the order given.
         face: usize,
+        /// The vertex index the face names.
         index: usize,
+        /// The number counted (vertices or faces).
         count: usize,
     },
     /// A face with fewer than 3 vertices or a repeated vertex.
     #[error("face {face}: {reason}")]
-    DegenerateFace { face: usize, reason: String },
+    DegenerateFace {
+        /// The face, counting from 0 in the order given.
+        face: usize,
+        /// Why, in words.
+        reason: String,
+    },
     /// A face whose vertices are not coplanar.
     #[error("face {face}: its {count} vertices are not coplanar (vertex {vertex} is off the plane of the first three that span one)")]
     NonPlanarFace {
+        /// The face, counting from 0 in the order given.
         face: usize,
+        /// The number counted (vertices or faces).
         count: usize,
+        /// The vertex, counting from 0 in the order given.
         vertex: usize,
     },
     /// Two faces cross each other.
     #[error(
         "faces {a} and {b} cross each other (their interiors meet along a segment through {point})"
     )]
-    Crossing { a: usize, b: usize, point: String },
+    Crossing {
+        /// The first face.
+        a: usize,
+        /// The second face.
+        b: usize,
+        /// A point where it happens, as text.
+        point: String,
+    },
     /// Two coplanar faces overlap in an area.
     #[error("faces {a} and {b} are coplanar and overlap in an area around {point}")]
-    Overlap { a: usize, b: usize, point: String },
+    Overlap {
+        /// The first face.
+        a: usize,
+        /// The second face.
+        b: usize,
+        /// A point where it happens, as text.
+        point: String,
+    },
     /// An edge with an odd number of faces: the surface is open there.
     #[error("the edge from {from} to {to} has {count} faces (face {face} among them): the surface is open there, every edge needs an even number")]
     OpenEdge {
+        /// The edge's start, as text.
         from: String,
+        /// The edge's end, as text.
         to: String,
+        /// The number counted (vertices or faces).
         count: usize,
+        /// The face, counting from 0 in the order given.
         face: usize,
     },
-    /// Faces around an edge whose orientations do not alternate (DESIGN-3D I3, seed 003 Lemma 5.5(c)).
+    /// Faces around an edge whose orientations do not alternate (invariant I3 of the yin3 docs,
+    /// seed 003 Lemma 5.5(c)).
     #[error("faces {a} and {b} are neighbours around the edge from {from} to {to} with inconsistent orientations: around an edge, faces must alternate between bounding the set from one side and from the other")]
     Inconsistent {
+        /// The edge's start, as text.
         from: String,
+        /// The edge's end, as text.
         to: String,
+        /// The first face.
         a: usize,
+        /// The second face.
         b: usize,
     },
-    /// A closed surface whose normals point the wrong way relative to the rest (DESIGN-3D I4).
+    /// A closed surface whose normals point the wrong way relative to the rest (invariant I4 of the
+    /// yin3 docs).
     #[error("the closed surface through face {face} is oriented against the rest: the winding number on the side its normals point to is {winding}, not {expected} (normals must point out of the set, by the right-hand rule)")]
     Orientation {
+        /// The face, counting from 0 in the order given.
         face: usize,
+        /// The winding number found.
         winding: i64,
+        /// The winding number a valid set has there.
         expected: i64,
     },
     /// Float mode: ε is too fine for the coordinates (as in 2D, `Tolerance`).
     #[error("tolerance {requested} is too fine for coordinates of this magnitude: the smallest usable is {representable}")]
     ToleranceTooFine {
+        /// The ε asked for.
         requested: Float,
+        /// The finest ε the coordinates allow.
         representable: Float,
     },
     /// Float mode: the result has no valid representation with `f64` vertices (the exact

@@ -1,5 +1,6 @@
-//! The faces around each edge in exact rotation order, and their good pairings (seed 003
-//! Def. 5.12, Lemma 5.13; seed 004 "pasting"; DESIGN-3D §2.6): no angles, no atan2.
+//! The faces around each edge in exact rotation order, and their good pairings (seed 003 Def. 5.12,
+//! Lemma 5.13; seed 004 "pasting"; yin3 docs: *Rotation order around an edge*): no angles, no
+//! atan2.
 
 use crate::kernel::{orient3d, Point3};
 use crate::num::Num;
@@ -73,7 +74,7 @@ impl FinTable {
 
 /// The partner of `fin` in `pairing`, given the fins `prev` and `next` to it in the
 /// counterclockwise order (orientations alternating): the +n side of a forward fin is
-/// counterclockwise from it (DESIGN-3D §2.6).
+/// counterclockwise from it (yin3 docs: *Rotation order around an edge*).
 pub(crate) fn partner(fin: Fin, pairing: Pairing, prev: usize, next: usize) -> usize {
     match (pairing, fin.forward) {
         (Pairing::Inside, true) | (Pairing::Outside, false) => prev,
@@ -118,8 +119,8 @@ fn sort_about<N: Num>(
     debug_assert_eq!(fins[0], first);
 }
 
-/// True if fins at every edge alternate in direction (DESIGN-3D I3); otherwise the first edge
-/// and the two neighbouring fins that do not.
+/// True if fins at every edge alternate in direction (invariant I3 of the yin3 docs); otherwise the
+/// first edge and the two neighbouring fins that do not.
 pub(crate) fn first_non_alternating(table: &FinTable) -> Option<(usize, Fin, Fin)> {
     for (e, fins) in table.fins.iter().enumerate() {
         let m = fins.len();

@@ -1,4 +1,4 @@
-//! 3D float mode (README, "3D float mode"): float sets are exactly valid sets of their `f64`
+//! 3D float mode (yin3 docs: *Float mode*): float sets are exactly valid sets of their `f64`
 //! values, and every decision about them is made on those values read as rationals. An
 //! operation is computed exactly and the result's vertices are rounded to the nearest `f64`s;
 //! the rounded boundary is accepted only if it is valid exactly and has the exact result's

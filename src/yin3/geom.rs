@@ -1,4 +1,4 @@
-//! Plane keys, 2D charts of planes, and point/triangle predicates (DESIGN-3D §2.1).
+//! Plane keys, 2D charts of planes, and point/triangle predicates (yin3 docs: *Primitives*).
 
 use crate::kernel::{orient, orient3d, Point, Point3};
 use crate::num::{exact_orient_f64, Num};

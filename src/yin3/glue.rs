@@ -1,5 +1,5 @@
-//! Glued-surface decomposition (seed 003 Def. 7.8; DESIGN-3D §2.7) and the corner cycles
-//! around vertices that the Betti numbers and genera count.
+//! Glued-surface decomposition (seed 003 Def. 7.8; yin3 docs: *Glued surfaces*) and the corner
+//! cycles around vertices that the Betti numbers and genera count.
 //!
 //! CC.1–3 are implicit: triangles are only ever joined across paired fins, never through a
 //! vertex alone. GS.1 joins triangles across the pairing that locally bounds the set; GS.2

@@ -1,5 +1,5 @@
-//! Orientation of glued surfaces, boundedness, the Hasse diagram of inclusion and the atoms
-//! (seed 003 Def. 7.3–7.6, Thm 7.10, Cor. 7.11; DESIGN-3D §2.8).
+//! Orientation of glued surfaces, boundedness, the Hasse diagram of inclusion and the atoms (seed
+//! 003 Def. 7.3–7.6, Thm 7.10, Cor. 7.11; yin3 docs: *Orientation, boundedness, Hasse diagram*).
 
 use super::geom::{det3, widened_box};
 use super::locate::winding;

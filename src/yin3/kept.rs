@@ -1,4 +1,4 @@
-//! Whether rounding a result's vertices to `f64` kept its topology (README, "3D float mode"):
+//! Whether rounding a result's vertices to `f64` kept its topology (yin3 docs: *Float mode*):
 //! [`Topology`], compared between the exact and the rounded boundary, and [`provably_kept`],
 //! a sufficient test that needs no exact structure.
 

@@ -1,12 +1,12 @@
-//! The faces of a vertex's link that lie in the set, r_p of the Betti numbers (DESIGN-3D
-//! §2.12; [`super::betti`]): where the link of a vertex p has several components, each lies
-//! in one face of each other, found by walking an arc of the link from one to the other.
-//! Points of the link are directions from p, integer vectors with no point constructed: a
-//! segment x → y not through p sweeps the directions λ(x − p) + μ(y − p), λ, μ ≥ 0, in the
-//! order of the arc, and scaling a direction by a positive number changes nothing. The walk
-//! runs first on intervals around the unscaled directions ([`Scalar`]): where every sign is
-//! certain it is the exact walk of a generic arc between the same wedges, and any generic arc
-//! finds the same face; elsewhere it runs on exact integer vectors.
+//! The faces of a vertex's link that lie in the set, r_p of the Betti numbers (yin3 docs: *Betti
+//! numbers*; [`super::betti`]): where the link of a vertex p has several components, each lies in
+//! one face of each other, found by walking an arc of the link from one to the other. Points of the
+//! link are directions from p, integer vectors with no point constructed: a segment x → y not
+//! through p sweeps the directions λ(x − p) + μ(y − p), λ, μ ≥ 0, in the order of the arc, and
+//! scaling a direction by a positive number changes nothing. The walk runs first on intervals
+//! around the unscaled directions ([`Scalar`]): where every sign is certain it is the exact walk of
+//! a generic arc between the same wedges, and any generic arc finds the same face; elsewhere it
+//! runs on exact integer vectors.
 
 use crate::kernel::Point3;
 use crate::num::{Interval, Num};

@@ -1,4 +1,4 @@
-//! Point location by a symbolically perturbed ray (DESIGN-3D §2.11): deterministic and exact,
+//! Point location by a symbolically perturbed ray (yin3 docs: *Locate*): deterministic and exact,
 //! with rays through edges and vertices decided by the perturbation q + (0, ε, ε²).
 
 use super::geom::{f64_box, in_triangle3};

@@ -1,7 +1,7 @@
-//! The meet of two 3D Yin sets (DESIGN-3D §2.5, §2.10; seed 004 steps 1–5; the 3D MRS-b..d of
-//! seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8): arrange both boundaries against each other, keep
-//! the pieces of each that lie in the other (coincident pieces: one copy if equally oriented,
-//! none if opposite), and paste the kept pieces into glued surfaces.
+//! The meet of two 3D Yin sets (yin3 docs: *Selection*, *Meet*; seed 004 steps 1–5; the 3D MRS-b..d
+//! of seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8): arrange both boundaries against each other, keep the
+//! pieces of each that lie in the other (coincident pieces: one copy if equally oriented, none if
+//! opposite), and paste the kept pieces into glued surfaces.
 
 use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
@@ -36,13 +36,34 @@ impl<N: Num> YinSet3<N> {
     /// # Panics
     /// Only in float mode, when the result has no valid `f64` representation
     /// ([`Yin3Error::Unrepresentable`]); [`YinSet3::try_meet`] returns that error instead.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// let m = cube(0, 0, 0, 2).meet(&cube(1, 1, 1, 2)); // also `&a & &b`
+    /// assert_eq!(m, cube(1, 1, 1, 1));
+    /// // Cubes sharing a face meet in nothing (the sets are open).
+    /// assert!(cube(0, 0, 0, 1).meet(&cube(1, 0, 0, 1)).is_empty());
+    /// ```
     pub fn meet(&self, other: &YinSet3<N>) -> YinSet3<N> {
         or_panic(self.try_meet(other), "meet")
     }
 
     /// The meet, or in float mode the error that it has no valid `f64` representation
-    /// (exact mode never fails). Float mode follows the contract of [`crate::num::Tolerance`]
-    /// in 3D ([`super::float`]).
+    /// (exact mode never fails). Float mode follows the contract in the module docs of
+    /// [`crate::yin3`], *Float mode*.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// let m = cube(0, 0, 0, 2).try_meet(&cube(1, 1, 1, 2))?; // exact mode never fails
+    /// assert_eq!(m.volume(), Some(Rational::from_i64(1)));
+    /// # Ok::<(), yinset::yin3::Yin3Error>(())
+    /// ```
     pub fn try_meet(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
         let ctx = N::combine_ctx(self.ctx, other.ctx);
         let (a, b) = match (self.brep(), other.brep()) {

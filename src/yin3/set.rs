@@ -1,5 +1,5 @@
 //! The 3D Yin space {0̂, 1̂, boundary representations} (seed 003 Def. 7.1–7.8, Cor. 7.11;
-//! DESIGN-3D §1) as the type `YinSet3`.
+//! yin3 docs: *Data model*) as the type `YinSet3`.
 
 use super::betti::{betti, Betti3};
 use super::canonical::{canonical, Canon};
@@ -152,7 +152,7 @@ impl<N: Num> Brep<N> {
             .unwrap_or_else(|e| panic!("the reversed boundary of a Yin set is one: {e}"))
     }
 
-    /// The Betti numbers of the set it bounds (DESIGN-3D §2.12), computed once.
+    /// The Betti numbers of the set it bounds (yin3 docs: *Betti numbers*), computed once.
     pub(crate) fn betti(&self) -> Betti3 {
         *self.betti.get_or_init(|| {
             let (atoms, bounded) = (self.atoms.len(), self.bounded);
@@ -189,7 +189,7 @@ impl<N: Num> Brep<N> {
         (0..self.tris.len()).map(|t| self.corners(t))
     }
 
-    /// Locate each point (DESIGN-3D §2.11): on the boundary if on a triangle (float mode:
+    /// Locate each point (yin3 docs: *Locate*): on the boundary if on a triangle (float mode:
     /// within ε of one), otherwise by the exact winding number. The triangles' boxes are put
     /// in an R-tree first, so that each point meets only the triangles near it and its ray.
     pub(crate) fn locate(&self, points: &[Point3<N>], ctx: &N::Ctx) -> Vec<Location> {
@@ -269,6 +269,13 @@ fn genera(tris: &[[usize; 3]], table: &FinTable, label: &[usize], count: usize) 
 
 impl<N: Num> YinSet3<N> {
     /// 0̂, the empty set.
+    ///
+    /// ```
+    /// use yinset::{num::{Num, Rational}, yin3::YinSet3};
+    /// let e = YinSet3::<Rational>::empty();
+    /// assert!(e.is_empty() && e.is_bounded());
+    /// assert_eq!(e.volume(), Some(Rational::from_i64(0)));
+    /// ```
     pub fn empty() -> YinSet3<N> {
         YinSet3 {
             repr: Repr3::Empty,
@@ -277,6 +284,14 @@ impl<N: Num> YinSet3<N> {
     }
 
     /// 1̂, the whole space.
+    ///
+    /// ```
+    /// use yinset::{num::Rational, yin3::YinSet3};
+    /// let all = YinSet3::<Rational>::full();
+    /// assert!(all.is_full() && !all.is_bounded());
+    /// assert_eq!(all.volume(), None);
+    /// assert_eq!(!&all, YinSet3::empty());
+    /// ```
     pub fn full() -> YinSet3<N> {
         YinSet3 {
             repr: Repr3::Full,
@@ -349,7 +364,21 @@ impl<N: Num> YinSet3<N> {
         self.brep().map_or(&[], |b| &b.atoms)
     }
 
-    /// Betti numbers b0, b1, b2 of the set as an open subset of ℝ³ (DESIGN-3D §2.12).
+    /// Betti numbers b0, b1, b2 of the set as an open subset of ℝ³ (yin3 docs: *Betti numbers*).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// // A cube with a cavity: one component, no tunnel, one cavity.
+    /// let hollow = &cube(0, 0, 0, 3) - &cube(1, 1, 1, 1);
+    /// let b = hollow.betti();
+    /// assert_eq!((b.b0, b.b1, b.b2), (1, 0, 1));
+    /// // Two cubes sharing only an edge are two components.
+    /// let pair = &cube(0, 0, 0, 1) | &cube(1, 1, 0, 1);
+    /// assert_eq!(pair.betti().b0, 2);
+    /// ```
     pub fn betti(&self) -> Betti3 {
         match &self.repr {
             Repr3::Empty => Betti3::default(),
@@ -368,15 +397,22 @@ impl<N: Num> YinSet3<N> {
     /// range of `f64`.
     ///
     /// ```
-    /// use yinset::kernel::Point3;
-    /// use yinset::num::{Float, Num, Rational, Tolerance};
-    /// use yinset::yin3::{shapes, YinSet3};
-    /// let p = |x: f64, y: f64, z: f64| Point3::new(Float::new(x), Float::new(y), Float::new(z));
-    /// let far = 1e9; // side 2 at 10⁹: f64 products of the corners would cancel
-    /// let (corners, faces) = shapes::cuboid(&p(far, far, far), &p(far + 2.0, far + 2.0, far + 2.0));
-    /// let cube = YinSet3::from_triangles_with(corners, faces, Tolerance::new(1.0)).unwrap();
-    /// assert_eq!(cube.volume(), Some(Float::new(8.0)));
-    /// assert_eq!(cube.volume_exact(), Some(Rational::from_i64(8)));
+    /// use yinset::{kernel::Point3, num::{Float, Num, Rational, Tolerance}, yin3::{shapes, YinSet3}};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// let (a, b) = (cube(0, 0, 0, 2), cube(1, 1, 1, 2));
+    /// assert_eq!(a.volume(), Some(Rational::from_i64(8)));
+    /// // Exact: |A ∧ B| + |A ∨ B| = |A| + |B|.
+    /// assert_eq!((&a & &b).volume().unwrap() + (&a | &b).volume().unwrap(), Rational::from_i64(16));
+    /// assert_eq!((!&a).volume(), None); // unbounded
+    ///
+    /// // Float mode: a cube of side 2 at 10⁹, where f64 products of the corners would cancel.
+    /// let p = |v: f64| Point3::new(Float::new(v), Float::new(v), Float::new(v));
+    /// let (corners, faces) = shapes::cuboid(&p(1e9), &p(1e9 + 2.0));
+    /// let far = YinSet3::from_triangles_with(corners, faces, Tolerance::new(1.0)).unwrap();
+    /// assert_eq!(far.volume(), Some(Float::new(8.0)));
+    /// assert_eq!(far.volume_exact(), Some(Rational::from_i64(8)));
     /// ```
     pub fn volume(&self) -> Option<N> {
         match &self.repr {
@@ -434,11 +470,31 @@ impl<N: Num> YinSet3<N> {
     }
 
     /// The bounding box of the boundary (`None` for 0̂ and 1̂).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// let b = (&cube(0, 0, 0, 1) | &cube(2, 0, 0, 1)).bbox().unwrap();
+    /// assert_eq!((b.min, b.max), (Point3::int(0, 0, 0), Point3::int(3, 1, 1)));
+    /// ```
     pub fn bbox(&self) -> Option<BBox3<N>> {
         BBox3::of(self.vertices())
     }
 
-    /// Locate each point: inside, outside or on the boundary (DESIGN-3D §2.11).
+    /// Locate each point: inside, outside or on the boundary (yin3 docs: *Locate*).
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// use yinset::yin2::Location;
+    /// let a = cube(0, 0, 0, 2);
+    /// let at = [Point3::int(1, 1, 1), Point3::int(2, 1, 1), Point3::int(3, 3, 3)];
+    /// assert_eq!(a.locate(&at), vec![Location::Inside, Location::OnBoundary, Location::Outside]);
+    /// ```
     pub fn locate(&self, points: &[Point3<N>]) -> Vec<Location> {
         match &self.repr {
             Repr3::Empty => vec![Location::Outside; points.len()],

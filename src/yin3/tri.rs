@@ -1,6 +1,6 @@
-//! Triangle–triangle intersection with every coplanar and touching case (seed 004 step 1;
-//! DESIGN-3D §2.3): the contact points, the segments each triangle must be cut along, and
-//! whether the two relative interiors meet (a crossing or an overlap).
+//! Triangle–triangle intersection with every coplanar and touching case (seed 004 step 1; yin3
+//! docs: *Triangle–triangle*): the contact points, the segments each triangle must be cut along,
+//! and whether the two relative interiors meet (a crossing or an overlap).
 
 use super::geom::{dominant_axis, in_triangle2, normal, Chart};
 use crate::kernel::{classify, orient, orient3d, Contact, Point, Point3};

@@ -1,5 +1,5 @@
 //! Exact constrained triangulation of one triangle with extra points and constraint segments:
-//! the re-triangulation of a cut face (seed 004 step 2; DESIGN-3D §2.4).
+//! the re-triangulation of a cut face (seed 004 step 2; yin3 docs: *Re-triangulation*).
 //!
 //! Points the caller knows to lie on a side split it first, in their order along it; the others
 //! are inserted one by one, each located by descending the history of splits; then every

@@ -1,4 +1,4 @@
-//! Construction from user triangles and the public validator (DESIGN-3D §2.2): faces are
+//! Construction from user triangles and the public validator (yin3 docs: *Validation*): faces are
 //! checked and triangulated, legal contacts (T-junctions, a vertex or an edge on a face) made
 //! conforming by the arrangement of the faces against each other, and invariants I1–I4
 //! checked, with errors naming the face or edge at fault.
@@ -43,6 +43,18 @@ impl<N: Num> YinSet3<N> {
     }
 
     /// As [`YinSet3::from_triangles`], with the given number context.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Float, Tolerance}, yin3::YinSet3};
+    /// let p = |x: f64, y: f64, z: f64| Point3::new(Float::new(x), Float::new(y), Float::new(z));
+    /// // A tetrahedron with f64 corners, faces counterclockwise seen from outside.
+    /// let corners = vec![p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0), p(0.0, 0.0, 1.0)];
+    /// let faces = vec![vec![0, 2, 1], vec![0, 1, 3], vec![0, 3, 2], vec![1, 2, 3]];
+    /// let t = YinSet3::from_triangles_with(corners, faces, Tolerance::new(1e-9))?;
+    /// assert!((t.volume().unwrap().get() - 1.0 / 6.0).abs() < 1e-15);
+    /// t.validate()?;
+    /// # Ok::<(), yinset::yin3::Yin3Error>(())
+    /// ```
     pub fn from_triangles_with(
         vertices: Vec<Point3<N>>,
         faces: Vec<Vec<usize>>,
@@ -71,6 +83,18 @@ impl<N: Num> YinSet3<N> {
     /// Check that the stored boundary is a valid boundary representation (I1–I4), as
     /// [`YinSet3::from_triangles`] would accept it unchanged; every operation's output passes.
     /// Float sets are checked exactly, on their `f64` values read as rationals.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// let (a, b) = (cube(0, 0, 0, 2), cube(1, 1, 1, 2));
+    /// for r in [&a & &b, &a | &b, &a - &b, &a ^ &b, !&a] {
+    ///     r.validate()?; // every operation's output is a valid boundary representation
+    /// }
+    /// # Ok::<(), yinset::yin3::Yin3Error>(())
+    /// ```
     pub fn validate(&self) -> Result<(), Yin3Error> {
         let Some(b) = self.brep() else {
             return Ok(());
