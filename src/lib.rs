@@ -1,6 +1,8 @@
 #![doc = include_str!("../README.md")]
+#[cfg(feature = "cli")]
 pub mod cli;
-pub mod demo;
+#[cfg(feature = "cli")]
+mod demo;
 pub mod io;
 pub mod kernel;
 pub mod num;
