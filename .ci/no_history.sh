@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Keeps the history of the work out of the documents and the source comments, where it lives in
 # git instead: fails, naming each file:line, where README.md, benches/BENCHMARKS.md,
-# fuzz/README.md, proofs/README.md or a comment in src/**/*.rs has
+# fuzz/README.md, proofs/README.md, Cargo.toml (it ships in the package) or a comment in
+# src/**/*.rs has
 #   * a commit hash: a word of 7 to 40 lower-case hex digits with a digit and a letter in it,
 #     not a hex constant (0x…, #rrggbb…, part of a longer hex or decimal word) nor a number in
 #     exponent notation past 7 characters (1e999999); hashes of digits alone pass;
@@ -14,7 +15,7 @@ set -euo pipefail
 if [ "$#" -eq 0 ]; then
   cd "$(dirname "$0")/.."
   mapfile -t files < <(printf '%s\n' README.md benches/BENCHMARKS.md fuzz/README.md \
-    proofs/README.md; git ls-files 'src/*.rs')
+    proofs/README.md Cargo.toml; git ls-files 'src/*.rs')
   set -- "${files[@]}"
 fi
 exec perl -e '
