@@ -11,7 +11,7 @@
 //! | [`yin2`] | Jordan curves, realizable spadjors and the Jordan space: validation, locate, the arrangement sweep, the pasting map, complement, meet, join, Hasse diagram, atoms, Betti numbers, canonical form; float mode's snap rounding |
 //! | [`yin3`] | the same for 3D: conforming triangulations, glued surfaces, their Hasse diagram, Betti numbers, locate, volume, the Boolean operations and 3D float mode |
 //! | [`io`] | readers and writers: yin2 text, WKT, GeoJSON, WKB, SVG (2D); OBJ, STL, OFF, PLY, PNG and HTML (3D) |
-//! | [`cli`] | the `yinset` command |
+//! | `cli` | the `yinset` command (feature `cli`, on by default) |
 //!
 //! Items are named as the seed papers name them (spadjor, atom, pasting map, locate, meet,
 //! join, complement, Hasse diagram, glued surface), and each cites its definition in its doc
@@ -29,8 +29,10 @@
 //! result needs their coordinates. Float mode's ε and what it does are described on
 //! [`num::Num`] and [`num::Tolerance`].
 #![warn(missing_docs)]
+#[cfg(feature = "cli")]
 pub mod cli;
-pub mod demo;
+#[cfg(feature = "cli")]
+mod demo;
 pub mod io;
 pub mod kernel;
 pub mod num;

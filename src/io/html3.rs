@@ -2,12 +2,11 @@
 //! triangles and a small hand-written canvas viewer inline), so it needs no network.
 //!
 //! The viewer draws the triangles back to front on a 2D canvas (painter's algorithm), in the
-//! colours and opacities of the PNG pictures ([`super::png3`]): negatively oriented glued
+//! colours and opacities of the PNG pictures ([`super::scene3`]): negatively oriented glued
 //! surfaces (cavities) opaque orange, positively oriented ones translucent blue. Dragging turns
 //! the view (azimuth and elevation, starting from the given [`View`]); the wheel zooms.
 
-use super::png3::{NEGATIVE, OPACITY, POSITIVE};
-use super::scene3::{Facet, View};
+use super::scene3::{Facet, View, NEGATIVE, OPACITY, POSITIVE};
 use super::svg::escape;
 use std::fmt::Write;
 

@@ -1,7 +1,8 @@
 //! Formats read and written exactly: the `yin2` curve lists ([`yin2_text`]), WKT ([`wkt`]),
 //! GeoJSON ([`geojson`]) and WKB ([`wkb`], binary `f64` coordinates) in 2D; the meshes
 //! ([`mesh`]) of Wavefront OBJ ([`obj`]), STL ([`stl`]), OFF ([`off`]) and PLY ([`ply`]) in 3D. Pictures: SVG of 2D sets ([`svg`]); PNG
-//! ([`png3`]) and interactive HTML ([`html3`]) of 3D sets, from a [`scene3`].
+//! (`png3`) and interactive HTML ([`html3`]) of 3D sets, from a [`scene3`]. The PNG writers,
+//! `png` (2D sets' SVG rasterized) and `png3`, need the feature `png` (on by default).
 //!
 //! Readers parse every coordinate with [`crate::num::Num::parse`], so exact backends get the
 //! decimal text's value without rounding (binary floats of STL and PLY are exact rationals);
@@ -21,7 +22,9 @@ pub mod mesh;
 pub mod obj;
 pub mod off;
 pub mod ply;
+#[cfg(feature = "png")]
 pub mod png;
+#[cfg(feature = "png")]
 pub mod png3;
 pub mod scene3;
 pub mod stl;

@@ -6,14 +6,7 @@
 //! surfaces that enclose them. Shading is by the angle to a light over the viewer's shoulder,
 //! the same on both sides of a triangle. Pixels are 2×2 supersampled; the background is white.
 
-use super::scene3::{Facet, View};
-
-/// Colour of positively oriented glued surfaces (outer surfaces).
-pub const POSITIVE: [u8; 3] = [40, 100, 230];
-/// Colour of negatively oriented glued surfaces (cavities; an unbounded set's surface).
-pub const NEGATIVE: [u8; 3] = [240, 110, 20];
-/// Opacity of positively oriented surfaces.
-pub const OPACITY: f32 = 0.4;
+use super::scene3::{Facet, View, NEGATIVE, OPACITY, POSITIVE};
 /// Samples per pixel along each axis.
 const SUPERSAMPLE: usize = 2;
 /// Blank border, as a fraction of the picture's side.

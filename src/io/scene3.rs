@@ -1,10 +1,18 @@
-//! What the pictures of a 3D set ([`super::png3`], [`super::html3`]) draw and from where: its
-//! boundary triangles in `f64` (a picture is not exact), each marked with the orientation of
-//! its glued surface, and an orthographic view given by azimuth and elevation.
+//! What the pictures of a 3D set (PNG in `super::png3`, [`super::html3`]) draw and from where:
+//! its boundary triangles in `f64` (a picture is not exact), each marked with the orientation
+//! of its glued surface and drawn in that orientation's colour, and an orthographic view given
+//! by azimuth and elevation.
 
 use crate::kernel::Point3;
 use crate::num::Num;
 use crate::yin3::YinSet3;
+
+/// Colour of positively oriented glued surfaces (outer surfaces).
+pub const POSITIVE: [u8; 3] = [40, 100, 230];
+/// Colour of negatively oriented glued surfaces (cavities; an unbounded set's surface).
+pub const NEGATIVE: [u8; 3] = [240, 110, 20];
+/// Opacity of positively oriented surfaces.
+pub const OPACITY: f32 = 0.4;
 
 /// One boundary triangle to draw: its corners (counterclockwise seen from outside the set) and
 /// whether its glued surface is positively oriented (seed 003 Def. 7.3: an outer surface)

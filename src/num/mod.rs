@@ -52,13 +52,28 @@ pub enum NumError {
     NotFinite(f64),
 }
 
-/// A coordinate number: exact rationals or ε-floats behind one interface (crate docs:
-/// *Architecture*).
+/// A coordinate number: exact rationals or ε-floats behind one interface, the layer every
+/// geometric algorithm of the crate is generic over.
 ///
 /// Arithmetic is by value; `Ord` is the exact order of the stored values (for [`Float`], the
-/// total order of `f64`), so sweeps and canonical forms are deterministic. The tolerance of
-/// float mode lives in the run-time context [`Num::Ctx`] and enters only through
-/// [`Num::orient2d`], the one predicate every geometric decision is built on.
+/// total order of `f64`), so sweeps and canonical forms are deterministic. The tolerance ε of
+/// float mode lives in the run-time context [`Num::Ctx`] ([`Tolerance`]), and enters in three
+/// places only:
+///
+/// * **The grid** ([`Num::grid`]): 2D float results are snap-rounded to the grid of the
+///   largest power of two not above ε, on grid integers with exact integer predicates; one
+///   place in `yin2` chooses that stage for every construction and operation.
+/// * **Location**: a point within ε of a set's boundary is located on it ([`Num::tolerance`]):
+///   in 2D by its distance to the nearest edge, in 3D by [`Num::orient3d`] and
+///   [`Num::orient2d`] under ε (the only callers that pass them a context with ε > 0).
+/// * **Its own resolution** ([`Num::resolve_ctx`], [`Num::combine_ctx`]): the default ε from
+///   the input's extent, the refusal of an ε too fine for its coordinates, and the coarser ε of
+///   two operands.
+///
+/// Every other decision, in both modes, is exact: the constructions, validation and Boolean
+/// operations call the predicates with the exact context ([`Num::exact_ctx`]: for floats the
+/// exact sign on the `f64` values), and 3D float operations are computed exactly on the
+/// operands' `f64` values, their results' vertices then rounded to `f64`.
 pub trait Num:
     Clone
     + Debug
@@ -119,13 +134,14 @@ pub trait Num:
 
     /// Orientation of `c` relative to the directed line `a → b` (the Left test of seed 002,
     /// Alg. 1): `Greater` if `c` is to the left, `Less` if to the right, `Equal` if on the line
-    /// (in float mode: within ε of it).
+    /// (under a float context with ε > 0: within ε of it; only 3D location passes one).
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], ctx: &Self::Ctx) -> Ordering;
 
     /// Orientation of `d` relative to the plane through `a`, `b`, `c`: the sign of
     /// det[b − a, c − a, d − a], `Greater` on the side the normal (b − a) × (c − a) points to
-    /// (yin3 docs: *Primitives*), `Equal` on the plane (in float mode: within ε of it; the sign
-    /// otherwise is exact, by Shewchuk's adaptive `orient3d`).
+    /// (yin3 docs: *Primitives*), `Equal` on the plane (under a float context with ε > 0: within ε of
+    /// it, which only 3D location passes; the sign otherwise is exact, by Shewchuk's adaptive
+    /// `orient3d`).
     fn orient3d(
         a: [&Self; 3],
         b: [&Self; 3],

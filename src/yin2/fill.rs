@@ -15,23 +15,17 @@
 //! every exterior counterclockwise and every hole clockwise (as GeoJSON RFC 7946 asks) and use
 //! [`FillRule::NonZero`].
 //!
-//! Float mode (a context with an ε-grid) hands the ring edges to the snap rounding of the
-//! `snap` module, which applies the same rule to the snapped arrangement.
+//! Float mode (a context with an ε-grid) applies the same rule to the arrangement of the rings
+//! snap-rounded to the grid (the `stage` module chooses).
 //!
 //! Cost: O((n + I) log n) for n ring edges with I contacts (one sweep: the arrangement with the
 //! winding numbers of its faces).
 
-use super::arrangement::Arrangement;
 use super::error::YinError;
-use super::intersect::{arrange, Edge};
-use super::paste::Segmented;
 use super::set::YinSet2;
-use super::snap::regularize;
-use super::validate::resolve_for;
-use super::vertex::Vertex;
+use super::stage::{faces_where, resolve_for};
 use crate::kernel::Point;
 use crate::num::Num;
-use std::ops::{Add, Sub};
 
 /// Which winding numbers are inside.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -104,98 +98,9 @@ impl<N: Num> YinSet2<N> {
             }
         }
         let ctx = resolve_for(&rings, ctx)?;
-        if N::grid(&ctx).is_some() {
-            // Float mode: the snap rounding applies the rule to the snapped arrangement.
-            let labelled = rings.iter().map(|ring| (&ring[..], 0));
-            return regularize(labelled, false, ctx, |w| rule.inside(w[0]));
-        }
-        fill_exact(&ring_edges(&rings), |_| 1, ctx, |w| rule.inside(w))
+        let labelled = rings.iter().map(|ring| (&ring[..], 0));
+        faces_where(labelled, false, ctx, |w| rule.inside(w[0]))
     }
-}
-
-/// The regularized set {p off the edges : inside(w(p))} for w the winding number of the
-/// directed `edges`, edge `e` counted `mult(e)` times (a vector of counts for several
-/// operands): the arrangement of all edges in one sweep ([`arrange`]), the winding numbers of
-/// the faces beside each of its pieces, and the pasting map (seed 000 Lemma 4.2) of the pieces
-/// between an inside face (on their left) and an outside one. With no such piece, the far face
-/// (w = 0) decides between 0̂ and 1̂. O((n + I) log n) for n edges with I contacts. Its
-/// predicates must be exact: exact mode (float mode's snapped fragments go through
-/// [`fill_arranged`]).
-pub(crate) fn fill_exact<N, W>(
-    edges: &[Edge<N>],
-    mult: impl Fn(usize) -> W,
-    ctx: N::Ctx,
-    inside: impl Fn(W) -> bool,
-) -> Result<YinSet2<N>, YinError>
-where
-    N: Num,
-    W: Copy + Default + Add<Output = W> + Sub<Output = W>,
-{
-    let arr = arrange(edges, &ctx);
-    let ascending = |e: usize| edges[e].0 < edges[e].1;
-    fill_arranged(arr, Vertex::into_point, mult, ascending, ctx, inside)
-}
-
-/// [`fill_exact`] on an arrangement made already, whose edge `e` counts `mult(e)` times and
-/// is given from its lower end to its upper one (in sweep order) where `ascending(e)`, its
-/// points made exact by `point` (float mode's snap rounding makes the arrangement of its grid
-/// fragments and checks that no two of them cross).
-pub(crate) fn fill_arranged<P, N, W>(
-    arr: Arrangement<P>,
-    point: impl FnMut(P) -> Point<N>,
-    mult: impl Fn(usize) -> W,
-    ascending: impl Fn(usize) -> bool,
-    ctx: N::Ctx,
-    inside: impl Fn(W) -> bool,
-) -> Result<YinSet2<N>, YinError>
-where
-    N: Num,
-    W: Copy + Default + Add<Output = W> + Sub<Output = W>,
-{
-    // The sweep orders each edge lo → hi; an edge given hi → lo counts negatively upwards.
-    let upward = |e: usize| {
-        if ascending(e) {
-            mult(e)
-        } else {
-            W::default() - mult(e)
-        }
-    };
-    let windings = arr.windings(upward);
-    let mut pieces = Vec::with_capacity(arr.groups.len());
-    // The piece directly below each piece's lower end, and the piece at or below each group.
-    let mut under = Vec::with_capacity(arr.groups.len());
-    let mut down: Vec<Option<usize>> = Vec::with_capacity(arr.groups.len());
-    for (g, (below, above)) in arr.groups.iter().zip(windings) {
-        let beneath = g.below.and_then(|b| down[b]);
-        let piece = match (inside(below), inside(above)) {
-            (false, true) => (g.from, g.to),
-            (true, false) => (g.to, g.from),
-            _ => {
-                down.push(beneath);
-                continue;
-            }
-        };
-        down.push(Some(pieces.len()));
-        pieces.push(piece);
-        under.push(beneath);
-    }
-    if pieces.is_empty() && inside(W::default()) {
-        return Ok(YinSet2::full().with_ctx(ctx));
-    }
-    let points = arr.into_points(&mut pieces, point);
-    Segmented::swept(points, pieces, under).paste_exact(ctx)
-}
-
-/// The directed edges of all rings, each ring closed, zero-length edges dropped.
-fn ring_edges<N: Num>(rings: &[Vec<Point<N>>]) -> Vec<Edge<N>> {
-    rings
-        .iter()
-        .flat_map(|ring| {
-            let n = ring.len();
-            (0..n).map(move |k| (ring[k].clone(), ring[(k + 1) % n].clone()))
-        })
-        .filter(|(a, b)| a != b)
-        .collect()
 }
 
 #[cfg(test)]

@@ -2,12 +2,11 @@
 //! O((n + I) log n) (seed 002 §1.3).
 
 use super::error::YinError;
-use super::fill::fill_exact;
-use super::intersect::Edge;
+use super::faces::inside_set;
 use super::paste::or_kernel_bug;
 use super::set::{Repr, Spadjor, YinSet2};
-use super::snap::{inside_set, regularize};
-use super::winding::{Pair, Winding};
+use super::stage::faces_where;
+use super::winding::Winding;
 use crate::num::Num;
 
 impl<N: Num> YinSet2<N> {
@@ -41,10 +40,8 @@ impl<N: Num> YinSet2<N> {
 /// The Boolean operation `keep` on two spadjors: the faces where `keep(in 𝒥, in 𝒦)` holds,
 /// decided by the winding numbers of each operand's boundary (every boundary is oriented with
 /// its set on the left, seed 000 Def. 3.10: off the boundary, 𝒥's winding number is 1 inside
-/// and 0 outside a bounded 𝒥, 0 inside and −1 outside an unbounded one). Exact mode: one
-/// sweep for the arrangement of both boundaries and the windings of its faces, then the pasting
-/// map ([`fill_exact`]); float mode: one snap rounding of both boundaries on grid integers
-/// ([`regularize`]).
+/// and 0 outside a bounded 𝒥, 0 inside and −1 outside an unbounded one), in one arrangement of
+/// both boundaries ([`faces_where`]: exact, or snap-rounded in float mode).
 pub(crate) fn overlay<N: Num>(
     a: &Spadjor<N>,
     b: &Spadjor<N>,
@@ -53,20 +50,9 @@ pub(crate) fn overlay<N: Num>(
 ) -> Result<YinSet2<N>, YinError> {
     let (ua, ub) = (!a.bounded, !b.bounded);
     let inside = |w: Winding| keep(inside_set(w[0], ua), inside_set(w[1], ub));
-    if N::grid(&ctx).is_some() {
-        let rings = [a, b]
-            .into_iter()
-            .enumerate()
-            .flat_map(|(label, s)| s.curves.iter().map(move |c| (c.vertices(), label)));
-        return regularize(rings, true, ctx, inside);
-    }
-    let na = a.curves.iter().map(|c| c.len()).sum::<usize>();
-    let edges: Vec<Edge<N>> = a
-        .edges()
+    let rings = [a, b]
         .into_iter()
-        .chain(b.edges())
-        .map(|(p, q)| (p.clone(), q.clone()))
-        .collect();
-    let label = |e: usize| Pair::unit(usize::from(e >= na));
-    fill_exact(&edges, label, ctx, |w: Pair| inside(w.0))
+        .enumerate()
+        .flat_map(|(label, s)| s.curves.iter().map(move |c| (c.vertices(), label)));
+    faces_where(rings, true, ctx, inside)
 }

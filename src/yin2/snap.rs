@@ -4,12 +4,12 @@
 
 use super::buckets::Buckets;
 use super::error::YinError;
-use super::fill::fill_arranged;
+use super::faces::fill_arranged;
 use super::grid_arrange::{arrange_grid, crossing_pixel, G};
 use super::grid_pairs::grid_crossing_pairs;
 use super::hot_pixels::HotPixels;
 use super::set::YinSet2;
-use super::winding::{Pair, Winding};
+use super::winding::Winding;
 use crate::kernel::Point;
 use crate::num::Num;
 use std::collections::{BTreeMap, BTreeSet};
@@ -72,16 +72,15 @@ fn regularize_as<'a, N: Num>(
             snap.force(&fragments, &owner, &arr.crossed)?;
             continue;
         }
-        let label = |e: usize| Pair::unit(fragments[e].1);
+        let label = |e: usize| fragments[e].1;
         let ascending = |e: usize| {
             let (a, b) = fragments[e].0;
             a < b
         };
-        let inside = |w: Pair| inside(w.0);
         // The grid points are exact numbers and the map from the grid is a translation and a
         // scaling by a power of two: the exact predicates decide the same on either side.
         let point = |k: G| frame.at(k);
-        let set = fill_arranged(arr, point, label, ascending, N::Ctx::default(), inside)?;
+        let set = fill_arranged(arr, point, label, ascending, N::Ctx::default(), &inside)?;
         return Ok(set.with_ctx(ctx));
     }
 }
@@ -156,12 +155,6 @@ impl<N: Num> Frame<N> {
 fn floor_i64(t: f64) -> i64 {
     let i = t as i64;
     i.saturating_sub(i64::from(i as f64 > t))
-}
-
-/// Whether a face of winding `w` lies in a Yin set bounded by closed cycles: positive winding,
-/// or non-negative if the set is unbounded (its far face, of winding 0, is inside).
-pub(crate) fn inside_set(w: i64, unbounded: bool) -> bool {
-    w + i64::from(unbounded) > 0
 }
 
 /// Snap rounding (Hobby 1999; Guibas and Marimont 1998) of grid segments, tried lazily first:
@@ -532,6 +525,7 @@ impl Route<'_> {
 mod tests {
     use super::*;
     use crate::num::{Float, Rational, Tolerance};
+    use crate::yin2::faces::inside_set;
     use crate::yin2::grid_arrange::cross_properly;
     use crate::yin2::set::Repr;
     use crate::yin2::FillRule;

@@ -4,9 +4,9 @@
 use super::error::YinError;
 use super::intersect::{intersections, Edge};
 use super::set::{Spadjor, YinSet2};
-use super::snap::{inside_set, regularize};
-use crate::kernel::{cmp_clockwise_from, BBox, Contact, Point};
-use crate::num::{Float, Num, Rational};
+use super::stage::{bounded_by, resolve_for};
+use crate::kernel::{cmp_clockwise_from, Contact, Point};
+use crate::num::{Num, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use std::cmp::Ordering;
@@ -47,14 +47,7 @@ impl<N: Num> YinSet2<N> {
         let ctx = resolve_for(&curves, ctx)?;
         // The input must bound a Yin set exactly as given; float mode's ε applies to results.
         let spadjor = realize(curves, &N::Ctx::default())?;
-        if N::grid(&ctx).is_some() {
-            // Float mode: the set the curves bound, snap-rounded to the grid of ε.
-            let unbounded = !spadjor.bounded;
-            let rings = spadjor.curves.iter().map(|c| (c.vertices(), 0));
-            let y = regularize(rings, true, ctx, |w| inside_set(w[0], unbounded))?;
-            return not_collapsed(y);
-        }
-        Ok(YinSet2::from_spadjor(spadjor, ctx))
+        bounded_by(spadjor, ctx)
     }
 
     /// Check the representation invariant exactly (seed 000 Def. 3.17, Thm 3.21): rebuilding the
@@ -119,31 +112,6 @@ impl<N: Num> YinSet2<N> {
                     .collect()
             })
             .collect()
-    }
-}
-
-/// The context `ctx` resolved for the finite points of `curves` ([`Num::resolve_ctx`]: float
-/// mode's default ε, or the error that the requested one is too fine for them).
-pub(crate) fn resolve_for<N: Num>(
-    curves: &[Vec<Point<N>>],
-    ctx: N::Ctx,
-) -> Result<N::Ctx, YinError> {
-    let (span, magnitude) =
-        BBox::of(curves.iter().flatten()).map_or((0.0, 0.0), |b| (b.span(), b.extent()));
-    N::resolve_ctx(ctx, span, magnitude).map_err(|e| YinError::ToleranceTooFine {
-        requested: Float::new(e.requested),
-        representable: Float::new(e.representable),
-    })
-}
-
-/// A float set snapped from a non-empty input, or the error that the whole input vanished on
-/// its grid (a non-empty set never silently becomes 0̂ or 1̂).
-pub(crate) fn not_collapsed<N: Num>(y: YinSet2<N>) -> Result<YinSet2<N>, YinError> {
-    match y.grid() {
-        Some(g) if y.is_empty() || y.is_full() => Err(YinError::CollapsedOnGrid {
-            grid: Float::new(g),
-        }),
-        _ => Ok(y),
     }
 }
 
