@@ -10,7 +10,8 @@
 #   * the word "session";
 #   * "issue N" (or "issues N").
 # The files are the arguments, or the ones above (run from anywhere in the repository).
-# BENCHMARKS.md may name one commit, the one it measured (as often as it likes).
+# BENCHMARKS.md may name the commits it measured in its header (before its first `## `
+# section), and no commit below it.
 set -euo pipefail
 if [ "$#" -eq 0 ]; then
   cd "$(dirname "$0")/.."
@@ -32,10 +33,11 @@ my $found = 0;
 for my $file (@ARGV) {
   open(my $fh, "<", $file) or die "no_history: cannot read $file: $!\n";
   my $rust = $file =~ /\.rs$/;
-  # The one commit BENCHMARKS.md may name: the first hash it has.
-  my $measured = $file =~ /BENCHMARKS\.md$/ ? "" : undef;
+  # BENCHMARKS.md names the commits it measured in its header, above its first section.
+  my $header = $file =~ /BENCHMARKS\.md$/;
   while (my $line = <$fh>) {
     my $text = $line;
+    $header = 0 if $line =~ /^## /;
     if ($rust) {
       # Only comments: the text after the first //.
       next unless $text =~ s{^.*?//}{};
@@ -43,10 +45,7 @@ for my $file (@ARGV) {
     for my $rule (@rules) {
       my ($what, $re) = @$rule;
       while ($text =~ /($re)/g) {
-        if (defined $measured && $re == $hash) {
-          $measured = $1 if $measured eq "";
-          next if $1 eq $measured;
-        }
+        next if $header && $re == $hash;
         chomp(my $shown = $line);
         print "$file:$.: $what ($1): $shown\n";
         $found++;
