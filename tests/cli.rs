@@ -703,3 +703,128 @@ fn float_areas_are_exact_beyond_the_range_of_f64() {
         assert_eq!(info["area"]["float"], float, "side 2^{k}");
     }
 }
+
+/// Two 10 m squares in UTM coordinates (as the GIS cases of the JTS suites): at 4.6·10⁶ the
+/// finest grid is 2⁻²⁸ (4.6·10⁶ < 2²³ = 2⁵¹ · 2⁻²⁸), so ε = 10⁻⁹ is refused.
+const UTM: &str = "MULTIPOLYGON (((500000 4649776, 500010 4649776, 500010 4649786, 500000 4649786, 500000 4649776)))";
+/// A square overlapping UTM's by 5 × 5.
+const UTM_B: &str =
+    "POLYGON ((500005 4649781, 500015 4649781, 500015 4649791, 500005 4649791, 500005 4649781))";
+
+/// An ε too fine for the coordinates blames the tolerance, not the input, names the finest that
+/// works and offers `--eps auto`; auto then works, and its ε is the documented default:
+/// 10⁻¹⁰ × the side 10, raised to the finest grid 2⁻²⁸ ≈ 3.7·10⁻⁹ (so 1.9·10⁻⁹ off an edge is
+/// on the boundary, 9.3·10⁻⁹ off is not).
+#[test]
+fn eps_auto_takes_the_default_tolerance_where_a_given_one_is_too_fine() {
+    let dir = scratch();
+    let (a, b) = (file(&dir, "a.wkt", UTM), file(&dir, "b.wkt", UTM_B));
+    let refused = yinset()
+        .args(["meet", s(&a), s(&b), "--eps", "1e-9"])
+        .assert()
+        .code(1);
+    let message = String::from_utf8(refused.get_output().stderr.clone()).unwrap();
+    for needle in [
+        "a.wkt` cannot be read with this tolerance",
+        "tolerance 1e-9 is too fine",
+        "3.725290298461914e-9",
+        "--eps auto",
+    ] {
+        assert!(message.contains(needle), "{needle}: {message}");
+    }
+    assert!(!message.contains("not a Yin set"), "{message}");
+    let meet = ok(&["meet", s(&a), s(&b), "--eps", "auto", "--to", "wkt"], "");
+    let info: Value =
+        serde_json::from_str(&ok(&["info", "-", "--from", "wkt", "--eps", "auto"], &meet)).unwrap();
+    assert_eq!(info["exact"], false);
+    assert_eq!(info["area"]["float"], 25.0);
+    let points = "500005 4649776.000000002\n500005 4649776.00000001\n";
+    assert_eq!(
+        ok(&["locate", s(&a), "-", "--eps", "auto"], points),
+        "boundary\ninside\n"
+    );
+    assert_eq!(ok(&["locate", s(&a), "-"], points), "inside\ninside\n");
+    fails(
+        &["info", s(&a), "--eps", "Auto"],
+        "",
+        2,
+        &["not a number or auto"],
+    );
+}
+
+/// Vertices that differ in the input but are one `f64` are said to coincide once rounded, not
+/// merely called a repeated vertex; a vertex repeated in the input gets no such note.
+#[test]
+fn vertices_merged_by_rounding_to_f64_are_named_as_such() {
+    let note = "differ in the input but coincide once rounded to the nearest f64s";
+    let merged =
+        "POLYGON ((0 0, 1 0, 1 1, 1.00000000000000000001 1.00000000000000000001, 0 1, 0 0))";
+    fails(
+        &["info", "-", "--from", "wkt", "--eps", "1e-9"],
+        merged,
+        1,
+        &[
+            "curve 0, vertex 3: repeats the previous vertex (1, 1)",
+            note,
+        ],
+    );
+    // Exactly, the same text is a Yin set (a pentagon with a vertex 10⁻²⁰ off (1, 1) on the
+    // diagonal).
+    let info: Value = serde_json::from_str(&ok(&["info", "-", "--from", "wkt"], merged)).unwrap();
+    assert_eq!(info["vertices"], 5);
+    let repeated = "POLYGON ((0 0, 1 0, 1 1, 1 1, 0 1, 0 0))";
+    yinset()
+        .args(["info", "-", "--from", "wkt", "--eps", "1e-9"])
+        .write_stdin(repeated)
+        .assert()
+        .code(1)
+        .stderr(contains("repeats the previous vertex").and(contains(note).not()));
+    // A yin2 triangle whose last vertex rounds to its first: two vertices are left.
+    fails(
+        &["info", "-", "--eps", "1e-9"],
+        "1 1\n2 1\n1.00000000000000000001 1.00000000000000000001\n",
+        1,
+        &["curve 0: 2 vertices", note],
+    );
+}
+
+/// The PNG of `render` says what the SVG says: each label's line, right of its swatch, and the
+/// key's line have dark pixels (the words, in a bitmap font), the margin left of the swatches
+/// none. Two squares in [0, 10]²: 800 pixels over the window's 11 units, the legend's unit is
+/// 10 / 400, so 800 / 11 · 0.025 pixels per legend unit.
+#[test]
+fn the_png_legend_names_the_layers() {
+    let dir = scratch();
+    let a = file(&dir, "first.txt", "0 0\n10 0\n10 10\n0 10\n");
+    let b = file(&dir, "second.txt", "2 2\n8 2\n8 8\n2 8\n");
+    let png = dir.path().join("x.png");
+    ok(&["render", s(&a), s(&b), "-o", s(&png)], "");
+    let bytes = std::fs::read(&png).unwrap();
+    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .expect("a valid PNG");
+    let mut buf = vec![0; reader.output_buffer_size().expect("a buffer size")];
+    let info = reader.next_frame(&mut buf).expect("a PNG frame");
+    assert_eq!((info.color_type, info.width), (png::ColorType::Rgba, 800));
+    let scale = 800.0 / 11.0 * 0.025;
+    let dark = |x: [f64; 2], y: [f64; 2]| {
+        let px = |v: f64| (v * scale) as usize;
+        let mut n = 0;
+        for j in px(y[0])..px(y[1]) {
+            for i in px(x[0])..px(x[1]) {
+                let p = &buf[4 * (j * info.width as usize + i)..][..3];
+                n += usize::from(p.iter().all(|&c| c < 128));
+            }
+        }
+        n
+    };
+    // Label k on the baseline 21 + 18k from x = 28, glyphs 8.4 high and 6 wide.
+    for k in 0..2 {
+        let y = 21.0 + 18.0 * k as f64;
+        let n = dark([28.0, 28.0 + 6.0 * 10.0], [y - 8.4, y]);
+        assert!(n > 40, "label {k}: {n} dark pixels");
+    }
+    // The key to the line styles: 80 characters of 5 units on the baseline 60.
+    assert!(dark([10.0, 410.0], [53.0, 60.0]) > 200);
+    assert_eq!(dark([0.0, 9.0], [0.0, 60.0]), 0);
+}

@@ -450,13 +450,17 @@ fn conversions_that_cannot_be_exact_or_complete_are_refused() {
         1,
         &["binary STL holds 32-bit floats", "0.1", "write ASCII STL"],
     );
+    // The whole space in a mesh format is an error of the input (1), as the whole plane in a
+    // polygon format is, not of usage (2).
     let full = format!("{}\n", "# yinset: the whole space (no boundary)");
-    fails(
-        &["convert", "--from", "obj", "-", "--to", "off"],
-        &full,
-        2,
-        &["whole space", "--to obj"],
-    );
+    for to in ["off", "stl", "stl-binary", "ply"] {
+        fails(
+            &["convert", "--from", "obj", "-", "--to", to],
+            &full,
+            1,
+            &["whole space", "--to obj"],
+        );
+    }
     fails(
         &["convert", s(&b), "--to", "wkt"],
         "",
@@ -654,4 +658,119 @@ fn float_volumes_are_exact_far_out_and_beyond_f64() {
     let exact = side.clone() * side.clone() * side;
     assert_eq!(r["volume"]["exact"], exact.to_string());
     assert_eq!(r["volume"]["float"], Value::Null);
+}
+
+/// 3D `locate --eps` is on the boundary within Euclidean distance ε of a face, as in 2D: near
+/// [0, 2]³'s faces, edges and corners with ε = 0.5, the distances worked by hand — a point 0.45
+/// off in each coordinate is 0.45·√3 ≈ 0.78 from the corner (outside), 0.28 off each is 0.485
+/// (boundary); 0.3 and 0.4 off two coordinates are 0.42 and 0.57 from an edge; 0.49 and 0.51
+/// off a face, outside and inside.
+#[test]
+fn locate_eps_is_the_euclidean_distance_to_the_boundary() {
+    let dir = scratch();
+    let cube = file(&dir, "cube.obj", &box_a());
+    let cases = [
+        ("2.45 2.45 2.45", "outside"),
+        ("-0.45 -0.45 -0.45", "outside"),
+        ("2.28 2.28 2.28", "boundary"),
+        ("-0.28 2.28 -0.28", "boundary"),
+        ("2.3 2.3 1", "boundary"),
+        ("2.4 2.4 1", "outside"),
+        ("1 -0.4 -0.4", "outside"),
+        ("1 -0.3 2.3", "boundary"),
+        ("2.49 1 1", "boundary"),
+        ("2.51 1 1", "outside"),
+        ("1.51 1 1", "boundary"),
+        ("1.49 1 1", "inside"),
+        ("1 1 1", "inside"),
+    ];
+    let points: String = cases.iter().map(|(p, _)| format!("{p}\n")).collect();
+    let want: String = cases.iter().map(|(_, w)| format!("{w}\n")).collect();
+    assert_eq!(
+        ok(&["locate", s(&cube), "-", "--eps", "0.5"], &points),
+        want
+    );
+}
+
+/// `--eps auto` in 3D: the default tolerance, 10⁻¹⁰ × the side 2 rounded down to 2⁻³³
+/// ≈ 1.16·10⁻¹⁰, so a point 10⁻¹⁰ off a face is on the boundary and 2·10⁻¹⁰ off is not; an ε
+/// too fine for the coordinates is refused naming ε, not the input, in scientific notation.
+#[test]
+fn eps_auto_and_too_fine_eps_in_3d() {
+    let dir = scratch();
+    let cube = file(&dir, "cube.obj", &box_a());
+    let points = "2.0000000001 1 1\n2.0000000002 1 1\n1 1.9999999999 1\n1 1.9999999998 1\n";
+    assert_eq!(
+        ok(&["locate", s(&cube), "-", "--eps", "auto"], points),
+        "boundary\noutside\nboundary\ninside\n"
+    );
+    let j = info(&["info", s(&cube), "--eps", "auto"], "");
+    assert_eq!(
+        (j["exact"].clone(), j["b0"].clone()),
+        (false.into(), 1.into())
+    );
+    let refused = yinset()
+        .args(["info", s(&cube), "--eps", "1e-300"])
+        .assert()
+        .code(1);
+    let message = String::from_utf8(refused.get_output().stderr.clone()).unwrap();
+    for needle in [
+        "cube.obj` cannot be read with this tolerance",
+        "tolerance 1e-300 is too fine",
+        "the smallest usable is 8.881784197001252e-16",
+        "--eps 8.881784197001252e-16 or more, or --eps auto",
+    ] {
+        assert!(message.contains(needle), "{needle}: {message}");
+    }
+    assert!(
+        !message.contains("not a Yin set") && !message.contains("0.000000"),
+        "{message}"
+    );
+}
+
+/// Points in 3D float-mode messages are the nearest f64s, in scientific notation where very
+/// small, marked `≈` where the exact point (a crossing of faces) is not one; exact mode names
+/// the exact point.
+#[test]
+fn float_mode_messages_show_points_as_f64s() {
+    let dir = scratch();
+    // Two tetrahedra whose faces cross, at scale 10⁻³⁰⁰ (and at scale 1).
+    let tetrahedra = |unit: &str| {
+        let v = [
+            "0 0 0", "3 0.1 0", "0 3 0.3", "0.2 0 3", "1 1 -1", "4 1.3 -1", "1 4 -0.7", "1.1 1 2",
+        ];
+        let mut text = String::new();
+        for p in v {
+            let scaled: Vec<String> = p.split(' ').map(|x| format!("{x}{unit}")).collect();
+            text += &format!("v {}\n", scaled.join(" "));
+        }
+        text + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 5 7 6\nf 5 6 8\nf 5 8 7\nf 6 7 8\n"
+    };
+    let tiny = file(&dir, "tiny.obj", &tetrahedra("e-300"));
+    let refused = yinset()
+        .args(["validate", s(&tiny), "--eps", "1e-310"])
+        .assert()
+        .code(1);
+    let message = String::from_utf8(refused.get_output().stderr.clone()).unwrap();
+    assert!(
+        message.contains("cross each other")
+            && message.contains("through ≈ (")
+            && message.contains("e-300"),
+        "{message}"
+    );
+    let point = message
+        .split("through ")
+        .nth(1)
+        .and_then(|t| t.split(')').next());
+    assert!(
+        point.is_some_and(|p| !p.contains('/') && p.len() < 80),
+        "{message}"
+    );
+    let unit = file(&dir, "unit.obj", &tetrahedra(""));
+    fails(
+        &["validate", s(&unit)],
+        "",
+        1,
+        &["through (9330/9001, 1, 869/9001)"],
+    );
 }

@@ -1126,7 +1126,7 @@ fn open_box_is_rejected_naming_the_open_edge() {
         } => {
             assert_eq!(*count, 1, "{msg}");
             assert!(
-                top.contains(from) && top.contains(to) && from != to,
+                top.contains(&from.to_string()) && top.contains(&to.to_string()) && from != to,
                 "the open edge is on the top rim: {msg}"
             );
             assert!(
@@ -1134,7 +1134,7 @@ fn open_box_is_rejected_naming_the_open_edge() {
                 "a side face is on the open edge: {msg}"
             );
             assert!(
-                msg.contains(from.as_str()) && msg.contains(to.as_str()),
+                msg.contains(&from.to_string()) && msg.contains(&to.to_string()),
                 "message names the edge: {msg}"
             );
             assert!(msg.contains("open"), "{msg}");

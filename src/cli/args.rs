@@ -2,6 +2,7 @@
 
 use super::format::Format;
 use crate::io::scene3::View;
+use crate::num::Tolerance;
 use crate::yin2::FillRule;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::{Path, PathBuf};
@@ -66,9 +67,11 @@ pub struct ReadOpts {
     /// Read the rings as polygon soup and take the region they cover under this rule.
     #[arg(long, value_enum, value_name = "RULE")]
     pub fill: Option<FillArg>,
-    /// Float mode with tolerance E > 0 (default: exact rational arithmetic).
-    #[arg(long, value_name = "E", value_parser = positive_eps, allow_hyphen_values = true)]
-    pub eps: Option<f64>,
+    /// Float mode with tolerance E > 0, or `auto` for the default tolerance: 10⁻¹⁰ times the
+    /// larger side of the input's bounding box, raised to the finest that its coordinates allow,
+    /// rounded down to a power of two (default: exact rational arithmetic).
+    #[arg(long, value_name = "E|auto", value_parser = parse_eps, allow_hyphen_values = true)]
+    pub eps: Option<Eps>,
     /// Drop the points and lines of WKT, GeoJSON and WKB inputs (such as a FeatureCollection's
     /// Points) instead of rejecting them; only the polygons are read.
     #[arg(long)]
@@ -118,6 +121,25 @@ pub struct WriteOpts {
     /// coordinate that is not one is an error instead of rounded.
     #[arg(long)]
     pub exact: bool,
+}
+
+/// The tolerance of float mode that `--eps` asks for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Eps {
+    /// `auto`: the default tolerance, chosen from each input's extent (`Tolerance::default()`).
+    Auto,
+    /// A given ε > 0.
+    Value(f64),
+}
+
+impl Eps {
+    /// The kernel's tolerance.
+    pub fn tolerance(self) -> Tolerance {
+        match self {
+            Eps::Auto => Tolerance::default(),
+            Eps::Value(eps) => Tolerance::new(eps),
+        }
+    }
 }
 
 /// A fill rule for polygon soup.
@@ -181,8 +203,8 @@ pub struct RenderArgs {
     /// together.
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
-    /// The picture: FILE.svg or FILE.png (2D sets; PNG drawn without the legend's words; `-` or
-    /// absent: SVG on standard output), FILE.png or FILE.html (3D sets).
+    /// The picture: FILE.svg or FILE.png (2D sets; the PNG's legend in an 8×8 bitmap font; `-`
+    /// or absent: SVG on standard output), FILE.png or FILE.html (3D sets).
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
     /// 3D only: the view direction, azimuth (about the z axis, from the x axis) and elevation
@@ -217,12 +239,18 @@ impl FillArg {
     }
 }
 
-/// Parse `--eps`: a finite number greater than zero.
-fn positive_eps(text: &str) -> Result<f64, String> {
+/// Parse `--eps`: `auto`, or a finite number greater than zero.
+fn parse_eps(text: &str) -> Result<Eps, String> {
+    if text == "auto" {
+        return Ok(Eps::Auto);
+    }
     match text.parse::<f64>() {
-        Ok(eps) if eps.is_finite() && eps > 0.0 => Ok(eps),
-        Ok(_) => Err("the tolerance must be a finite number greater than 0".to_string()),
-        Err(e) => Err(format!("not a number: {e}")),
+        Ok(eps) if eps.is_finite() && eps > 0.0 => Ok(Eps::Value(eps)),
+        Ok(_) => Err(
+            "the tolerance must be a finite number greater than 0, or auto for the default"
+                .to_string(),
+        ),
+        Err(e) => Err(format!("not a number or auto: {e}")),
     }
 }
 
@@ -267,10 +295,13 @@ mod tests {
     }
 
     #[test]
-    fn eps_must_be_positive_and_finite() {
-        assert_eq!(positive_eps("1e-9"), Ok(1e-9));
-        for bad in ["0", "-1", "inf", "NaN", "x"] {
-            assert!(positive_eps(bad).is_err(), "{bad}");
+    fn eps_must_be_positive_and_finite_or_auto() {
+        assert_eq!(parse_eps("1e-9"), Ok(Eps::Value(1e-9)));
+        assert_eq!(parse_eps("auto"), Ok(Eps::Auto));
+        assert_eq!(Eps::Auto.tolerance(), Tolerance::default());
+        assert_eq!(Eps::Value(0.5).tolerance().eps(), 0.5);
+        for bad in ["0", "-1", "inf", "NaN", "x", "Auto", ""] {
+            assert!(parse_eps(bad).is_err(), "{bad}");
         }
     }
 
@@ -283,7 +314,10 @@ mod tests {
         let Some(Command::Meet(b)) = cli.command else {
             panic!("not meet")
         };
-        assert_eq!((b.read.eps, b.write.to), (Some(0.5), Some(Format::Geojson)));
+        assert_eq!(
+            (b.read.eps, b.write.to),
+            (Some(Eps::Value(0.5)), Some(Format::Geojson))
+        );
         assert!(Cli::try_parse_from(["yinset", "axioms", "5", "--eps", "1"]).is_err());
         assert!(Cli::try_parse_from(["yinset", "info", "a", "--to", "wkt"]).is_err());
         assert!(Cli::try_parse_from(["yinset"]).unwrap().command.is_none());

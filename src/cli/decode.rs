@@ -360,7 +360,9 @@ mod tests {
         let e = Yin3Error::Crossing {
             a: 0,
             b: 2,
-            point: "(0, 0, 0)".into(),
+            point: crate::yin3::Spot::new(&crate::kernel::Point3::<crate::num::Rational>::int(
+                0, 0, 0,
+            )),
         };
         assert_eq!(
             locate_faces(&e, &lines),

@@ -48,16 +48,18 @@ fn line(text: String) -> Result<Vec<u8>, WriteError> {
 }
 
 /// The file of the 3D `set` in `format`. Only OBJ can hold 1̂, by its whole-space comment
-/// line; the triangles of STL, OFF and PLY bound unbounded sets as they bound bounded ones
-/// (normals out of the set).
+/// line (in the others it is an error of the input, exit status 1, as the whole plane in a
+/// polygon format is); the triangles of STL, OFF and PLY bound unbounded sets as they bound
+/// bounded ones (normals out of the set).
 pub fn encode3<N: Num>(set: &YinSet3<N>, format: Format) -> Result<Vec<u8>, CliError> {
     let (v, t) = (set.vertices(), set.triangles());
-    let no_whole_space = || {
-        CliError::Usage(format!(
-            "the whole space has no boundary triangles, and {} has no way to say it: \
-             write obj instead (--to obj)",
-            format.name()
-        ))
+    let no_whole_space = || CliError::Unwritable {
+        format: format.name(),
+        source: WriteError(
+            "the set is the whole space, which has no boundary triangles to write: \
+             write obj instead (--to obj)"
+                .to_string(),
+        ),
     };
     match format {
         Format::Obj => Ok(obj(set).into_bytes()),

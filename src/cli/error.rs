@@ -78,6 +78,15 @@ pub enum CliError {
         /// What to do about it, or empty.
         note: String,
     },
+    /// Float mode: an input that the tolerance asked for cannot serve (too fine for the
+    /// coordinates' magnitude, or so coarse that the input vanishes on its grid): ε is at fault,
+    /// not the input.
+    #[error("{name} cannot be read with this tolerance: {source}{hint}")]
+    Tolerance {
+        name: String,
+        source: Reason,
+        hint: String,
+    },
     /// An operation without a valid result in the chosen mode (3D float mode: the exact result
     /// rounded to `f64` is not a valid boundary).
     #[error("{0}")]

@@ -8,9 +8,10 @@ use super::format::{is_std, Dimension, Format};
 use super::progress;
 use crate::io::mesh::Mesh;
 use crate::io::{check_digit_runs, ParseError};
-use crate::num::Num;
+use crate::kernel::Point;
+use crate::num::{Num, Rational};
 use crate::yin2::{YinError, YinSet2};
-use crate::yin3::YinSet3;
+use crate::yin3::{Yin3Error, YinSet3};
 use std::io::Read;
 use std::path::Path;
 
@@ -107,7 +108,50 @@ pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2
             return Err(parse_error(path, source));
         }
     };
-    from_rings(path, rings, opts, ctx)
+    from_rings(path, rings, opts, ctx).map_err(|e| match N::EXACT {
+        true => e,
+        false => with_rounding_note(e, &text, format, opts),
+    })
+}
+
+/// `e` with a note where float mode refused rings for a repeated vertex or too few vertices
+/// that only rounding made: the vertices differ in the input read exactly and coincide once
+/// rounded to the nearest `f64`s.
+fn with_rounding_note(e: CliError, text: &str, format: Format, opts: &ReadOpts) -> CliError {
+    let CliError::Invalid { name, source, note } = e else {
+        return e;
+    };
+    let exact = match decode::<Rational>(text, format, opts.polygonal_only) {
+        Ok(Decoded::Boundary(rings)) => rings.rings,
+        _ => Vec::new(),
+    };
+    let distinct = |curve: usize| {
+        let ring = exact.get(curve)?;
+        let mut points: Vec<&Point<Rational>> = ring.iter().collect();
+        points.sort();
+        points.dedup();
+        Some(points.len())
+    };
+    let merged = match source.downcast_ref::<YinError>() {
+        Some(YinError::RepeatedVertex { curve, vertex, .. }) => {
+            exact.get(*curve).is_some_and(|ring| {
+                let before = (vertex + ring.len() - 1) % ring.len();
+                ring.get(*vertex).is_some_and(|p| p != &ring[before])
+            })
+        }
+        Some(YinError::TooFewVertices { curve, count }) => {
+            distinct(*curve).is_some_and(|n| n > *count)
+        }
+        _ => false,
+    };
+    let note = match merged {
+        true => format!(
+            "{note}; its vertices there differ in the input but coincide once rounded to the \
+             nearest f64s, as float mode reads coordinates: read it exactly (without --eps)"
+        ),
+        false => note,
+    };
+    CliError::Invalid { name, source, note }
 }
 
 /// The Yin set bounded by `rings` read from `path` (or covered by them, under `opts.fill`).
@@ -156,11 +200,24 @@ pub fn load3<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet
     progress::while_working(message, vertices.len(), || {
         YinSet3::from_triangles_with(vertices, faces, ctx)
     })
-    .map_err(|source| CliError::Invalid {
-        name: name(path),
-        note: locate_faces(&source, &face_lines),
-        source: Box::new(source),
+    .map_err(|source| match source {
+        Yin3Error::ToleranceTooFine { representable, .. } => CliError::Tolerance {
+            name: name(path),
+            hint: coarser_eps(representable.get()),
+            source: Box::new(source),
+        },
+        _ => CliError::Invalid {
+            name: name(path),
+            note: locate_faces(&source, &face_lines),
+            source: Box::new(source),
+        },
     })
+}
+
+/// What to give instead of an ε too fine for the coordinates, `representable` the finest that
+/// fits them.
+fn coarser_eps(representable: f64) -> String {
+    format!("; give --eps {representable:e} or more, or --eps auto for the default tolerance")
 }
 
 /// The error of malformed text in `path`.
@@ -190,12 +247,22 @@ fn build<N: Num>(
         Some(rule) => YinSet2::from_rings_filled_with(rings, rule.rule(), ctx),
     };
     built.map_err(|source| {
-        // Float mode's refusals of ε are about the tolerance, not the rings: no fill hint.
-        let about_eps = matches!(
-            source,
-            YinError::ToleranceTooFine { .. } | YinError::CollapsedOnGrid { .. }
-        );
-        let hint = if fill.is_none() && !about_eps {
+        // Float mode's refusals of ε are about the tolerance, not the rings.
+        let hint = match &source {
+            YinError::ToleranceTooFine { representable, .. } => {
+                Some(coarser_eps(representable.get()))
+            }
+            YinError::CollapsedOnGrid { .. } => Some(String::new()),
+            _ => None,
+        };
+        if let Some(hint) = hint {
+            return CliError::Tolerance {
+                name: name(path),
+                source: Box::new(source),
+                hint,
+            };
+        }
+        let hint = if fill.is_none() {
             "; to take the region the rings cover instead, give --fill nonzero or --fill evenodd"
         } else {
             ""

@@ -20,10 +20,10 @@ mod set;
 pub use args::{Cli, Command};
 pub use error::CliError;
 
-use crate::num::{Float, Tolerance};
+use crate::num::Float;
 use crate::yin2::YinSet2;
 use crate::yin3::YinSet3;
-use args::ReadOpts;
+use args::{Eps, ReadOpts};
 use clap::Parser;
 use format::{Dimension, Format};
 use input::{name, one_stdin, read_text};
@@ -59,15 +59,15 @@ pub fn main() -> ExitCode {
 }
 
 /// Run one subcommand: on 2D or 3D sets as its inputs' formats say; exact unless it was given
-/// `--eps`.
+/// `--eps` (a value, or `auto` for the default tolerance).
 pub fn run(command: &Command) -> Result<(), CliError> {
     let no_options = ReadOpts::default();
     let read = command.read_opts().unwrap_or(&no_options);
-    match (dimension(command, read)?, read.eps) {
+    match (dimension(command, read)?, read.eps.map(Eps::tolerance)) {
         (Dimension::Two, None) => run_in::<YinSet2<Exact>>(command, ()),
-        (Dimension::Two, Some(eps)) => run_in::<YinSet2<Float>>(command, Tolerance::new(eps)),
+        (Dimension::Two, Some(tol)) => run_in::<YinSet2<Float>>(command, tol),
         (Dimension::Three, None) => run_in::<YinSet3<Exact>>(command, ()),
-        (Dimension::Three, Some(eps)) => run_in::<YinSet3<Float>>(command, Tolerance::new(eps)),
+        (Dimension::Three, Some(tol)) => run_in::<YinSet3<Float>>(command, tol),
     }
 }
 

@@ -10,7 +10,7 @@ use crate::io::html3::write_html;
 use crate::io::png::svg_to_png;
 use crate::io::png3::write_png;
 use crate::io::scene3::facets;
-use crate::io::svg::write_svg;
+use crate::io::svg::{write_svg, write_svg_lettered, Lettering};
 use crate::io::WriteError;
 use crate::num::Num;
 use crate::yin2::YinSet2;
@@ -49,8 +49,8 @@ fn picture(output: Option<&Path>) -> Result<Option<Picture>, CliError> {
     }
 }
 
-/// The SVG picture of the 2D `layers`, rasterized (resvg) for a PNG output; a usage error for
-/// an HTML output or 3D options.
+/// The SVG picture of the 2D `layers`, rasterized (resvg) for a PNG output with the legend's
+/// words drawn as bitmap glyphs; a usage error for an HTML output or 3D options.
 pub fn render2<N: Num>(
     layers: &[(&str, &YinSet2<N>)],
     args: &RenderArgs,
@@ -63,10 +63,14 @@ pub fn render2<N: Num>(
     }
     match picture(args.output.as_deref())? {
         None | Some(Picture::Svg) => Ok(write_svg(layers).into_bytes()),
-        Some(Picture::Png) => svg_to_png(&write_svg(layers)).map_err(|e| CliError::Unwritable {
-            format: "PNG",
-            source: WriteError(e),
-        }),
+        Some(Picture::Png) => {
+            svg_to_png(&write_svg_lettered(layers, Lettering::Bitmap)).map_err(|e| {
+                CliError::Unwritable {
+                    format: "PNG",
+                    source: WriteError(e),
+                }
+            })
+        }
         Some(Picture::Html) => Err(CliError::Usage(
             "2D sets are drawn as SVG or PNG: give -o FILE.svg, -o FILE.png (or no -o for \
              standard output)"

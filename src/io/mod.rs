@@ -17,6 +17,7 @@ mod error;
 pub mod geo_interop;
 pub mod geojson;
 pub mod html3;
+mod lettering;
 mod limits;
 pub mod mesh;
 pub mod obj;

@@ -1,5 +1,6 @@
 //! PNG pictures: the SVG of [`super::svg`] rasterized by `resvg` (pure Rust), at the SVG's own
-//! size. No fonts are bundled, so the legend's words are not drawn (its colour swatches are).
+//! size. No fonts are bundled, so SVG text elements are not drawn: the legend's words come as
+//! shapes of a bitmap font ([`super::svg::Lettering::Bitmap`]).
 
 use resvg::{tiny_skia, usvg};
 

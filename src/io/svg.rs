@@ -5,6 +5,7 @@
 //! Coordinates are written as `f64` (the picture is not exact); the y axis points up. An
 //! unbounded set is filled to the edge of the picture.
 
+use super::lettering::text_path;
 use crate::kernel::Point;
 use crate::num::Num;
 use crate::yin2::{Curve, YinSet2};
@@ -19,8 +20,22 @@ const PALETTE: [&str; 6] = [
     "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf",
 ];
 
+/// How the legend's words are set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lettering {
+    /// As SVG text, in the viewer's sans-serif font.
+    Text,
+    /// As shapes of an 8×8 bitmap font, for rasterizing without fonts (the PNG picture).
+    Bitmap,
+}
+
 /// The SVG document drawing each `(label, set)`, later layers on top, with a legend of labels.
 pub fn write_svg<N: Num>(layers: &[(&str, &YinSet2<N>)]) -> String {
+    write_svg_lettered(layers, Lettering::Text)
+}
+
+/// [`write_svg`] with the legend's words set as `lettering` says.
+pub fn write_svg_lettered<N: Num>(layers: &[(&str, &YinSet2<N>)], lettering: Lettering) -> String {
     let corners = layers
         .iter()
         .filter_map(|(_, set)| set.bbox())
@@ -35,7 +50,7 @@ pub fn write_svg<N: Num>(layers: &[(&str, &YinSet2<N>)]) -> String {
         svg.push_str("</g>\n");
         labels.push((*label, colour));
     }
-    frame.legend(&mut svg, &labels);
+    frame.legend(&mut svg, &labels, lettering);
     svg.push_str("</svg>\n");
     svg
 }
@@ -176,8 +191,9 @@ impl Frame {
     }
 
     /// The legend at the top left: a swatch and label per layer, then the key to the line
-    /// styles; drawn in a local frame of [`Frame::unit`] so that text is set at a normal size.
-    fn legend(&self, svg: &mut String, labels: &[(&str, &str)]) {
+    /// styles; drawn in a local frame of [`Frame::unit`] so that text is set at a normal size,
+    /// its words as `lettering` says.
+    fn legend(&self, svg: &mut String, labels: &[(&str, &str)], lettering: Lettering) {
         let _ = writeln!(
             svg,
             r#"<g transform="translate({:.*} {:.*}) scale({})" font-family="sans-serif">"#,
@@ -185,20 +201,49 @@ impl Frame {
         );
         for (k, (label, colour)) in labels.iter().enumerate() {
             let y = 10 + 18 * k;
-            let _ = writeln!(
+            let _ = write!(
                 svg,
-                r#"<rect x="10" y="{y}" width="12" height="12" fill="{colour}" fill-opacity="0.5"/><text x="28" y="{}" font-size="12">{}</text>"#,
-                y + 11,
-                escape(label)
+                r#"<rect x="10" y="{y}" width="12" height="12" fill="{colour}" fill-opacity="0.5"/>"#,
             );
+            words(svg, lettering, label, [28, y + 11], 12, "black");
         }
-        let _ = writeln!(
+        let key =
+            "solid: positively oriented, dashed: negatively oriented, dot: non-manifold point";
+        words(
             svg,
-            r#"<text x="10" y="{}" font-size="10" fill="dimgray">solid: positively oriented, dashed: negatively oriented, dot: non-manifold point</text>"#,
-            24 + 18 * labels.len()
+            lettering,
+            key,
+            [10, 24 + 18 * labels.len()],
+            10,
+            "dimgray",
         );
         svg.push_str("</g>\n");
     }
+}
+
+/// One line of words from `at` on its baseline, at font size `size`, in `colour`: an SVG text
+/// element, or its glyphs' shapes (crisp edges, as a bitmap font's pixels are).
+fn words(
+    svg: &mut String,
+    lettering: Lettering,
+    text: &str,
+    at: [usize; 2],
+    size: usize,
+    colour: &str,
+) {
+    let [x, y] = at;
+    let _ = match lettering {
+        Lettering::Text => writeln!(
+            svg,
+            r#"<text x="{x}" y="{y}" font-size="{size}" fill="{colour}">{}</text>"#,
+            escape(text)
+        ),
+        Lettering::Bitmap => writeln!(
+            svg,
+            r#"<path d="{}" fill="{colour}" shape-rendering="crispEdges"/>"#,
+            text_path(text, x as f64, y as f64, size as f64)
+        ),
+    };
 }
 
 /// The vertices shared by two or more curves of `set` (where its curves touch), sorted.
@@ -267,6 +312,55 @@ mod tests {
             .collect();
         assert_eq!(fills[1].matches('M').count(), 3, "{}", fills[1]);
         assert!(svg.starts_with("<svg ") && svg.ends_with("</svg>\n"));
+    }
+
+    /// The PNG's legend shows its words: dark pixels on each label's line right of its swatch
+    /// and on the key's line, where the same picture with SVG text (which resvg cannot draw
+    /// without fonts) has none.
+    #[test]
+    fn the_png_legend_has_its_words() {
+        let (a, b) = (rect(0, 0, 10, 10), rect(2, 2, 8, 8));
+        let (a, b) = (
+            YinSet2::from_curves(vec![a]).unwrap(),
+            YinSet2::from_curves(vec![b]).unwrap(),
+        );
+        let layers = [("first.wkt", &a), ("second.wkt", &b)];
+        // The window is 11 wide (a margin of 0.5 each side) over 800 pixels, the legend's unit
+        // 10 / 400: 800 / 11 · 0.025 pixels per legend unit.
+        let scale = 800.0 / 11.0 * 0.025;
+        let dark_in = |lettering, x: [f64; 2], y: [f64; 2]| {
+            let png = crate::io::png::svg_to_png(&write_svg_lettered(&layers, lettering)).unwrap();
+            let image = resvg::tiny_skia::Pixmap::decode_png(&png).unwrap();
+            let px = |v: f64| (v * scale) as u32;
+            let mut dark = 0;
+            for i in px(x[0])..px(x[1]) {
+                for j in px(y[0])..px(y[1]) {
+                    let p = image.pixel(i, j).unwrap();
+                    dark += usize::from(p.red().max(p.green()).max(p.blue()) < 128);
+                }
+            }
+            dark
+        };
+        // Label k: from x = 28 on the baseline 21 + 18k, 6 units a character, 8.4 high.
+        for k in 0..2 {
+            let (x, y) = (
+                [28.0, 28.0 + 6.0 * 10.0],
+                [12.0 + 18.0 * k as f64, 21.0 + 18.0 * k as f64],
+            );
+            let words = dark_in(Lettering::Bitmap, x, y);
+            assert!(words > 40, "label {k}: {words} dark pixels");
+            assert_eq!(
+                dark_in(Lettering::Text, x, y),
+                0,
+                "label {k} without glyphs"
+            );
+        }
+        // The key: from x = 10 on the baseline 60, 5 units a character, 80 characters.
+        let (x, y) = ([10.0, 410.0], [53.0, 60.0]);
+        assert!(dark_in(Lettering::Bitmap, x, y) > 200);
+        assert_eq!(dark_in(Lettering::Text, x, y), 0);
+        // Left of the swatches there is nothing dark in either.
+        assert_eq!(dark_in(Lettering::Bitmap, [0.0, 9.0], [0.0, 60.0]), 0);
     }
 
     #[test]

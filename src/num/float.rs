@@ -63,8 +63,8 @@ impl Float {
 ///   operands' `f64` values and rounds the result's vertices to the nearest `f64`s (no grid):
 ///   a valid rounded result with the exact result's topology, or
 ///   `Yin3Error::Unrepresentable`; ε decides `locate`'s boundary
-///   band (a point within ε of a face), the default and the representable ε as above (the
-///   contract in full: [`crate::yin3`], *Float mode*).
+///   band (a point at Euclidean distance at most ε from a face, decided exactly), the default
+///   and the representable ε as above (the contract in full: [`crate::yin3`], *Float mode*).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Tolerance {
     eps: f64,
@@ -446,6 +446,18 @@ impl Hash for Float {
         self.0.to_bits().hash(state)
     }
 }
+
+/// The shortest decimal that reads back as `v`, in scientific notation (`1.5e-300`) where plain
+/// digits would run long (magnitudes from 10¹⁶ up or below 10⁻⁵): numbers in messages.
+pub(crate) fn short_f64(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && a.is_finite() && !(1e-5..1e16).contains(&a) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
+
 impl fmt::Display for Float {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.0)

@@ -20,7 +20,9 @@ mod rational;
 
 pub(crate) use big::{from_words, gcd_u128};
 pub(crate) use dyadic::det_sum;
-pub(crate) use float::{exact_orient3d_f64, exact_orient_f64, segment_distance, PlaneF64};
+pub(crate) use float::{
+    exact_orient3d_f64, exact_orient_f64, segment_distance, short_f64, PlaneF64,
+};
 pub use float::{Float, Tolerance, TooFine};
 #[cfg(feature = "gmp")]
 pub use gmp::GmpRational;

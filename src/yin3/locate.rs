@@ -2,6 +2,7 @@
 //! with rays through edges and vertices decided by the perturbation q + (0, ε, ε²).
 
 use super::geom::{f64_box, in_triangle3};
+use super::near::within;
 use crate::kernel::{orient, orient3d, Point, Point3};
 use crate::num::Num;
 use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree, AABB};
@@ -25,10 +26,16 @@ impl TriBoxes {
     }
 
     /// The triangles whose box, widened by `slack` (float mode's ε; 0 in exact mode),
-    /// contains `q`: all that [`on_triangles`] can find `q` on.
+    /// contains `q`: all that [`on_triangles`] can find `q` on (the sums rounded outward, so
+    /// that a triangle exactly `slack` away is among them).
     pub(crate) fn at<N: Num>(&self, q: &Point3<N>, slack: f64) -> impl Iterator<Item = usize> + '_ {
         let b = f64_box([q]);
-        let widen = |v: [f64; 3], by: f64| v.map(|x| x + by);
+        let widen = |v: [f64; 3], by: f64| {
+            v.map(|x| match by < 0.0 {
+                true => (x + by).next_down(),
+                false => (x + by).next_up(),
+            })
+        };
         let near = AABB::from_corners(widen(b.lower(), -slack), widen(b.upper(), slack));
         self.0
             .locate_in_envelope_intersecting(&near)
@@ -76,13 +83,18 @@ pub(crate) fn winding<'a, N: Num>(
     tris.into_iter().map(|t| crossing(t, q, ctx)).sum()
 }
 
-/// True if `q` lies on one of the closed triangles (float mode: within ε of one).
+/// True if `q` lies on one of the closed triangles, or for `eps > 0` (float mode's ε) if its
+/// Euclidean distance to one is at most `eps` ([`within`]).
 pub(crate) fn on_triangles<'a, N: Num>(
     tris: impl IntoIterator<Item = [&'a Point3<N>; 3]>,
     q: &Point3<N>,
-    ctx: &N::Ctx,
+    eps: f64,
 ) -> bool {
-    tris.into_iter().any(|t| in_triangle3(t, q, ctx))
+    let exact = N::exact_ctx();
+    tris.into_iter().any(|t| match eps > 0.0 {
+        true => within(t, q, eps),
+        false => in_triangle3(t, q, &exact),
+    })
 }
 
 /// True if `q`'s coordinates `axes` lie in the closed box of the triangle's.

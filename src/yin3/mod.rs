@@ -157,6 +157,7 @@ mod kept;
 mod link;
 mod locate;
 mod meet;
+mod near;
 mod ops;
 mod pierce;
 mod set;
@@ -168,6 +169,6 @@ mod triangulate;
 mod validate;
 
 pub use betti::Betti3;
-pub use error::Yin3Error;
+pub use error::{Spot, Yin3Error};
 pub use hasse::Atom3;
 pub use set::{GluedSurface, YinSet3};

@@ -3,7 +3,7 @@
 
 use super::betti::{betti, Betti3};
 use super::canonical::{canonical, Canon};
-use super::error::Yin3Error;
+use super::error::{Spot, Yin3Error};
 use super::fins::{first_non_alternating, FinTable, Pairing};
 use super::float::{exact_brep, exact_points};
 use super::geom::det3;
@@ -79,7 +79,7 @@ impl<N: Num> Brep<N> {
         let table = FinTable::new(&points, &tris, ctx);
         if let Some((e, f, g)) = first_non_alternating(&table) {
             let (a, b) = table.edges[e];
-            let (from, to) = (points[a].to_string(), points[b].to_string());
+            let (from, to) = (Spot::new(&points[a]), Spot::new(&points[b]));
             let count = table.fins[e].len();
             return Err(if count % 2 == 1 {
                 Yin3Error::OpenEdge {
@@ -189,20 +189,17 @@ impl<N: Num> Brep<N> {
         (0..self.tris.len()).map(|t| self.corners(t))
     }
 
-    /// Locate each point (yin3 docs: *Locate*): on the boundary if on a triangle (float mode:
-    /// within ε of one), otherwise by the exact winding number. The triangles' boxes are put
-    /// in an R-tree first, so that each point meets only the triangles near it and its ray.
+    /// Locate each point (yin3 docs: *Locate*): on the boundary if on a triangle (float mode: at
+    /// Euclidean distance at most ε from one), otherwise by the exact winding number. The
+    /// triangles' boxes are put in an R-tree first, so that each point meets only the triangles
+    /// near it and its ray.
     pub(crate) fn locate(&self, points: &[Point3<N>], ctx: &N::Ctx) -> Vec<Location> {
-        let exact = N::exact_ctx();
+        let (exact, eps) = (N::exact_ctx(), N::tolerance(ctx));
         let boxes = TriBoxes::new((0..self.tris.len()).map(|t| (t, self.corners(t))));
         points
             .iter()
             .map(|q| {
-                if on_triangles(
-                    boxes.at(q, N::tolerance(ctx)).map(|t| self.corners(t)),
-                    q,
-                    ctx,
-                ) {
+                if on_triangles(boxes.at(q, eps).map(|t| self.corners(t)), q, eps) {
                     Location::OnBoundary
                 } else if winding(boxes.along_x(q).map(|t| self.corners(t)), q, &exact)
                     + i64::from(!self.bounded)
@@ -483,7 +480,8 @@ impl<N: Num> YinSet3<N> {
         BBox3::of(self.vertices())
     }
 
-    /// Locate each point: inside, outside or on the boundary (yin3 docs: *Locate*).
+    /// Locate each point: inside, outside or on the boundary (yin3 docs: *Locate*); in float mode
+    /// on the boundary where its Euclidean distance to the boundary is at most ε.
     ///
     /// ```
     /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};

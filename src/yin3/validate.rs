@@ -4,7 +4,7 @@
 //! checked, with errors naming the face or edge at fault.
 
 use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
-use super::error::Yin3Error;
+use super::error::{Spot, Yin3Error};
 use super::float::{exact_points, rounded_brep};
 use super::geom::{collinear, normal, widened_box, Chart};
 use super::locate::{ray_box, winding};
@@ -71,11 +71,11 @@ impl<N: Num> YinSet3<N> {
         }
         let ctx = resolve_for(&vertices, ctx)?;
         let brep = if N::EXACT {
-            build(&vertices, &faces)?
+            build(&vertices, &faces, false)?
         } else {
             // Float mode: validity is decided on the exact values; a vertex that the
             // conforming boundary adds (edges crossing on a face) is rounded like a result's.
-            rounded_brep(&build(&exact_points(&vertices), &faces)?)?
+            rounded_brep(&build(&exact_points(&vertices), &faces, true)?)?
         };
         Ok(YinSet3::from_brep(brep, ctx))
     }
@@ -188,8 +188,9 @@ pub(crate) fn conforming_after_moves<N: Num>(
 }
 
 impl Yin3Error {
-    /// The same error with triangle indices replaced by the input faces they came from.
-    fn renumber_faces(self, origin: &[usize]) -> Yin3Error {
+    /// The same error with triangle indices replaced by the input faces they came from, and
+    /// its points shown as `f64`s if `rounded` ([`Spot::shown`]).
+    fn renumber_faces(self, origin: &[usize], rounded: bool) -> Yin3Error {
         let f = |t: usize| origin.get(t).copied().unwrap_or(t);
         match self {
             Yin3Error::OpenEdge {
@@ -198,14 +199,14 @@ impl Yin3Error {
                 count,
                 face,
             } => Yin3Error::OpenEdge {
-                from,
-                to,
+                from: from.shown(rounded),
+                to: to.shown(rounded),
                 count,
                 face: f(face),
             },
             Yin3Error::Inconsistent { from, to, a, b } => Yin3Error::Inconsistent {
-                from,
-                to,
+                from: from.shown(rounded),
+                to: to.shown(rounded),
                 a: f(a),
                 b: f(b),
             },
@@ -224,8 +225,13 @@ impl Yin3Error {
 }
 
 /// The boundary bounded by `faces` over `vertices`, every decision exact (float mode too: its
-/// ε applies to operations, not to validity).
-fn build<N: Num>(vertices: &[Point3<N>], faces: &[Vec<usize>]) -> Result<Brep<N>, Yin3Error> {
+/// ε applies to operations, not to validity); `rounded` if the vertices are the exact values
+/// of a float-mode input, whose errors show points as `f64`s.
+fn build<N: Num>(
+    vertices: &[Point3<N>],
+    faces: &[Vec<usize>],
+    rounded: bool,
+) -> Result<Brep<N>, Yin3Error> {
     let exact = N::exact_ctx();
     let mut soup = Soup::new();
     let mut face_of = Vec::new();
@@ -242,7 +248,7 @@ fn build<N: Num>(vertices: &[Point3<N>], faces: &[Vec<usize>]) -> Result<Brep<N>
             coplanar,
             point,
         } => {
-            let (a, b, point) = (face_of[a], face_of[b], point.to_string());
+            let (a, b, point) = (face_of[a], face_of[b], Spot::new(&point).shown(rounded));
             if coplanar {
                 Yin3Error::Overlap { a, b, point }
             } else {
@@ -254,8 +260,8 @@ fn build<N: Num>(vertices: &[Point3<N>], faces: &[Vec<usize>]) -> Result<Brep<N>
     let pieces = arrangement.pieces;
     let origin: Vec<usize> = pieces.iter().map(|(_, t)| face_of[*t]).collect();
     let tris: Vec<[usize; 3]> = pieces.into_iter().map(|(t, _)| t).collect();
-    let brep = Brep::assemble(soup.points, tris).map_err(|e| e.renumber_faces(&origin))?;
-    check_windings(&brep, &exact).map_err(|e| e.renumber_faces(&origin))?;
+    let brep = Brep::assemble(soup.points, tris).map_err(|e| e.renumber_faces(&origin, rounded))?;
+    check_windings(&brep, &exact).map_err(|e| e.renumber_faces(&origin, rounded))?;
     Ok(brep)
 }
 
