@@ -83,8 +83,11 @@ pub enum CliError {
     /// not the input.
     #[error("{name} cannot be read with this tolerance: {source}{hint}")]
     Tolerance {
+        /// The input, as the user named it.
         name: String,
+        /// What the kernel found.
         source: Reason,
+        /// What ε would serve, or empty.
         hint: String,
     },
     /// An operation without a valid result in the chosen mode (3D float mode: the exact result
