@@ -462,7 +462,7 @@ fn byte_order_marks_are_accepted_in_all_three_formats() {
         ("a.wkt", "POLYGON ((0 0, 4 0, 0 4, 0 0))"),
         (
             "a.geojson",
-            r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4]]]}"#,
+            r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4], [0, 0]]]}"#,
         ),
     ];
     for (name, text) in inputs {
@@ -541,7 +541,7 @@ fn the_whole_plane_is_a_statement_and_curves_may_not_follow_it() {
 fn polygonal_only_drops_points_and_lines() {
     let json = r#"{"type": "FeatureCollection", "features": [
         {"type": "Feature", "properties": {"name": "a well"}, "geometry": {"type": "Point", "coordinates": [1, 1]}},
-        {"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4]]]}}]}"#;
+        {"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4], [0, 0]]]}}]}"#;
     fails(
         &["info", "--from", "geojson", "-"],
         json,
@@ -571,7 +571,8 @@ fn render_writes_png_for_png_names_and_refuses_other_extensions() {
     let bytes = std::fs::read(&png).unwrap();
     assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "not a PNG");
     let image = resvg::tiny_skia::Pixmap::decode_png(&bytes).unwrap();
-    // The SVG of the same picture says where the world is: viewBox = x, -y_max, width, height.
+    // The SVG of the same picture says where the picture's coordinates are: viewBox = x,
+    // -y_max, width, height, in units of the larger side of the sets' box (FRAME's: 4).
     let svg = ok(&["render", "-"], FRAME);
     let view: Vec<f64> = svg
         .split("viewBox=\"")
@@ -586,6 +587,7 @@ fn render_writes_png_for_png_names_and_refuses_other_extensions() {
     assert_eq!(image.width(), 800);
     let scale = 800.0 / view[2];
     let colour = |x: f64, y: f64| {
+        let (x, y) = (x / 4.0, y / 4.0);
         let (px, py) = ((x - view[0]) * scale, (-y - view[1]) * scale);
         let p = image.pixel(px as u32, py as u32).unwrap();
         (p.red(), p.green(), p.blue())
@@ -679,7 +681,10 @@ fn malformed_wkb_is_refused_at_its_byte() {
         &["convert", s(&third), "--to", "wkb", "--exact"],
         "",
         1,
-        &["cannot write the result as WKB: the coordinate 1/3 is not an f64"],
+        &[
+            "cannot write the result as WKB: the coordinate 1/3 of vertex",
+            "is not an f64",
+        ],
     );
     let rounded = ok(&["convert", s(&third), "--to", "wkb-hex"], "");
     assert_eq!(rounded.trim().len(), 2 * (9 + 9 + 4 + 4 * 16));
@@ -827,4 +832,155 @@ fn the_png_legend_names_the_layers() {
     // The key to the line styles: 80 characters of 5 units on the baseline 60.
     assert!(dark([10.0, 410.0], [53.0, 60.0]) > 200);
     assert_eq!(dark([0.0, 9.0], [0.0, 60.0]), 0);
+}
+
+/// FRAME (the square [0, 4]² with a triangular hole touching its bottom) with each coordinate
+/// c written `lo + c·scale` exactly, as decimals.
+fn frame_at(lo: &str, scale: &str) -> String {
+    let q = |t: &str| Rational::parse(t).unwrap();
+    let (lo, scale) = (q(lo), q(scale));
+    FRAME
+        .lines()
+        .map(|line| {
+            let words: Vec<String> = line
+                .split_whitespace()
+                .map(|c| (lo.clone() + q(c) * scale.clone()).to_string())
+                .collect();
+            words.join(" ") + "\n"
+        })
+        .collect()
+}
+
+#[test]
+fn pictures_of_sets_beyond_f64_are_those_of_the_same_sets_at_unit_scale() {
+    let dir = scratch();
+    let mut pictures = Vec::new();
+    let ten400 = format!("1{}", "0".repeat(400));
+    let tenth400 = format!("1/{ten400}");
+    for (name, lo, scale) in [
+        ("unit", "0", "1"),
+        ("big", "0", ten400.as_str()),
+        ("tiny", "0", tenth400.as_str()),
+        ("far", ten400.as_str(), "1"),
+    ] {
+        let sub = dir.path().join(name);
+        std::fs::create_dir(&sub).unwrap();
+        let set = sub.join("frame.txt");
+        std::fs::write(&set, frame_at(lo, scale)).unwrap();
+        let (svg, png) = (sub.join("frame.svg"), sub.join("frame.png"));
+        ok(&["render", s(&set), "-o", s(&svg)], "");
+        ok(&["render", s(&set), "-o", s(&png)], "");
+        let text = std::fs::read_to_string(&svg).unwrap();
+        assert!(
+            !text.contains("inf") && !text.contains("NaN"),
+            "{name}: {text}"
+        );
+        pictures.push((name, text, std::fs::read(&png).unwrap()));
+    }
+    let (_, unit_svg, unit_png) = &pictures[0];
+    assert_eq!(unit_svg.matches("<circle").count(), 1, "{unit_svg}");
+    for (name, svg, png) in &pictures[1..] {
+        assert_eq!(svg, unit_svg, "{name}");
+        assert!(png == unit_png, "{name}: another PNG");
+    }
+}
+
+#[test]
+fn writers_refuse_sets_their_f64s_cannot_hold_naming_the_vertex() {
+    let dir = scratch();
+    let tiny = file(&dir, "tiny.txt", "0 0\n1e-400 0\n1e-400 1e-400\n0 1e-400\n");
+    for (to, format) in [("wkt", "WKT"), ("geojson", "GeoJSON"), ("wkb-hex", "WKB")] {
+        fails(
+            &["convert", s(&tiny), "--to", to],
+            "",
+            1,
+            &[
+                &format!("cannot write the result as {format}: rounded to the nearest f64s"),
+                "curve 0, vertex 1: repeats the previous vertex (0, 0)",
+                "vertex 1 of polygon 0's exterior ring is (1/1",
+                "--exact",
+            ],
+        );
+    }
+    // Written exactly instead, it reads back as itself.
+    let exact = ok(&["convert", s(&tiny), "--to", "wkt", "--exact"], "");
+    let back = ok(&["convert", "--from", "wkt", "-"], &exact);
+    assert_eq!(
+        parse(&back),
+        parse(&std::fs::read_to_string(&tiny).unwrap())
+    );
+    // Beyond the range of f64: the coordinate and its vertex.
+    let huge = file(&dir, "huge.txt", "0 0\n1e400 0\n0 1\n");
+    fails(
+        &["convert", s(&huge), "--to", "geojson"],
+        "",
+        1,
+        &[
+            "of vertex 1 (1",
+            "of polygon 0's exterior ring is beyond the range of f64",
+        ],
+    );
+    // A coordinate whose nearest f64 is another nonzero value is written as that f64.
+    let third = file(&dir, "third.txt", "0 0\n1/3 0\n0 1/3\n");
+    assert_eq!(
+        ok(&["convert", s(&third), "--to", "wkt"], ""),
+        "MULTIPOLYGON (((0 0, 0.3333333333333333 0, 0 0.3333333333333333, 0 0)))\n"
+    );
+}
+
+#[test]
+fn ogc_rings_must_be_closed_in_wkt_geojson_and_wkb() {
+    fails(
+        &["info", "--from", "wkt", "-"],
+        "POLYGON ((0 0, 4 0, 0 4))",
+        1,
+        &[
+            "line 1, column 10",
+            "a ring of 3 points is not closed: it ends at (0, 4)",
+        ],
+    );
+    fails(
+        &["info", "--from", "geojson", "-"],
+        r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4]]]}"#,
+        1,
+        &["`coordinates[0]`: a ring of 3 points is not closed"],
+    );
+    // The same ring as WKB hex (little-endian Polygon of one ring of 3 points).
+    let hex = "01030000000100000003000000000000000000000000000000000000000000000000001040000000000000000000000000000000000000000000001040";
+    fails(
+        &["info", "--from", "wkb-hex", "-"],
+        hex,
+        1,
+        &["byte 9: a ring of 3 points is not closed"],
+    );
+}
+
+#[test]
+fn binary_wkb_on_standard_input_without_from_gets_a_hint() {
+    let dir = scratch();
+    let a = file(&dir, "a.txt", FRAME);
+    let wkb = dir.path().join("a.wkb");
+    ok(&["convert", s(&a), "-o", s(&wkb)], "");
+    let bytes = std::fs::read(&wkb).unwrap();
+    yinset()
+        .args(["info", "-"])
+        .write_stdin(bytes.clone())
+        .assert()
+        .code(1)
+        .stderr(contains("standard input").and(contains("looks like binary WKB: give --from wkb")));
+    let info: Value = serde_json::from_str(
+        &String::from_utf8(
+            yinset()
+                .args(["info", "--from", "wkb", "-"])
+                .write_stdin(bytes)
+                .assert()
+                .success()
+                .get_output()
+                .stdout
+                .clone(),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    assert_eq!(info["area"]["exact"], "14", "{info}");
 }

@@ -198,7 +198,7 @@ fn empty_and_whole_space_survive_a_pipeline() {
     let dir = scratch();
     let (a, _) = two_boxes(&dir);
     let empty = ok(&["difference", s(&a), s(&a)], "");
-    assert_eq!(empty, "", "0̂ is an empty file");
+    assert_eq!(empty, "# yinset: the empty set (no boundary)\n");
     let full = ok(&["complement", "--from", "obj", "-"], &empty);
     assert_eq!(full, "# yinset: the whole space (no boundary)\n");
     let f = info(&["info", "--from", "obj", "-"], &full);
@@ -773,4 +773,140 @@ fn float_mode_messages_show_points_as_f64s() {
         1,
         &["through (9330/9001, 1, 869/9001)"],
     );
+}
+}
+
+#[test]
+fn files_without_a_mesh_are_errors_while_the_empty_set_reads_back() {
+    let dir = scratch();
+    let (a, _) = two_boxes(&dir);
+    // A yin2 text named .obj has no OBJ lines: an error, not the empty set.
+    let sq = file(&dir, "sq.obj", "0 0\n1 0\n1 1\n0 1\n");
+    fails(
+        &["info", s(&sq)],
+        "",
+        1,
+        &[
+            "sq.obj",
+            "line 1, column 1",
+            "no vertex (`v`) or face (`f`) lines",
+        ],
+    );
+    // Vertices without faces bound nothing, in every format.
+    let cloud = file(&dir, "cloud.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+    fails(
+        &["info", s(&cloud)],
+        "",
+        1,
+        &["cloud.off", "3 vertices but no faces"],
+    );
+    // The empty set written in each 3D format reads back as the empty set.
+    for ext in ["obj", "stl", "off", "ply"] {
+        let out = dir.path().join(format!("e.{ext}"));
+        ok(&["difference", s(&a), s(&a), "-o", s(&out)], "");
+        let e = info(&["info", s(&out)], "");
+        assert_eq!(e["set"], "empty", "{ext}");
+    }
+}
+
+#[test]
+fn from_may_not_contradict_an_operand_extension() {
+    let dir = scratch();
+    let sq = file(&dir, "sq.txt", "0 0\n1 0\n1 1\n0 1\n");
+    fails(
+        &["meet", s(&sq), "-", "--from", "obj"],
+        &box_a(),
+        2,
+        &[
+            "conflicting options: --from obj but",
+            "sq.txt",
+            "the extension of yin2",
+        ],
+    );
+    // Without an extension, or on standard input, --from says the format.
+    let box_file = file(&dir, "box", &box_a());
+    let v = info(&["info", "--from", "obj", s(&box_file)], "");
+    assert_eq!(v["volume"]["exact"], "8");
+    let (a, _) = two_boxes(&dir);
+    let v = info(&["info", "--from", "obj", s(&a)], "");
+    assert_eq!(v["volume"]["exact"], "8");
+}
+
+#[test]
+fn a_byte_order_mark_is_ignored_in_every_3d_format() {
+    let dir = scratch();
+    let h = hollow_cube(&dir);
+    let want = info(&["info", s(&h)], "");
+    for ext in ["obj", "stl", "off", "ply"] {
+        let plain = dir.path().join(format!("p.{ext}"));
+        ok(&["convert", s(&h), "-o", s(&plain)], "");
+        let text = std::fs::read_to_string(&plain).unwrap();
+        let marked = file(&dir, &format!("m.{ext}"), &format!("\u{feff}{text}"));
+        assert_eq!(info(&["info", s(&marked)], ""), want, "{ext}");
+    }
+    // An ASCII STL without its `solid` line is named as such, not as a truncated binary STL.
+    let stl = std::fs::read_to_string(dir.path().join("p.stl")).unwrap();
+    let headless = file(&dir, "headless.stl", &stl[stl.find('\n').unwrap() + 1..]);
+    fails(
+        &["info", s(&headless)],
+        "",
+        1,
+        &["headless.stl", "begins with `solid`, this one with `facet`"],
+    );
+}
+
+#[test]
+fn pictures_of_sets_beyond_f64_are_those_of_the_same_sets_at_unit_scale() {
+    let dir = scratch();
+    // The hollow box [0, 3]³ − [1, 2]³ scaled by 10^±400 and moved by 10^400: no coordinate
+    // has an f64 (or a nonzero one), yet each is drawn as the unit-scale box is.
+    let box_text = |outer: [&str; 2], inner: [&str; 2]| {
+        cuboid([outer[0]; 3], [outer[1]; 3], false) + &cuboid([inner[0]; 3], [inner[1]; 3], true)
+    };
+    let cases = [
+        ("unit", box_text(["0", "3"], ["1", "2"])),
+        ("big", box_text(["0", "3e400"], ["1e400", "2e400"])),
+        ("tiny", box_text(["0", "3e-400"], ["1e-400", "2e-400"])),
+        (
+            "far",
+            box_text(
+                [
+                    format!("1{}", "0".repeat(400)).as_str(),
+                    format!("1{}3", "0".repeat(399)).as_str(),
+                ],
+                [
+                    format!("1{}1", "0".repeat(399)).as_str(),
+                    format!("1{}2", "0".repeat(399)).as_str(),
+                ],
+            ),
+        ),
+    ];
+    let mut pictures = Vec::new();
+    for (name, text) in &cases {
+        let sub = dir.path().join(name);
+        std::fs::create_dir(&sub).unwrap();
+        let obj = sub.join("h.obj");
+        std::fs::write(&obj, text).unwrap();
+        let (png, html) = (sub.join("h.png"), sub.join("h.html"));
+        ok(&["render", s(&obj), "-o", s(&png), "--size", "64"], "");
+        ok(&["render", s(&obj), "-o", s(&html)], "");
+        let page = std::fs::read_to_string(&html).unwrap();
+        let data = page
+            .split("const DATA = ")
+            .nth(1)
+            .unwrap()
+            .split(';')
+            .next()
+            .unwrap();
+        assert!(
+            !data.contains("Infinity") && !data.contains("NaN"),
+            "{name}: {data}"
+        );
+        pictures.push((std::fs::read(&png).unwrap(), page));
+    }
+    let (warm, cool) = warm_and_cool(&decode_png(&pictures[0].0).2);
+    assert!(warm > 50 && cool > 50, "warm {warm}, cool {cool}");
+    for (k, (name, _)) in cases.iter().enumerate().skip(1) {
+        assert!(pictures[k] == pictures[0], "{name} is drawn otherwise");
+    }
 }

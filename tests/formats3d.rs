@@ -191,16 +191,87 @@ fn read_all(bytes: &[u8]) {
     }
 }
 
+/// The mesh in `bytes` read by the reader of `format` (a name of [`small_files`]), or its error.
+fn read_as(format: &str, bytes: &[u8]) -> Result<Mesh<Rational>, String> {
+    let text = || std::str::from_utf8(bytes).map_err(|e| e.to_string());
+    match format {
+        "stl" | "stl-binary" => read_stl(bytes).map_err(|e| e.to_string()),
+        "ply" | "ply-binary" => read_ply(bytes).map_err(|e| e.to_string()),
+        "off" => read_off(text()?).map_err(|e| e.to_string()),
+        _ => read_obj(text()?).map_err(|e| e.to_string()),
+    }
+}
+
+#[test]
+fn a_byte_order_mark_is_ignored_by_every_reader() {
+    for (format, bytes) in small_files() {
+        if format == "stl-binary" {
+            continue; // binary STL is told by its size, and has no text to mark
+        }
+        let marked = [&b"\xEF\xBB\xBF"[..], &bytes[..]].concat();
+        let plain = read_as(format, &bytes).unwrap();
+        assert!(!plain.faces.is_empty(), "{format}");
+        assert_eq!(read_as(format, &marked), Ok(plain), "{format}");
+    }
+}
+
+#[test]
+fn ascii_stl_without_its_solid_line_is_named_as_such() {
+    let (_, stl) = &small_files()[0];
+    let text = std::str::from_utf8(stl).unwrap();
+    let headless = &text[text.find('\n').unwrap() + 1..];
+    let e = read_as("stl", headless.as_bytes()).unwrap_err();
+    assert!(
+        e.contains("an ASCII STL file begins with `solid`, this one with `facet`")
+            && e.contains("begin it with a line `solid NAME`")
+            && e.starts_with("line 1, column 3:"),
+        "{e}"
+    );
+    let e = read_as("stl", b"0 0\n1 0\n0 1\n").unwrap_err();
+    assert!(
+        e.contains("this one with `0`, and it is not a binary STL either"),
+        "{e}"
+    );
+    assert!(read_as("stl", b"")
+        .unwrap_err()
+        .contains("the file is empty"));
+}
+
+#[test]
+fn obj_text_without_vertices_or_faces_is_empty_only_if_it_says_nothing() {
+    for nothing in [
+        "",
+        "\n\n",
+        "# yinset: the empty set (no boundary)\n",
+        "\u{feff}# c\n",
+    ] {
+        let mesh = read_as("obj", nothing.as_bytes()).unwrap();
+        assert!(
+            mesh.vertices.is_empty() && mesh.faces.is_empty(),
+            "{nothing:?}"
+        );
+    }
+    for (other, at) in [
+        ("0 0\n1 0\n0 1\n", "line 1, column 1: `0`"),
+        ("# a box\no box\ng side\n", "line 2, column 1: `o`"),
+        (
+            "POLYGON ((0 0, 1 0, 0 1, 0 0))",
+            "line 1, column 1: `POLYGON`",
+        ),
+    ] {
+        let e = read_as("obj", other.as_bytes()).unwrap_err();
+        assert!(
+            e.starts_with(at) && e.contains("no vertex (`v`) or face (`f`) lines"),
+            "{e}"
+        );
+    }
+}
+
 #[test]
 fn damaged_files_are_errors_not_panics() {
     for (format, bytes) in small_files() {
         // The undamaged file reads in its own format.
-        let mesh: Mesh<Rational> = match format {
-            "stl" | "stl-binary" => read_stl(&bytes).unwrap(),
-            "ply" | "ply-binary" => read_ply(&bytes).unwrap(),
-            "off" => read_off(std::str::from_utf8(&bytes).unwrap()).unwrap(),
-            _ => read_obj(std::str::from_utf8(&bytes).unwrap()).unwrap(),
-        };
+        let mesh = read_as(format, &bytes).unwrap();
         assert!(!mesh.faces.is_empty(), "{format}");
         // Every truncation, and every byte replaced by a few others (in steps, to stay fast).
         let step = (bytes.len() / 400).max(1);

@@ -217,7 +217,7 @@ fn exact_fill_of_a_ring_spanning_sixty_orders_of_magnitude() {
         222222222222222222222222222222222222222222222222222222222224 160, 140 160, \
         140 6099950670, \
         2222222222222222222222222222222222222222222222222222222222222222222.2222222222222222222222222222222222220 4502660, \
-        60 160))";
+        60 160, 94 160))";
     let polygons =
         yinset::io::wkt::read_polygons::<yinset::num::Rational>(text).expect("valid WKT");
     let rings: Vec<_> = polygons

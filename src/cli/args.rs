@@ -59,9 +59,10 @@ pub enum Command {
 /// How inputs are read.
 #[derive(Args, Debug, Clone)]
 pub struct ReadOpts {
-    /// Input format (default: from the file extension; for standard input, WKB hex if it is
-    /// all hex digits, else yin2, or OBJ if the other inputs are 3D). A .wkb file or --from
-    /// wkb of hex digits is read as wkb-hex.
+    /// Input format of every input (default: from the file extension; for standard input, WKB
+    /// hex if it is all hex digits, else yin2, or OBJ if the other inputs are 3D); an input
+    /// file whose extension names another format is an error. A .wkb file or --from wkb of hex
+    /// digits is read as wkb-hex.
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub from: Option<Format>,
     /// Read the rings as polygon soup and take the region they cover under this rule.

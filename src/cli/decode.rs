@@ -104,8 +104,8 @@ pub fn decode_wkb<N: Num>(
     Ok(Rings::of_polygons(polygons))
 }
 
-/// Decode the file `bytes` in `format`, a format of 3D sets: its mesh (no faces: the empty set),
-/// or the whole space (OBJ only).
+/// Decode the file `bytes` in `format`, a format of 3D sets: its mesh (no vertices and no faces:
+/// the empty set; vertices without faces are an error), or the whole space (OBJ only).
 pub fn decode_mesh<N: Num>(bytes: &[u8], format: Format) -> Result<Decoded<Mesh<N>>, MeshError> {
     let text = || {
         std::str::from_utf8(bytes).map_err(|e| MeshError::Binary {
@@ -136,7 +136,7 @@ pub fn decode_mesh<N: Num>(bytes: &[u8], format: Format) -> Result<Decoded<Mesh<
             }))
         }
     };
-    Ok(Decoded::Boundary(mesh))
+    Ok(Decoded::Boundary(mesh.with_faces()?))
 }
 
 /// True if a line of `text` is `line` (but for surrounding blanks).
@@ -306,7 +306,7 @@ mod tests {
     #[test]
     fn errors_are_located_in_polygon_terms() {
         let r = rings(
-            r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[0,1]]],[[[0,0],[0,5],[5,0]],[[1,1],[2,1],[1,2]]]]}"#,
+            r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[0,1],[0,0]]],[[[0,0],[0,5],[5,0],[0,0]],[[1,1],[2,1],[1,2],[1,1]]]]}"#,
             Format::Geojson,
         );
         let e = YinError::ProperCrossing {
@@ -334,7 +334,23 @@ mod tests {
         };
         assert!(mesh(&format!("{WHOLE_SPACE}\n")).is_none());
         assert!(mesh("").unwrap().faces.is_empty());
-        assert!(mesh("# yinset\nv 0 0 0\n").unwrap().faces.is_empty());
+        assert!(mesh("# yinset\n\n").unwrap().vertices.is_empty());
+        // Vertices without faces (a point cloud) bound nothing, in every format.
+        for (text, format) in [
+            ("# yinset\nv 0 0 0\n", Format::Obj),
+            ("OFF\n1 0 0\n0 0 0\n", Format::Off),
+            (
+                "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n\
+                 property float z\nend_header\n0 0 0\n",
+                Format::Ply,
+            ),
+        ] {
+            let Err(e) = decode_mesh::<Rational>(text.as_bytes(), format) else {
+                panic!("a point cloud read as a set: {text}")
+            };
+            assert_eq!(e, MeshError::NoFaces { vertices: 1 }, "{text}");
+            assert!(e.to_string().contains("1 vertices but no faces"), "{e}");
+        }
         let text = format!("{WHOLE_SPACE}\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert_eq!(mesh(&text).unwrap().faces.len(), 1);
         assert!(decode::<Rational>("v 0 0 0", Format::Obj, false).is_err());

@@ -85,13 +85,14 @@ fn wrong_dimension(format: Format, dimension: Dimension) -> CliError {
 
 /// The OBJ text of `set`: one object `surface_K_positive` or `surface_K_negative` per glued
 /// surface, normals out of the set; a comment line for an unbounded set, the comment line
-/// [`WHOLE_SPACE`] alone for 1̂, nothing for 0̂.
+/// [`WHOLE_SPACE`] alone for 1̂, a comment line alone for 0̂ (read back as the file without
+/// vertices or faces).
 fn obj<N: Num>(set: &YinSet3<N>) -> String {
     if set.is_full() {
         return format!("{WHOLE_SPACE}\n");
     }
     if set.is_empty() {
-        return String::new();
+        return "# yinset: the empty set (no boundary)\n".to_string();
     }
     let groups: Vec<(String, Vec<[usize; 3]>)> = set
         .surfaces()
@@ -134,7 +135,7 @@ fn polygons<N: Num>(set: &YinSet2<N>, format: &'static str) -> Result<Vec<Polygo
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cli::decode::{decode, Decoded};
+    use crate::cli::decode::{decode, decode_mesh, Decoded};
     use crate::num::Rational;
 
     fn square_with_hole() -> YinSet2<Rational> {
@@ -227,10 +228,12 @@ mod tests {
             encode3(&YinSet3::<Rational>::full(), Format::Obj).unwrap(),
             format!("{WHOLE_SPACE}\n").into_bytes()
         );
-        assert_eq!(
-            encode3(&YinSet3::<Rational>::empty(), Format::Obj).unwrap(),
-            b""
-        );
+        let empty = encode3(&YinSet3::<Rational>::empty(), Format::Obj).unwrap();
+        assert_eq!(empty, b"# yinset: the empty set (no boundary)\n");
+        assert!(matches!(
+            decode_mesh::<Rational>(&empty, Format::Obj),
+            Ok(Decoded::Boundary(m)) if m.vertices.is_empty() && m.faces.is_empty()
+        ));
         assert!(encode3(&hollow, Format::Wkt).is_err());
         assert!(encode(&square_with_hole(), Format::Obj, NumberStyle::Decimal).is_err());
     }

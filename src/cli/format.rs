@@ -94,14 +94,27 @@ impl Format {
     }
 
     /// The format of input `path`, one of `dimension`'s: `from` if given, else by extension
-    /// (standard input: yin2 in 2D, OBJ in 3D).
+    /// (standard input: yin2 in 2D, OBJ in 3D); a `from` that contradicts the extension of a
+    /// file is an error (it names the format of every input).
     pub fn of_input(
         path: &Path,
         from: Option<Format>,
         dimension: Dimension,
     ) -> Result<Format, CliError> {
         let format = match from {
-            Some(f) => f,
+            Some(f) => match Format::of_extension(path).filter(|_| !is_std(path)) {
+                Some(e) if !f.writes_extension_of(e) => {
+                    return Err(CliError::Usage(format!(
+                        "conflicting options: --from {} but `{}` has the extension of {}: \
+                         --from names the format of every input, so give it only with inputs \
+                         of that format (or without an extension, or standard input)",
+                        f.name(),
+                        path.display(),
+                        e.name()
+                    )))
+                }
+                _ => f,
+            },
             None if is_std(path) => dimension.default_format(),
             None => Format::of_extension(path).ok_or_else(|| {
                 CliError::Usage(format!(
@@ -247,13 +260,29 @@ mod tests {
         );
         assert_eq!(Format::of_input(p("-"), None, Two).unwrap(), Format::Yin2);
         assert_eq!(
-            Format::of_input(p("a.txt"), Some(Format::Wkt), Two).unwrap(),
+            Format::of_input(p("-"), Some(Format::Wkt), Two).unwrap(),
             Format::Wkt
         );
+        assert!(Format::of_input(p("a.txt"), Some(Format::Wkt), Two).is_err());
         let e = Format::of_input(p("a.dat"), None, Two)
             .unwrap_err()
             .to_string();
         assert!(e.contains("`a.dat`") && e.contains("--from"), "{e}");
+        assert_eq!(
+            Format::of_input(p("a.dat"), Some(Format::Wkt), Two).unwrap(),
+            Format::Wkt
+        );
+        assert_eq!(
+            Format::of_input(p("a.wkb"), Some(Format::WkbHex), Two).unwrap(),
+            Format::WkbHex
+        );
+        let e = Format::of_input(p("sq.txt"), Some(Format::Obj), Three)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("--from obj but `sq.txt` has the extension of yin2"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -15,6 +15,10 @@ use crate::yin3::{Yin3Error, YinSet3};
 use std::io::Read;
 use std::path::Path;
 
+/// The hint for standard input that begins as binary WKB does but is read as yin2.
+const WKB_HINT: &str =
+    " (standard input is read as yin2 or WKB hex, and this looks like binary WKB: give --from wkb)";
+
 /// How `path` is named in messages.
 pub fn name(path: &Path) -> String {
     if is_std(path) {
@@ -97,12 +101,22 @@ pub fn load<N: Num>(path: &Path, opts: &ReadOpts, ctx: N::Ctx) -> Result<YinSet2
             })?;
         return from_rings(path, rings, opts, ctx);
     }
-    let text = text_of(path, bytes, opts)?;
+    let guessed = is_std(path) && opts.from.is_none();
+    let wkb_hint = guessed && crate::io::wkb::looks_binary(&bytes);
+    let text = text_of(path, bytes, opts).map_err(|e| match e {
+        CliError::Read { name, source } if wkb_hint => CliError::Read {
+            name,
+            source: std::io::Error::new(source.kind(), format!("{source}{WKB_HINT}")),
+        },
+        other => other,
+    })?;
     let rings = match decode::<N>(&text, format, opts.polygonal_only) {
         Ok(Decoded::Full) => return Ok(YinSet2::full().with_ctx(ctx)),
         Ok(Decoded::Boundary(rings)) => rings,
         Err(mut source) => {
-            if is_std(path) && opts.from.is_none() && looks_like_obj(&text) {
+            if wkb_hint {
+                source.message += WKB_HINT;
+            } else if guessed && looks_like_obj(&text) {
                 source.message += " (standard input is read as yin2: for OBJ give --from obj)";
             }
             return Err(parse_error(path, source));

@@ -1,5 +1,5 @@
 //! Number text for the writers of WKT, GeoJSON and OBJ: one rule for all of them
-//! ([`NumberStyle`]).
+//! ([`NumberStyle`]; the nearest `f64`s of the default style are `super::nearest`'s).
 
 use crate::num::{Literal, Num};
 use num_bigint::BigInt;
@@ -19,39 +19,19 @@ pub enum NumberStyle {
     Exact,
 }
 
-/// The text of coordinate `n` in `style`, or why it cannot be written: an `f64` overflow in
-/// [`NumberStyle::Decimal`], a non-terminating value in [`NumberStyle::Exact`] when
-/// `fractions` is false.
-pub(crate) fn coordinate_text<N: Num>(
-    n: &N,
-    style: NumberStyle,
-    fractions: bool,
-) -> Result<String, String> {
-    match style {
-        NumberStyle::Decimal => nearest_f64(n)
-            .map(|f| f.to_string())
-            .map_err(|e| format!("{e}: write it exactly")),
-        NumberStyle::Exact => decimal_text(n, || {
-            if fractions {
-                Ok(n.to_string())
-            } else {
-                Err(format!(
-                    "the coordinate {n} has no finite decimal expansion, which JSON numbers \
-                     need: write decimals (the default) or another format"
-                ))
-            }
-        }),
-    }
-}
-
-/// The `f64` nearest to `n`, or why there is none: `n` is beyond the range of `f64`.
-pub(crate) fn nearest_f64<N: Num>(n: &N) -> Result<f64, String> {
-    let f = n.to_f64();
-    if f.is_finite() {
-        Ok(f)
-    } else {
-        Err(format!("the coordinate {n} is beyond the range of f64"))
-    }
+/// The text of coordinate `n` exactly ([`NumberStyle::Exact`]): a decimal where its expansion
+/// terminates, else the fraction `p/q` if `fractions`, or why it cannot be written.
+pub(crate) fn exact_coordinate_text<N: Num>(n: &N, fractions: bool) -> Result<String, String> {
+    decimal_text(n, || {
+        if fractions {
+            Ok(n.to_string())
+        } else {
+            Err(format!(
+                "the coordinate {n} has no finite decimal expansion, which JSON numbers \
+                 need: write decimals (the default) or another format"
+            ))
+        }
+    })
 }
 
 /// `n` exactly: a decimal when its expansion terminates, its `Display` (`p/q`) otherwise.
@@ -135,12 +115,11 @@ mod tests {
         Rational::parse(s).unwrap()
     }
 
-    /// Both styles, fractions allowed and not.
-    fn texts(n: &Rational) -> [Result<String, String>; 3] {
+    /// The exact text, fractions allowed and not.
+    fn texts(n: &Rational) -> [Result<String, String>; 2] {
         [
-            coordinate_text(n, NumberStyle::Decimal, false),
-            coordinate_text(n, NumberStyle::Exact, true),
-            coordinate_text(n, NumberStyle::Exact, false),
+            exact_coordinate_text(n, true),
+            exact_coordinate_text(n, false),
         ]
     }
 
@@ -148,49 +127,25 @@ mod tests {
     fn terminating_rationals_are_exact_decimals() {
         for (s, want) in [("1/8", "0.125"), ("-5/2", "-2.5"), ("7", "7"), ("0", "0")] {
             assert_eq!(exact_text(&q(s)), want);
-            assert_eq!(texts(&q(s)), [0, 1, 2].map(|_| Ok(want.to_string())));
+            assert_eq!(texts(&q(s)), [0, 1].map(|_| Ok(want.to_string())));
         }
         assert_eq!(exact_text(&q("-1/1024")), "-0.0009765625");
         assert_eq!(exact_text(&q("1e30")), format!("1{}", "0".repeat(30)));
     }
 
     #[test]
-    fn decimal_style_is_the_shortest_round_trip_of_the_nearest_f64() {
-        // 1/3 and 0.1 + 10^-30 are not f64 values: their nearest f64s print as below, and
-        // those texts parse back to the same f64s (Rust's `str::parse` is correctly rounded).
-        for (s, want) in [
-            ("1/3", "0.3333333333333333"),
-            ("-2/3", "-0.6666666666666666"),
-            ("100000000000000000000000000000000000000000000000000000000000000001/10000000000000000000000000000000000000000000000000000000000000000", "10"),
-            ("1/10", "0.1"),
-        ] {
-            let [decimal, ..] = texts(&q(s));
-            assert_eq!(decimal.as_deref(), Ok(want), "{s}");
-            assert_eq!(want.parse::<f64>().unwrap(), q(s).to_f64());
-        }
-        let huge = q("1e400");
-        assert!(texts(&huge)[0]
-            .as_ref()
-            .unwrap_err()
-            .contains("beyond the range of f64"));
-        assert_eq!(texts(&huge)[1].as_ref().unwrap().len(), 401);
-    }
-
-    #[test]
     fn exact_style_writes_fractions_only_where_allowed() {
         assert_eq!(exact_text(&q("-1/3")), "-1/3");
-        let [_, with, without] = texts(&q("-1/3"));
+        let [with, without] = texts(&q("-1/3"));
         assert_eq!(with.as_deref(), Ok("-1/3"));
         assert!(without.unwrap_err().contains("no finite decimal expansion"));
+        assert_eq!(texts(&q("1e400"))[1].as_ref().unwrap().len(), 401);
     }
 
     #[test]
     fn floats_print_their_shortest_decimal() {
         let f = Float::parse("0.1").unwrap();
-        assert_eq!(
-            coordinate_text(&f, NumberStyle::Decimal, false).unwrap(),
-            "0.1"
-        );
+        assert_eq!(exact_coordinate_text(&f, false).unwrap(), "0.1");
         assert_eq!(exact_text(&Float::parse("-2.5e-3").unwrap()), "-0.0025");
     }
 }

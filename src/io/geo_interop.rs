@@ -1,7 +1,8 @@
 //! Conversions between `geo_types` polygons and Yin sets (feature `geo-types`): a polygon or
 //! multipolygon of `f64` coordinates becomes the Yin set it bounds — in float mode, or exactly,
 //! every `f64` being a rational — and a bounded Yin set becomes a multipolygon, one polygon per
-//! atom, coordinates rounded to the nearest `f64`.
+//! atom, coordinates rounded to the nearest `f64` (an error where the rounded rings would not
+//! bound the set, e.g. a square of side 10⁻⁴⁰⁰).
 //!
 //! ```
 //! use geo_types::{polygon, MultiPolygon};
@@ -17,7 +18,8 @@
 //! assert_eq!(meet.0[0].exterior().0.len(), 5); // the unit square [1,2]², closed
 //! ```
 
-use super::{polygons_of, Polygon as Rings};
+use super::nearest::nearest_polygons;
+use super::{closed, polygons_of, Polygon as Rings, WriteError};
 use crate::kernel::Point;
 use crate::num::{Num, NumError};
 use crate::yin2::{YinError, YinSet2};
@@ -36,6 +38,10 @@ pub enum GeoError {
     /// The set is unbounded: no polygon holds it.
     #[error("the set is unbounded (it contains everything far enough out): no polygon holds it")]
     Unbounded,
+    /// The set's nearest `f64`s do not bound it (a coordinate beyond the range of `f64`, or
+    /// rings that collapse, cross or turn round when rounded).
+    #[error(transparent)]
+    Rounding(#[from] WriteError),
 }
 
 /// The rings of `polygon`, number `index` of its multipolygon, as open point lists.
@@ -93,22 +99,16 @@ impl<N: Num> TryFrom<&MultiPolygon<f64>> for YinSet2<N> {
 }
 
 /// The multipolygon of a bounded Yin set: one polygon per atom, exterior counterclockwise and
-/// holes clockwise, coordinates the nearest `f64`s.
+/// holes clockwise, coordinates the nearest `f64`s (refused where those would not bound the
+/// set's rings, as by the WKT, GeoJSON and WKB writers).
 impl<N: Num> TryFrom<&YinSet2<N>> for MultiPolygon<f64> {
     type Error = GeoError;
     fn try_from(set: &YinSet2<N>) -> Result<Self, GeoError> {
-        let line = |ring: &[Point<N>]| {
-            let mut coords: Vec<Coord<f64>> = ring
-                .iter()
-                .map(|p| Coord {
-                    x: p.x.to_f64(),
-                    y: p.y.to_f64(),
-                })
-                .collect();
-            coords.extend(coords.first().copied());
+        let line = |ring: &[Point<f64>]| {
+            let coords = closed(ring).map(|p| Coord { x: p.x, y: p.y }).collect();
             LineString(coords)
         };
-        let polygons = polygons_of(set).ok_or(GeoError::Unbounded)?;
+        let polygons = nearest_polygons(&polygons_of(set).ok_or(GeoError::Unbounded)?)?;
         Ok(MultiPolygon(
             polygons
                 .iter()
@@ -186,6 +186,23 @@ mod tests {
         assert!(YinSet2::<Rational>::try_from(&MultiPolygon::<f64>(vec![]))
             .unwrap()
             .is_empty());
+    }
+
+    #[test]
+    fn sets_that_round_to_nothing_are_errors() {
+        let tiny = Rational::parse("1e-400").unwrap();
+        let p = |x: &Rational, y: &Rational| Point::new(x.clone(), y.clone());
+        let z = Rational::zero();
+        let square = YinSet2::from_curves(vec![vec![
+            p(&z, &z),
+            p(&tiny, &z),
+            p(&tiny, &tiny),
+            p(&z, &tiny),
+        ]])
+        .unwrap();
+        let e = MultiPolygon::try_from(&square).unwrap_err();
+        assert!(matches!(e, GeoError::Rounding(_)), "{e}");
+        assert!(e.to_string().contains("repeats the previous vertex"), "{e}");
     }
 
     #[test]

@@ -4,7 +4,8 @@
 //! polygonal or `null` geometry) and `FeatureCollection`; members may come in any order and
 //! foreign members are ignored. Numbers keep their decimal text (`serde_json` with
 //! `arbitrary_precision`) and are parsed by [`Num::parse`], so exact backends read them
-//! without rounding. Positions must have exactly two numbers (altitudes are rejected), and the
+//! without rounding. Rings must be closed, their first position repeated at the end (RFC 7946
+//! §3.1.6), and are returned open. Positions must have exactly two numbers (altitudes are rejected), and the
 //! point types `Point`, `LineString`, … are rejected as not polygonal. An empty `coordinates`
 //! array is an empty geometry. Errors caused by the content rather than the JSON syntax are
 //! located at the end of the innermost object that holds them, and name the offending member
@@ -15,7 +16,7 @@
 //! exactly on request, which fails for a number without a finite decimal expansion (1/3),
 //! since JSON has no fractions.
 
-use super::{open_ring, polygon_texts, without_bom, NumberStyle, ParseError, Polygon, WriteError};
+use super::{ogc_ring, polygon_texts, without_bom, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 use serde::de::value::MapAccessDeserializer;
@@ -327,7 +328,7 @@ fn indexed<N>(
 }
 
 /// The polygon at `path` (none for an empty array).
-fn polygon<N: PartialEq>(coords: Coords<N>, path: &str) -> Result<Option<Polygon<N>>, String> {
+fn polygon<N: Num>(coords: Coords<N>, path: &str) -> Result<Option<Polygon<N>>, String> {
     let mut rings = indexed(coords, path)?.map(|(c, path)| ring(c, &path));
     let Some(exterior) = rings.next().transpose()? else {
         return Ok(None);
@@ -338,12 +339,12 @@ fn polygon<N: PartialEq>(coords: Coords<N>, path: &str) -> Result<Option<Polygon
     }))
 }
 
-/// The open ring at `path`.
-fn ring<N: PartialEq>(coords: Coords<N>, path: &str) -> Result<Vec<Point<N>>, String> {
+/// The closed ring at `path`, returned open.
+fn ring<N: Num>(coords: Coords<N>, path: &str) -> Result<Vec<Point<N>>, String> {
     let points: Result<Vec<_>, String> = indexed(coords, path)?
         .map(|(c, path)| position(c, &path))
         .collect();
-    Ok(open_ring(points?))
+    ogc_ring(points?).map_err(|e| format!("`{path}`: {e}"))
 }
 
 /// The position `[x, y]` at `path`.
@@ -373,7 +374,7 @@ mod tests {
 
     #[test]
     fn reads_geometries_exactly_in_any_member_order() {
-        let text = r#"{"coordinates": [[[0.1, 0], [1, 0], [1, 1e-30], [0.1, 0]], [[0.2, 0.1], [0.3, 0.1], [0.3, 0.2]]],
+        let text = r#"{"coordinates": [[[0.1, 0], [1, 0], [1, 1e-30], [0.1, 0]], [[0.2, 0.1], [0.3, 0.1], [0.3, 0.2], [0.2, 0.1]]],
                        "bbox": [0, 0, 1, 1], "type": "Polygon"}"#;
         let polys = read(text).unwrap();
         assert_eq!(polys.len(), 1);
@@ -384,7 +385,7 @@ mod tests {
             q("1/1000000000000000000000000000000")
         );
         assert_eq!(polys[0].interiors[0][2], Point::new(q("3/10"), q("1/5")));
-        let multi = r#"{"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1]]], [], [[[5,5],[6,5],[6,6],[5,5]]]]}"#;
+        let multi = r#"{"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,0]]], [], [[[5,5],[6,5],[6,6],[5,5]]]]}"#;
         assert_eq!(read(multi).unwrap().len(), 2);
         let collection =
             format!(r#"{{"type": "GeometryCollection", "geometries": [{multi}, {text}]}}"#);
@@ -398,9 +399,9 @@ mod tests {
     fn reads_features_with_their_properties() {
         let text = r#"{"type": "FeatureCollection", "features": [
             {"type": "Feature", "properties": {"operation": "union", "n": 1.50}, "geometry":
-                {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1]]]}},
+                {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]}},
             {"type": "Feature", "properties": null, "geometry": null},
-            {"type": "Feature", "geometry": {"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1]]], [[[2,0],[3,0],[3,1]]]]}}
+            {"type": "Feature", "geometry": {"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,0]]], [[[2,0],[3,0],[3,1],[2,0]]]]}}
         ]}"#;
         let features = read_features::<Rational>(text).unwrap();
         assert_eq!(features.len(), 3);
@@ -416,7 +417,7 @@ mod tests {
         assert!(features[1].properties.is_empty());
         assert_eq!(read(text).unwrap().len(), 3);
         let bare = read_features::<Rational>(
-            r#"{"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1]]]}"#,
+            r#"{"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]}"#,
         );
         assert_eq!(bare.unwrap().len(), 1);
     }
@@ -441,14 +442,18 @@ mod tests {
         assert!(text.starts_with(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[0.125,-0.1],[0.00000000000000000001,12345678901234567890123],[0,0]],"#), "{text}");
         assert_eq!(read(&text).unwrap(), polys);
         let third = vec![Polygon {
-            exterior: vec![Point::new(q("1/3"), q("-2/3"))],
+            exterior: vec![
+                Point::new(q("1/3"), q("-2/3")),
+                Point::int(1, 0),
+                Point::int(0, 1),
+            ],
             interiors: vec![],
         }];
         let e = write_multipolygon(&third, NumberStyle::Exact).unwrap_err();
         assert!(e.to_string().contains("1/3 has no finite decimal"), "{e}");
         assert_eq!(
             write_multipolygon(&third, NumberStyle::Decimal).unwrap(),
-            r#"{"type":"MultiPolygon","coordinates":[[[[0.3333333333333333,-0.6666666666666666],[0.3333333333333333,-0.6666666666666666]]]]}"#
+            r#"{"type":"MultiPolygon","coordinates":[[[[0.3333333333333333,-0.6666666666666666],[1,0],[0,1],[0.3333333333333333,-0.6666666666666666]]]]}"#
         );
         for style in [NumberStyle::Exact, NumberStyle::Decimal] {
             let empty = write_multipolygon::<Rational>(&[], style).unwrap();
@@ -583,12 +588,12 @@ mod tests {
     fn polygonal_parts_skip_points_and_lines() {
         let text = r#"{"type": "FeatureCollection", "features": [
             {"type": "Feature", "properties": {"name": "capital"}, "geometry": {"type": "Point", "coordinates": [1, 2]}},
-            {"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1]]]}},
+            {"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]}},
             {"type": "Feature", "properties": null, "geometry": {"type": "GeometryCollection", "geometries": [
                 {"type": "LineString", "coordinates": [[0, 0], [1, 1]]},
                 {"type": "MultiPoint", "coordinates": [[0, 0], [1, 1]]},
                 {"type": "MultiLineString", "coordinates": [[[0, 0], [1, 1]]]},
-                {"type": "MultiPolygon", "coordinates": [[[[2,0],[3,0],[3,1]]]]}]}}
+                {"type": "MultiPolygon", "coordinates": [[[[2,0],[3,0],[3,1],[2,0]]]]}]}}
         ]}"#;
         let e = read(text).unwrap_err();
         assert!(e.message.contains("`Point` is not polygonal"), "{e}");
@@ -610,7 +615,7 @@ mod tests {
 
     #[test]
     fn a_byte_order_mark_is_ignored() {
-        let text = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1]]]}"#;
+        let text = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}"#;
         assert_eq!(read(&format!("\u{feff}{text}")), read(text));
         let e = read("\u{feff}[1]").unwrap_err();
         assert_eq!((e.line, e.column), (1, 1));

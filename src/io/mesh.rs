@@ -33,8 +33,8 @@ impl<N> Default for Mesh<N> {
     }
 }
 
-/// A mesh file that cannot be read: malformed text (line and column) or a malformed binary
-/// file (byte offset).
+/// A mesh file that cannot be read: malformed text (line and column), a malformed binary
+/// file (byte offset), or vertices without faces.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MeshError {
     /// Malformed text, or the text header of a binary file.
@@ -48,6 +48,25 @@ pub enum MeshError {
         /// What is wrong there.
         message: String,
     },
+    /// Vertices without faces (a point cloud): no boundary, so no set, rather than 0̂ read
+    /// silently.
+    #[error("the file has {vertices} vertices but no faces: a 3D set is read from the faces that bound it (the file of the empty set has no vertices either)")]
+    NoFaces {
+        /// How many vertices the file has.
+        vertices: usize,
+    },
+}
+
+impl<N> Mesh<N> {
+    /// The mesh, or [`MeshError::NoFaces`] if it has vertices but no faces.
+    pub fn with_faces(self) -> Result<Mesh<N>, MeshError> {
+        if self.faces.is_empty() && !self.vertices.is_empty() {
+            return Err(MeshError::NoFaces {
+                vertices: self.vertices.len(),
+            });
+        }
+        Ok(self)
+    }
 }
 
 /// The coordinate written as `token` (a subslice of `text`): exact decimals and fractions

@@ -7,9 +7,12 @@
 //! Readers parse every coordinate with [`crate::num::Num::parse`], so exact backends get the
 //! decimal text's value without rounding (binary floats of STL and PLY are exact rationals);
 //! they never panic, and report malformed input as a [`ParseError`] with its line and column
-//! (a [`mesh::MeshError`] with its byte offset for binary files). Rings are returned open (a closing repetition of
-//! the first point is stripped); validity (enough distinct points, simplicity) is the kernel's
-//! business, not the readers'.
+//! (a [`mesh::MeshError`] with its byte offset for binary files). A UTF-8 byte-order mark at
+//! the start of a text is ignored by every reader. Rings are returned open (the closing
+//! repetition of the first point is stripped). The rings of WKT, GeoJSON and WKB must be
+//! closed, their first point repeated at the end, as OGC Simple Features and RFC 7946 require:
+//! an unclosed ring is an error naming it in all three (yin2 curves may be closed or not).
+//! Validity (enough distinct points, simplicity) is the kernel's business, not the readers'.
 
 mod decimal;
 mod error;
@@ -20,8 +23,10 @@ pub mod html3;
 mod lettering;
 mod limits;
 pub mod mesh;
+mod nearest;
 pub mod obj;
 pub mod off;
+mod picture_frame;
 pub mod ply;
 #[cfg(feature = "png")]
 pub mod png;
@@ -113,10 +118,32 @@ pub(crate) fn twice_signed_area<N: Num>(ring: &[Point<N>]) -> N {
     })
 }
 
-/// `text` without a leading UTF-8 byte-order mark (which editors on Windows write), which
-/// every reader ignores.
+/// The UTF-8 byte-order mark (which editors on Windows write), which every reader ignores.
+const BOM: &str = "\u{feff}";
+
+/// `text` without a leading UTF-8 byte-order mark.
 pub(crate) fn without_bom(text: &str) -> &str {
-    text.strip_prefix('\u{feff}').unwrap_or(text)
+    text.strip_prefix(BOM).unwrap_or(text)
+}
+
+/// `bytes` without a leading UTF-8 byte-order mark (the readers of files that may be binary).
+pub(crate) fn without_bom_bytes(bytes: &[u8]) -> &[u8] {
+    bytes.strip_prefix(BOM.as_bytes()).unwrap_or(bytes)
+}
+
+/// The OGC `ring` (of WKT, GeoJSON or WKB) without the closing repetition of its first point,
+/// or why it is not a ring: it has no points, or it does not end at its first point (OGC
+/// Simple Features and RFC 7946 require rings to be closed).
+fn ogc_ring<N: Num>(ring: Vec<Point<N>>) -> Result<Vec<Point<N>>, String> {
+    match (ring.first(), ring.last()) {
+        (Some(first), Some(last)) if first == last => Ok(open_ring(ring)),
+        (Some(first), Some(last)) => Err(format!(
+            "a ring of {} points is not closed: it ends at {last}, not at its first point \
+             {first} (OGC rings repeat their first point at the end)",
+            ring.len()
+        )),
+        _ => Err("a ring without points".to_string()),
+    }
 }
 
 /// `ring` without the closing repetition of its first point, if it has one.
@@ -129,22 +156,43 @@ fn open_ring<N: PartialEq>(mut ring: Vec<Point<N>>) -> Vec<Point<N>> {
 
 /// Each of `polys` as the list of its rings, each ring the list of its points closed (its first
 /// point repeated at the end, as OGC requires), a point `point(x, y)` of its coordinates' texts
-/// in `style` (`p/q` only if `fractions`), lists between `brackets` and separated by `sep`.
+/// in `style` (the nearest `f64`s checked by [`nearest::nearest_polygons`], or exactly, `p/q`
+/// only if `fractions`), lists between `brackets` and separated by `sep`.
 fn polygon_texts<N: Num>(
     polys: &[Polygon<N>],
     style: NumberStyle,
     fractions: bool,
     point: impl Fn(String, String) -> String,
+    brackets: [&str; 2],
+    sep: &str,
+) -> Result<Vec<String>, WriteError> {
+    match style {
+        NumberStyle::Decimal => {
+            let rounded = nearest::nearest_polygons(polys)?;
+            ring_texts(&rounded, |f| Ok(f.to_string()), point, brackets, sep)
+        }
+        NumberStyle::Exact => {
+            let text = |n: &N| decimal::exact_coordinate_text(n, fractions).map_err(WriteError);
+            ring_texts(polys, text, point, brackets, sep)
+        }
+    }
+}
+
+/// [`polygon_texts`] of coordinates spelled by `text`: each polygon's text, or the first error
+/// of `text`.
+fn ring_texts<C>(
+    polys: &[Polygon<C>],
+    text: impl Fn(&C) -> Result<String, WriteError>,
+    point: impl Fn(String, String) -> String,
     [open, close]: [&str; 2],
     sep: &str,
 ) -> Result<Vec<String>, WriteError> {
-    let text = |n: &N| decimal::coordinate_text(n, style, fractions).map_err(WriteError);
     let list = |items: Vec<String>| format!("{open}{}{close}", items.join(sep));
-    let ring = |ring: &[Point<N>]| {
+    let ring = |ring: &[Point<C>]| {
         let points = closed(ring).map(|p| Ok(point(text(&p.x)?, text(&p.y)?)));
         Ok(list(points.collect::<Result<_, WriteError>>()?))
     };
-    let polygon = |p: &Polygon<N>| Ok(list(p.rings().map(ring).collect::<Result<_, _>>()?));
+    let polygon = |p: &Polygon<C>| Ok(list(p.rings().map(ring).collect::<Result<_, _>>()?));
     polys.iter().map(polygon).collect()
 }
 
@@ -176,10 +224,28 @@ mod tests {
     }
 
     #[test]
+    fn ogc_rings_must_be_closed() {
+        let p = |x| Point::<Rational>::int(x, 0);
+        assert_eq!(
+            ogc_ring(vec![p(1), p(2), p(3), p(1)]),
+            Ok(vec![p(1), p(2), p(3)])
+        );
+        assert_eq!(
+            ogc_ring(vec![p(1), p(2), p(3)]).unwrap_err(),
+            "a ring of 3 points is not closed: it ends at (3, 0), not at its first point (1, 0) \
+             (OGC rings repeat their first point at the end)"
+        );
+        assert_eq!(
+            ogc_ring::<Rational>(vec![]).unwrap_err(),
+            "a ring without points"
+        );
+    }
+
+    #[test]
     fn readers_work_in_float_mode() {
         let wkt = wkt::read_polygons::<Float>("POLYGON ((0 0, 0.1 0, 0 1, 0 0))").unwrap();
         assert_eq!(wkt[0].exterior[1].x, Float::new(0.1));
-        let json = r#"{"type": "Polygon", "coordinates": [[[0, 0], [0.1, 0], [0, 1]]]}"#;
+        let json = r#"{"type": "Polygon", "coordinates": [[[0, 0], [0.1, 0], [0, 1], [0, 0]]]}"#;
         assert_eq!(geojson::read_polygons::<Float>(json).unwrap(), wkt);
         let curves = yin2_text::read_curves::<Float>("0 0\n0.1 0\n0 1\n").unwrap();
         assert_eq!(curves[0], wkt[0].exterior);

@@ -36,9 +36,12 @@
 //!   keywords are case-sensitive, blanks are spaces or tabs, and CRLF line ends are accepted.
 //!   Line continuation by a trailing `\` is **not** supported: on a `v` or `f` line the `\` is
 //!   reported as a malformed number or index.
+//! * A file without `v` and `f` lines is the mesh without vertices or faces only if it holds
+//!   nothing but comments and blank lines (as the empty set is written); with any other line
+//!   it is an error at that line, since it is not an OBJ mesh (a yin2 text, say).
 //!
-//! The reader never panics; malformed input is a [`ParseError`] with the line and column of the
-//! offending token.
+//! A UTF-8 byte-order mark at the start is ignored. The reader never panics; malformed input
+//! is a [`ParseError`] with the line and column of the offending token.
 //!
 //! Writing ([`write_obj`]) produces triangle meshes with coordinates written exactly: a decimal
 //! when the expansion terminates, `p/q` otherwise. The `p/q` form is this crate's extension of
@@ -46,7 +49,7 @@
 
 use super::decimal::exact_text;
 use super::mesh::{coordinate, used, Mesh};
-use super::ParseError;
+use super::{without_bom, ParseError};
 use crate::kernel::Point3;
 use crate::num::Num;
 use std::fmt::Write;
@@ -54,7 +57,9 @@ use std::fmt::Write;
 /// Read the vertices and faces of an OBJ text (see the [module documentation](self) for what
 /// is accepted).
 pub fn read_obj<N: Num>(text: &str) -> Result<Mesh<N>, ParseError> {
+    let text = without_bom(text);
     let mut mesh = Mesh::default();
+    let mut first_other = None;
     for (number, line) in text.split('\n').enumerate() {
         let content = line.split('#').next().unwrap_or_default();
         let mut tokens = content.split_whitespace();
@@ -65,10 +70,23 @@ pub fn read_obj<N: Num>(text: &str) -> Result<Mesh<N>, ParseError> {
                 mesh.faces.push(face);
                 mesh.face_lines.push(number + 1);
             }
-            _ => {}
+            Some(other) => {
+                first_other.get_or_insert(other);
+            }
+            None => {}
         }
     }
-    Ok(mesh)
+    match first_other {
+        Some(other) if mesh.vertices.is_empty() && mesh.faces.is_empty() => Err(at(
+            text,
+            other,
+            format!(
+                "`{other}`: the file has no vertex (`v`) or face (`f`) lines, so it is not an \
+                 OBJ mesh (an OBJ file of the empty set holds only comments and blank lines)"
+            ),
+        )),
+        _ => Ok(mesh),
+    }
 }
 
 /// The error `message` at `token`, a subslice of `text`.
@@ -209,8 +227,8 @@ fn integer(s: &str) -> Option<Option<i64>> {
 /// The OBJ text of triangle groups: a `# yinset` header line; then, once each and renumbered
 /// in the order of first use, the vertices that some triangle uses (coordinates exact: a
 /// decimal when the expansion terminates, `p/q` otherwise — this crate's extension, read back
-/// by [`read_obj`] but not by other OBJ tools); then for each group an `o NAME` line (line
-/// breaks in the name replaced by spaces) followed by its faces `f a b c`, 1-based.
+/// by [`read_obj`] but not by other OBJ tools); then for each group with triangles an `o NAME`
+/// line (line breaks in the name replaced by spaces) followed by its faces `f a b c`, 1-based.
 ///
 /// # Panics
 /// If a triangle index is out of range of `vertices`.
@@ -227,7 +245,7 @@ pub fn write_obj<N: Num>(vertices: &[Point3<N>], groups: &[(String, Vec<[usize; 
         );
     }
     let mut triangles = triangles.into_iter();
-    for (name, group) in groups {
+    for (name, group) in groups.iter().filter(|(_, g)| !g.is_empty()) {
         let _ = writeln!(out, "o {}", name.replace(['\r', '\n'], " "));
         for [a, b, c] in triangles.by_ref().take(group.len()) {
             let _ = writeln!(out, "f {} {} {}", a + 1, b + 1, c + 1);
@@ -418,12 +436,19 @@ mod tests {
     #[test]
     fn adversarial_inputs_never_panic() {
         assert_eq!(read("").unwrap().vertices.len(), 0);
-        for text in [
-            "\n\r\n\t", "#", "#v 1", "\\", "vv 1 2 3", "F 1 2 3", "é v 1",
-        ] {
+        for text in ["\n\r\n\t", "#", "#v 1", "\u{feff}"] {
             let mesh = read(text).unwrap();
             assert!(mesh.vertices.is_empty() && mesh.faces.is_empty(), "{text}");
         }
+        // Without `v` or `f` lines, any other line is not OBJ: an error at it.
+        for text in ["\\", "vv 1 2 3", "F 1 2 3", "é v 1", "# c\no cube"] {
+            let e = read(text).unwrap_err();
+            assert!(
+                e.message.contains("no vertex (`v`) or face (`f`) lines"),
+                "{text}: {e}"
+            );
+        }
+        assert_eq!(read("# c\n\n  o cube").unwrap_err().column, 3);
         for bad in [
             "v 1e99999999 0 0",
             "v NaN 0 0",
@@ -466,7 +491,7 @@ mod tests {
                 concat!(
                     "# yinset\nv 1{} -5 1/1000000007\nv 1/3 -2/7 0.1\nv 0 0 1\n",
                     "v -0.0009765625 0 0.875\no first\nf 1 2 3\nf 3 2 4\no second name\n",
-                    "f 4 2 1\no empty\n",
+                    "f 4 2 1\n",
                 ),
                 "0".repeat(30)
             )),
@@ -489,6 +514,14 @@ mod tests {
             points(written, &vertices)
         );
         assert_eq!(mesh.face_lines, vec![7, 8, 10]);
+        assert!(
+            text.ends_with("f 4 2 1\n"),
+            "no object without triangles: {text}"
+        );
+        // No triangles at all: only the header comment, which reads back as no mesh.
+        let none = write_obj(&vertices, &[("empty".to_string(), vec![])]);
+        assert_eq!(none, "# yinset\n");
+        assert_eq!(read(&none).unwrap(), Mesh::default());
     }
 
     #[test]

@@ -24,7 +24,7 @@
 //! * One face per line: its vertex count `n ≥ 3` and `n` 0-based vertex indices, counterclockwise
 //!   seen from outside. Numbers after the indices (a face colour) are ignored.
 //! * Everything from a `#` to the end of its line is a comment; blank lines are skipped; text
-//!   after the last face is an error.
+//!   after the last face is an error. A UTF-8 byte-order mark at the start is ignored.
 //!
 //! Malformed input is a [`ParseError`] with the line and column of the offending token.
 //!
@@ -32,7 +32,7 @@
 //! terminates, `p/q` otherwise (read back by [`read_off`] but not by other OFF tools).
 
 use super::mesh::{coordinate, indexed_text, Mesh};
-use super::ParseError;
+use super::{without_bom, ParseError};
 use crate::kernel::Point3;
 use crate::num::Num;
 
@@ -70,6 +70,7 @@ fn ends_early(text: &str, wanted: &str) -> ParseError {
 
 /// Read the vertices and faces of an OFF text (see the [module documentation](self)).
 pub fn read_off<N: Num>(text: &str) -> Result<Mesh<N>, ParseError> {
+    let text = without_bom(text);
     let mut lines = lines(text);
     let first = lines
         .next()

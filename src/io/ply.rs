@@ -19,7 +19,8 @@
 //! Parsed here rather than by the `ply-rs` crate, which is unmaintained and parses ASCII
 //! numbers into `f32`/`f64`. Reading ([`read_ply`]):
 //!
-//! * The header: `ply`, `format ascii 1.0`, `format binary_little_endian 1.0` or
+//! * The header (after a UTF-8 byte-order mark, which is ignored; byte offsets count from
+//!   after it): `ply`, `format ascii 1.0`, `format binary_little_endian 1.0` or
 //!   `format binary_big_endian 1.0`, `comment` and `obj_info` lines, and `element NAME COUNT`
 //!   lines each followed by its `property TYPE NAME` or `property list COUNT_TYPE TYPE NAME`
 //!   lines, up to `end_header`. Types are `char uchar short ushort int uint float double` and
@@ -39,7 +40,7 @@
 //! expansion terminates, `p/q` otherwise (read back by [`read_ply`], not by other PLY tools).
 
 use super::mesh::{binary_coordinate, coordinate, indexed_text, Mesh, MeshError};
-use super::ParseError;
+use super::{without_bom_bytes, ParseError};
 use crate::kernel::Point3;
 use crate::num::Num;
 
@@ -123,6 +124,7 @@ struct Header<'a> {
 
 /// Read a PLY file (see the [module documentation](self)).
 pub fn read_ply<N: Num>(bytes: &[u8]) -> Result<Mesh<N>, MeshError> {
+    let bytes = without_bom_bytes(bytes);
     let header = header(bytes)?;
     let mut body: Box<dyn Body<'_> + '_> = match header.encoding {
         Encoding::Ascii => {

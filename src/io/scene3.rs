@@ -1,8 +1,9 @@
 //! What the pictures of a 3D set (PNG in `super::png3`, [`super::html3`]) draw and from where:
-//! its boundary triangles in `f64` (a picture is not exact), each marked with the orientation
-//! of its glued surface and drawn in that orientation's colour, and an orthographic view given
-//! by azimuth and elevation.
+//! its boundary triangles in the pictures' own `f64` coordinates (a picture is not exact), each
+//! marked with the orientation of its glued surface and drawn in that orientation's colour, and
+//! an orthographic view given by azimuth and elevation.
 
+use super::picture_frame::PictureFrame;
 use crate::kernel::Point3;
 use crate::num::Num;
 use crate::yin3::YinSet3;
@@ -25,13 +26,24 @@ pub struct Facet {
     pub positive: bool,
 }
 
-/// The boundary triangles of `sets`, rounded to `f64`, with their surfaces' orientations.
+/// The boundary triangles of `sets` with their surfaces' orientations, in the pictures' own
+/// coordinates ([`super::picture_frame`]: offsets from the lower corner of the sets' bounding
+/// box over its larger side, computed exactly, then rounded to `f64`), so that sets at any
+/// position and scale are drawn alike.
 pub fn facets<N: Num>(sets: &[&YinSet3<N>]) -> Vec<Facet> {
+    let xyz = |p: &Point3<N>| p.coords().map(N::clone).to_vec();
+    let boxes = sets.iter().filter_map(|s| s.bbox());
+    let picture = PictureFrame::around(boxes.map(|b| (xyz(&b.min), xyz(&b.max))));
+    let place = |p: &Point3<N>| {
+        let [x, y, z] = p.coords();
+        let c = |axis, n| picture.coordinate(axis, n);
+        [c(0, x), c(1, y), c(2, z)]
+    };
     sets.iter()
         .flat_map(|set| {
             set.surfaces().iter().flat_map(move |s| {
                 s.triangles.iter().map(move |&t| Facet {
-                    corners: set.triangles()[t].map(|v| Point3::to_f64(&set.vertices()[v])),
+                    corners: set.triangles()[t].map(|v| place(&set.vertices()[v])),
                     positive: s.positive,
                 })
             })
@@ -204,8 +216,11 @@ mod tests {
         assert_eq!(f.len(), hollow.triangles().len());
         let inner = f.iter().filter(|f| !f.positive).collect::<Vec<_>>();
         assert!(inner.len() >= 12 && f.len() - inner.len() >= 12);
-        assert!(inner
+        // The cavity [1, 2]³ of the box [0, 3]³, placed in the unit box.
+        assert!(inner.iter().all(|f| f
+            .corners
             .iter()
-            .all(|f| f.corners.iter().flatten().all(|&x| x == 1.0 || x == 2.0)));
+            .flatten()
+            .all(|&x| x == 1.0 / 3.0 || x == 2.0 / 3.0)));
     }
 }

@@ -15,7 +15,9 @@
 //!
 //! Reading ([`read_stl`]) tells the two kinds apart by size, not by the first word (binary
 //! files from some tools begin with `solid` too): a file of exactly 84 + 50·n bytes whose
-//! header announces n facets is binary, anything else beginning with `solid` is ASCII.
+//! header announces n facets is binary, anything else beginning with `solid` (after a UTF-8
+//! byte-order mark, which is ignored) is ASCII. Other text is an error saying that an ASCII
+//! STL begins with `solid` (and, if it has facets, that this line is what is missing).
 //!
 //! * **ASCII** is parsed here, not by the `stl_io` crate, which rounds coordinates to `f32`:
 //!   every `vertex x y z` coordinate is read with [`Num::parse`], so `0.1` is exactly 1/10 in
@@ -40,7 +42,7 @@
 
 use super::decimal::exact_text;
 use super::mesh::{binary_coordinate, coordinate, used, Mesh, MeshError, Welder};
-use super::ParseError;
+use super::{without_bom_bytes, ParseError};
 use crate::kernel::Point3;
 use crate::num::Num;
 use std::fmt::Write;
@@ -57,8 +59,10 @@ pub fn read_stl<N: Num>(bytes: &[u8]) -> Result<Mesh<N>, MeshError> {
     if announced.is_some_and(|n| HEADER as u64 + FACET as u64 * n == bytes.len() as u64) {
         return read_binary(bytes);
     }
+    let bytes = without_bom_bytes(bytes);
     let ascii = bytes.trim_ascii_start().starts_with(b"solid");
     match (ascii, announced) {
+        (false, _) if is_text(bytes) => Err(not_ascii_stl(bytes).into()),
         (true, _) => {
             let text = std::str::from_utf8(bytes).map_err(|e| MeshError::Binary {
                 offset: e.valid_up_to(),
@@ -78,6 +82,39 @@ pub fn read_stl<N: Num>(bytes: &[u8]) -> Result<Mesh<N>, MeshError> {
         }),
         (false, Some(n)) => Err(size_mismatch(bytes.len(), n)),
     }
+}
+
+/// True if `bytes` are UTF-8 text without control characters but tabs and line ends (a binary
+/// STL's facet count and coordinates hold other bytes).
+fn is_text(bytes: &[u8]) -> bool {
+    std::str::from_utf8(bytes).is_ok()
+        && bytes
+            .iter()
+            .all(|&b| b >= b' ' || matches!(b, b'\t' | b'\n' | b'\r'))
+}
+
+/// The error of a text (`bytes`, UTF-8) that does not begin with `solid`: what it begins with,
+/// and whether it has the facets of an ASCII STL without its `solid` line.
+fn not_ascii_stl(bytes: &[u8]) -> ParseError {
+    let text = std::str::from_utf8(bytes).unwrap_or_default();
+    let Some(first) = text.split_whitespace().next() else {
+        return ParseError::at(
+            text,
+            text.len(),
+            "the file is empty: an STL file holds a solid",
+        );
+    };
+    let facets = text.split_whitespace().any(|t| t == "facet");
+    let advice = if facets {
+        "; this text has facets: begin it with a line `solid NAME`"
+    } else {
+        ", and it is not a binary STL either (binary STL is not text)"
+    };
+    ParseError::at_token(
+        text,
+        first,
+        format!("an ASCII STL file begins with `solid`, this one with `{first}`{advice}"),
+    )
 }
 
 /// The facet count a binary header announces, if the file is long enough to have one.

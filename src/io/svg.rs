@@ -2,11 +2,14 @@
 //! oriented ones dashed (seed 000 Fig. 13), non-manifold points (vertices shared by two or more
 //! curves, where curves touch) marked with dots.
 //!
-//! Coordinates are written as `f64` (the picture is not exact); the y axis points up. An
+//! Coordinates are the picture's own ([`super::picture_frame`]): offsets from the lower-left
+//! corner of the sets' bounding box over its larger side, computed exactly and then written
+//! as `f64`, so sets at any position and scale are drawn alike; the y axis points up. An
 //! unbounded set is filled to the edge of the picture.
 
 use super::lettering::text_path;
-use crate::kernel::Point;
+use super::picture_frame::PictureFrame;
+use crate::kernel::{BBox, Point};
 use crate::num::Num;
 use crate::yin2::{Curve, YinSet2};
 use std::collections::HashMap;
@@ -36,17 +39,21 @@ pub fn write_svg<N: Num>(layers: &[(&str, &YinSet2<N>)]) -> String {
 
 /// [`write_svg`] with the legend's words set as `lettering` says.
 pub fn write_svg_lettered<N: Num>(layers: &[(&str, &YinSet2<N>)], lettering: Lettering) -> String {
-    let corners = layers
-        .iter()
-        .filter_map(|(_, set)| set.bbox())
-        .flat_map(|b| [b.min.to_f64(), b.max.to_f64()]);
+    let boxes: Vec<BBox<N>> = layers.iter().filter_map(|(_, set)| set.bbox()).collect();
+    let corners = |b: &BBox<N>| {
+        let xy = |p: &Point<N>| vec![p.x.clone(), p.y.clone()];
+        (xy(&b.min), xy(&b.max))
+    };
+    let picture = PictureFrame::around(boxes.iter().map(corners));
+    let place = |p: &Point<N>| [picture.coordinate(0, &p.x), picture.coordinate(1, &p.y)];
+    let corners = boxes.iter().flat_map(|b| [place(&b.min), place(&b.max)]);
     let frame = Frame::around(corners, layers.len());
     let mut svg = frame.header();
     let mut labels = Vec::new();
     for (k, (label, set)) in layers.iter().enumerate() {
         let colour = PALETTE[k % PALETTE.len()];
         let _ = writeln!(svg, "<g><title>{}</title>", escape(label));
-        frame.layer(&mut svg, set, colour);
+        frame.layer(&mut svg, set, colour, &place);
         svg.push_str("</g>\n");
         labels.push((*label, colour));
     }
@@ -136,9 +143,16 @@ impl Frame {
         [a, [b[0], a[1]], b, [a[0], b[1]]]
     }
 
-    /// Draw `set` in `colour`: fill, curves, non-manifold points.
-    fn layer<N: Num>(&self, svg: &mut String, set: &YinSet2<N>, colour: &str) {
-        let ring = |c: &Curve<N>| c.vertices().iter().map(Point::to_f64).collect::<Vec<_>>();
+    /// Draw `set` in `colour`, its points placed in the picture by `place`: fill, curves,
+    /// non-manifold points.
+    fn layer<N: Num>(
+        &self,
+        svg: &mut String,
+        set: &YinSet2<N>,
+        colour: &str,
+        place: &impl Fn(&Point<N>) -> [f64; 2],
+    ) {
+        let ring = |c: &Curve<N>| c.vertices().iter().map(place).collect::<Vec<_>>();
         let window = (!set.is_bounded()).then(|| self.window_ring().to_vec());
         let fill = self.path(window.into_iter().chain(set.curves().iter().map(ring)));
         if !fill.is_empty() {
@@ -176,7 +190,7 @@ impl Frame {
             }
         }
         for p in non_manifold_points(set) {
-            let [x, y] = p.to_f64();
+            let [x, y] = place(&p);
             let _ = writeln!(
                 svg,
                 r#"<circle cx="{:.*}" cy="{:.*}" r="{:.*}" fill="black"/>"#,
@@ -289,7 +303,8 @@ mod tests {
         assert_eq!(non_manifold_points(&set), vec![Point::int(1, 1)]);
         let svg = write_svg(&[("two squares", &set)]);
         assert_eq!(svg.matches("<circle").count(), 1);
-        assert!(svg.contains(r#"cx="1.00000" cy="-1.00000""#), "{svg}");
+        // The point (1, 1) of the box [0, 2]² is halfway across the picture's unit box.
+        assert!(svg.contains(r#"cx="0.50000" cy="-0.50000""#), "{svg}");
         assert!(
             !svg.contains("stroke-dasharray"),
             "no negative curve: {svg}"
@@ -318,6 +333,7 @@ mod tests {
     /// and on the key's line, where the same picture with SVG text (which resvg cannot draw
     /// without fonts) has none.
     #[test]
+    #[cfg(feature = "png")]
     fn the_png_legend_has_its_words() {
         let (a, b) = (rect(0, 0, 10, 10), rect(2, 2, 8, 8));
         let (a, b) = (

@@ -11,14 +11,15 @@
 //! points and line strings. Every error names the 0-based byte offset of the fault.
 //!
 //! Written: a little-endian `MultiPolygon` with each ring closed, coordinates the nearest
-//! `f64` ([`NumberStyle::Decimal`]) or, in [`NumberStyle::Exact`], only coordinates that are
+//! `f64` ([`NumberStyle::Decimal`]; refused where the rounded rings would not bound the set's
+//! rings, see `super::nearest`) or, in [`NumberStyle::Exact`], only coordinates that are
 //! `f64` values (an error names the first that is not).
 //!
 //! Hex: the upper-case hex digits of the bytes ([`to_hex`]), as PostGIS prints geometries and
 //! shapely's `wkb_hex` gives them; [`from_hex`] reads either case.
 
-use super::decimal::nearest_f64;
-use super::{closed, open_ring, without_bom, NumberStyle, Polygon, WriteError};
+use super::nearest::{exact_f64_polygons, nearest_polygons};
+use super::{closed, ogc_ring, without_bom, NumberStyle, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 
@@ -75,18 +76,22 @@ pub fn write_multipolygon<N: Num>(
     polys: &[Polygon<N>],
     style: NumberStyle,
 ) -> Result<Vec<u8>, WriteError> {
+    let polys = match style {
+        NumberStyle::Decimal => nearest_polygons(polys)?,
+        NumberStyle::Exact => exact_f64_polygons(polys)?,
+    };
     let mut out = vec![1];
     out.extend(MULTI_POLYGON.to_le_bytes());
     put_count(&mut out, polys.len(), "polygons")?;
-    for polygon in polys {
+    for polygon in &polys {
         out.push(1);
         out.extend(POLYGON.to_le_bytes());
         put_count(&mut out, polygon.interiors.len() + 1, "rings")?;
         for ring in polygon.rings() {
             put_count(&mut out, ring.len() + 1, "points")?;
             for p in closed(ring) {
-                out.extend(wkb_f64(&p.x, style)?.to_le_bytes());
-                out.extend(wkb_f64(&p.y, style)?.to_le_bytes());
+                out.extend(p.x.to_le_bytes());
+                out.extend(p.y.to_le_bytes());
             }
         }
     }
@@ -135,25 +140,27 @@ pub fn is_hex(bytes: &[u8]) -> bool {
     !trimmed.is_empty() && trimmed.iter().all(u8::is_ascii_hexdigit)
 }
 
+/// True if `bytes` begin as binary WKB does: a byte-order byte (0 or 1), then an OGC geometry
+/// type code 1–7 in that byte order (ISO's Z/M thousands and EWKB's flags allowed); for
+/// messages that suggest `--from wkb`, never to read input as WKB unasked.
+pub fn looks_binary(bytes: &[u8]) -> bool {
+    let [order @ (0 | 1), a, b, c, d, ..] = *bytes else {
+        return false;
+    };
+    let code = if order == 1 {
+        u32::from_le_bytes([a, b, c, d])
+    } else {
+        u32::from_be_bytes([a, b, c, d])
+    };
+    (POINT..=GEOMETRY_COLLECTION).contains(&((code & !(EWKB_Z | EWKB_M | EWKB_SRID)) % 1000))
+}
+
 /// The number `n` of things written as the WKB count (`u32`), or an error if it does not fit.
 fn put_count(out: &mut Vec<u8>, n: usize, what: &str) -> Result<(), WriteError> {
     let n = u32::try_from(n)
         .map_err(|_| WriteError(format!("{n} {what}: more than WKB can count (2^32 - 1)")))?;
     out.extend(n.to_le_bytes());
     Ok(())
-}
-
-/// Coordinate `n` as the `f64` WKB holds: the nearest, or in [`NumberStyle::Exact`] only `n`
-/// itself.
-fn wkb_f64<N: Num>(n: &N, style: NumberStyle) -> Result<f64, WriteError> {
-    let f = nearest_f64(n).map_err(|e| WriteError(format!("{e}, which WKB cannot hold")))?;
-    if style == NumberStyle::Exact && N::from_f64(f).as_ref() != Ok(n) {
-        return Err(WriteError(format!(
-            "the coordinate {n} is not an f64, and WKB holds only f64: write the nearest f64s \
-             (without --exact), or WKT or yin2 exactly"
-        )));
-    }
-    Ok(f)
 }
 
 /// Read one geometry, skipping points and line strings if `skip_lower`; trailing bytes are an
@@ -364,18 +371,7 @@ impl Reader<'_> {
         let points = (0..n)
             .map(|_| self.point(order))
             .collect::<Result<Vec<_>, _>>()?;
-        match (points.first(), points.last()) {
-            (Some(first), Some(last)) if first == last => Ok(open_ring(points)),
-            (Some(first), Some(last)) => {
-                let message = format!(
-                    "a ring of {n} points is not closed: it ends at ({}, {}), not at its first \
-                     point ({}, {})",
-                    last.x, last.y, first.x, first.y
-                );
-                Err(self.error(at, message))
-            }
-            _ => Err(self.error(at, "a ring without points")),
-        }
+        ogc_ring(points).map_err(|message| self.error(at, message))
     }
 
     /// A point of finite coordinates.
@@ -487,6 +483,25 @@ mod tests {
     }
 
     #[test]
+    fn binary_wkb_is_recognized_by_its_first_five_bytes() {
+        assert!(looks_binary(&triangle()));
+        assert!(looks_binary(&[0, 0, 0, 0, 6]));
+        // EWKB with an SRID, and ISO's Z polygon (1003).
+        assert!(looks_binary(&[1, 3, 0, 0, 0x20]));
+        assert!(looks_binary(&[1, 0xEB, 0x03, 0, 0]));
+        let others: [&[u8]; 5] = [
+            b"0 0\n1 0\n",
+            b"",
+            &[1, 8, 0, 0, 0],
+            &[2, 3, 0, 0, 0],
+            &[1, 3, 0],
+        ];
+        for text in others {
+            assert!(!looks_binary(text), "{text:?}");
+        }
+    }
+
+    #[test]
     fn coordinates_are_read_exactly() {
         use W::{F, U};
         let mut parts = vec![U(3), U(1), U(4)];
@@ -537,7 +552,10 @@ mod tests {
             interiors: vec![],
         }];
         let e = write_multipolygon(&polys, NumberStyle::Exact).unwrap_err();
-        assert!(e.0.contains("1/3 is not an f64"), "{e}");
+        assert!(
+            e.0.contains("the coordinate 1/3 of vertex 1 (1/3, 0) of polygon 0's exterior ring is not an f64"),
+            "{e}"
+        );
         let rounded = write_multipolygon(&polys, NumberStyle::Decimal).unwrap();
         let back = read_polygons::<Rational>(&rounded).unwrap();
         assert_eq!(back[0].exterior[1].x.to_f64(), 1.0 / 3.0);

@@ -2,7 +2,9 @@
 //!
 //! Read: `POLYGON`, `MULTIPOLYGON` and `GEOMETRYCOLLECTION`s of them (nested collections too),
 //! each possibly `EMPTY`; keywords are case-insensitive. Coordinates are two numbers per
-//! point, read exactly (decimals, and also fractions `p/q`, which are not OGC WKT). Z and M
+//! point, read exactly (decimals, and also fractions `p/q`, which are not OGC WKT). Rings must
+//! be closed, their first point repeated at the end, as OGC requires (an unclosed ring is an
+//! error at its `(`), and are returned open. Z and M
 //! coordinates and non-polygonal types (`POINT`, `LINESTRING`, …) are rejected with an error,
 //! except by [`read_polygonal_parts`], which skips the points and curves of any geometry.
 //!
@@ -12,7 +14,7 @@
 //! where the expansion does not terminate).
 
 use super::error::line_column;
-use super::{open_ring, polygon_texts, without_bom, NumberStyle, ParseError, Polygon, WriteError};
+use super::{ogc_ring, polygon_texts, without_bom, NumberStyle, ParseError, Polygon, WriteError};
 use crate::kernel::Point;
 use crate::num::Num;
 
@@ -244,14 +246,19 @@ impl<'a> Parser<'a> {
 
     /// `( ring, ring, … )`: the exterior, then the holes.
     fn polygon<N: Num>(&mut self) -> Result<Polygon<N>, ParseError> {
-        let mut rings = self
-            .list(|p| p.list(Self::point).map(open_ring))?
-            .into_iter();
+        let mut rings = self.list(Self::ring)?.into_iter();
         let exterior = rings.next().unwrap_or_default();
         Ok(Polygon {
             exterior,
             interiors: rings.collect(),
         })
+    }
+
+    /// `( point, point, … )`, a closed ring, returned open.
+    fn ring<N: Num>(&mut self) -> Result<Vec<Point<N>>, ParseError> {
+        let at = self.peek().map_or(self.text.len(), |(at, _)| at);
+        let points = self.list(Self::point)?;
+        ogc_ring(points).map_err(|message| self.error(at, message))
     }
 
     /// A multipolygon's part: a polygon, or `EMPTY`.
@@ -318,7 +325,8 @@ mod tests {
         assert_eq!(polys[0].interiors.len(), 1);
         assert_eq!(polys[0].interiors[0][2], Point::new(q("1/10"), q("2")));
         let multi =
-            read(" MultiPolygon (((0 0,1 0,1 1,0 1,0 0)),\n ((5 0, 7 0, 7 2, 5 2)) ) ").unwrap();
+            read(" MultiPolygon (((0 0,1 0,1 1,0 1,0 0)),\n ((5 0, 7 0, 7 2, 5 2, 5 0)) ) ")
+                .unwrap();
         assert_eq!(multi.len(), 2);
         assert_eq!(multi[1].exterior, square(5, 2));
     }
@@ -328,11 +336,11 @@ mod tests {
         assert!(read("POLYGON EMPTY").unwrap().is_empty());
         assert!(read("multipolygon empty").unwrap().is_empty());
         assert!(read("GEOMETRYCOLLECTION EMPTY").unwrap().is_empty());
-        let multi = read("MULTIPOLYGON (EMPTY, ((0 0, 1 0, 1 1)), EMPTY)").unwrap();
+        let multi = read("MULTIPOLYGON (EMPTY, ((0 0, 1 0, 1 1, 0 0)), EMPTY)").unwrap();
         assert_eq!(multi.len(), 1);
         let text =
-            "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1)), GEOMETRYCOLLECTION (POLYGON EMPTY,\
-                    MULTIPOLYGON (((2 2, 3 2, 3 3)), ((4 4, 5 4, 5 5)))))";
+            "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)), GEOMETRYCOLLECTION (POLYGON EMPTY,\
+                    MULTIPOLYGON (((2 2, 3 2, 3 3, 2 2)), ((4 4, 5 4, 5 5, 4 4)))))";
         assert_eq!(read(text).unwrap().len(), 3);
     }
 
@@ -409,13 +417,13 @@ mod tests {
             ("POLYGON Z ((0 0 0, 1 0 0, 0 1 0))", (1, 1), "Z or M"),
             ("polygonm ((0 0 0, 1 0 0, 0 1 0))", (1, 1), "Z or M"),
             (
-                "POLYGON ((0 0, 1 0, 0 1)",
-                (1, 25),
+                "POLYGON ((0 0, 1 0, 0 1, 0 0)",
+                (1, 30),
                 "`(` at line 1, column 9 not closed",
             ),
             (
-                "POLYGON ((0 0, 1 0, 0 1)))",
-                (1, 26),
+                "POLYGON ((0 0, 1 0, 0 1, 0 0)))",
+                (1, 31),
                 "unbalanced parentheses",
             ),
             (
@@ -456,7 +464,17 @@ mod tests {
                 (1, 8),
                 "expected `(`, found the end of the input",
             ),
-            ("MULTIPOLYGON (((0 0, 1 0, 0 1))", (1, 32), "not closed"),
+            ("MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0))", (1, 37), "not closed"),
+            (
+                "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0)),\n ((5 0, 7 0, 7 2)))",
+                (2, 3),
+                "a ring of 3 points is not closed: it ends at (7, 2), not at its first point (5, 0)",
+            ),
+            (
+                "POLYGON ((0 0, 4 0, 4 4, 0 0), (1 1, 2 1, 2 2))",
+                (1, 32),
+                "a ring of 3 points is not closed",
+            ),
             (
                 "MULTIPOLYGON (EMPTY, (EMPTY))",
                 (1, 23),
@@ -518,9 +536,9 @@ mod tests {
     #[test]
     fn polygonal_parts_skip_points_and_curves() {
         let text = "GEOMETRYCOLLECTION (POINT (200 240), LINESTRING (0 0, 1 1), POINT EMPTY, \
-                    POLYGON ((0 0, 1 0, 1 1)), MULTILINESTRING ((0 0, 1 1), (2 2, 3 3)), \
+                    POLYGON ((0 0, 1 0, 1 1, 0 0)), MULTILINESTRING ((0 0, 1 1), (2 2, 3 3)), \
                     COMPOUNDCURVE (CIRCULARSTRING (0 0, 1 1, 2 0), (2 0, 3 0)), \
-                    MULTIPOLYGON (((2 2, 3 2, 3 3))))";
+                    MULTIPOLYGON (((2 2, 3 2, 3 3, 2 2))))";
         let polys = read_polygonal_parts::<Rational>(text).unwrap();
         assert_eq!(polys.len(), 2);
         assert_eq!(polys[1].exterior[0], Point::int(2, 2));
