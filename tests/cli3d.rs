@@ -774,8 +774,6 @@ fn float_mode_messages_show_points_as_f64s() {
         &["through (9330/9001, 1, 869/9001)"],
     );
 }
-}
-
 #[test]
 fn files_without_a_mesh_are_errors_while_the_empty_set_reads_back() {
     let dir = scratch();
