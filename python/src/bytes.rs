@@ -32,7 +32,10 @@ pub fn floats(data: &[u8], width: usize) -> PyResult<Vec<f64>> {
 /// The `i64`s of `data`, as indices (a negative one is refused, naming `what` and its place).
 pub fn indices(data: &[u8], what: &str) -> PyResult<Vec<usize>> {
     if data.len() % 8 != 0 {
-        return Err(error(format!("{} bytes are not whole 64-bit integers", data.len())));
+        return Err(error(format!(
+            "{} bytes are not whole 64-bit integers",
+            data.len()
+        )));
     }
     data.chunks_exact(8)
         .enumerate()

@@ -50,7 +50,9 @@ fn float_mode(eps: Option<f64>) -> PyResult<Option<Tolerance>> {
     match eps {
         None => Ok(None),
         Some(e) if e.is_finite() && e > 0.0 => Ok(Some(Tolerance::new(e))),
-        Some(e) => Err(error(format!("eps = {e}: the tolerance must be finite and positive"))),
+        Some(e) => Err(error(format!(
+            "eps = {e}: the tolerance must be finite and positive"
+        ))),
     }
 }
 
@@ -256,14 +258,22 @@ impl Region2 {
     #[staticmethod]
     #[pyo3(signature = (eps=None))]
     fn empty(eps: Option<f64>) -> PyResult<Region2> {
-        Region2::new_in(eps, || Ok(YinSet2::empty()), |t| Ok(YinSet2::empty().with_ctx(t)))
+        Region2::new_in(
+            eps,
+            || Ok(YinSet2::empty()),
+            |t| Ok(YinSet2::empty().with_ctx(t)),
+        )
     }
 
     /// The whole plane 1̂.
     #[staticmethod]
     #[pyo3(signature = (eps=None))]
     fn full(eps: Option<f64>) -> PyResult<Region2> {
-        Region2::new_in(eps, || Ok(YinSet2::full()), |t| Ok(YinSet2::full().with_ctx(t)))
+        Region2::new_in(
+            eps,
+            || Ok(YinSet2::full()),
+            |t| Ok(YinSet2::full().with_ctx(t)),
+        )
     }
 
     /// True in exact mode.

@@ -73,9 +73,7 @@ fn of_file<N: Num>(data: &[u8], format: &str, ctx: N::Ctx) -> PyResult<YinSet3<N
 /// "stl-binary", "off", "ply"), normals out of the set.
 fn write<N: Num>(set: &YinSet3<N>, format: &str) -> PyResult<Vec<u8>> {
     if set.is_full() {
-        return Err(error(
-            "the whole space has no boundary triangles to write",
-        ));
+        return Err(error("the whole space has no boundary triangles to write"));
     }
     let (v, t) = (set.vertices(), set.triangles());
     Ok(match format {
@@ -86,7 +84,10 @@ fn write<N: Num>(set: &YinSet3<N>, format: &str) -> PyResult<Vec<u8>> {
                 .enumerate()
                 .map(|(k, s)| {
                     let sign = if s.positive { "positive" } else { "negative" };
-                    (format!("surface_{k}_{sign}"), s.triangles.iter().map(|&i| t[i]).collect())
+                    (
+                        format!("surface_{k}_{sign}"),
+                        s.triangles.iter().map(|&i| t[i]).collect(),
+                    )
                 })
                 .collect();
             obj::write_obj(v, &groups).into_bytes()
@@ -108,7 +109,9 @@ fn float_mode(eps: Option<f64>) -> PyResult<Option<Tolerance>> {
     match eps {
         None => Ok(None),
         Some(e) if e.is_finite() && e > 0.0 => Ok(Some(Tolerance::new(e))),
-        Some(e) => Err(error(format!("eps = {e}: the tolerance must be finite and positive"))),
+        Some(e) => Err(error(format!(
+            "eps = {e}: the tolerance must be finite and positive"
+        ))),
     }
 }
 
@@ -137,8 +140,12 @@ impl Solid3 {
         float: Op<Float>,
     ) -> PyResult<Solid3> {
         let set = match (&self.0, &other.0) {
-            (Set3::Exact(a), Set3::Exact(b)) => Set3::Exact(py.detach(|| exact(a, b)).map_err(error)?),
-            (Set3::Float(a), Set3::Float(b)) => Set3::Float(py.detach(|| float(a, b)).map_err(error)?),
+            (Set3::Exact(a), Set3::Exact(b)) => {
+                Set3::Exact(py.detach(|| exact(a, b)).map_err(error)?)
+            }
+            (Set3::Float(a), Set3::Float(b)) => {
+                Set3::Float(py.detach(|| float(a, b)).map_err(error)?)
+            }
             _ => return Err(mixed_modes()),
         };
         Ok(Solid3(set))
@@ -187,7 +194,11 @@ impl Solid3 {
     #[pyo3(signature = (data, format, eps=None))]
     fn from_file(py: Python<'_>, data: &[u8], format: &str, eps: Option<f64>) -> PyResult<Solid3> {
         py.detach(|| {
-            Solid3::new_in(eps, || of_file(data, format, ()), |t| of_file(data, format, t))
+            Solid3::new_in(
+                eps,
+                || of_file(data, format, ()),
+                |t| of_file(data, format, t),
+            )
         })
     }
 
