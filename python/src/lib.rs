@@ -3,6 +3,7 @@
 //! whose arrays cross as little-endian bytes (the Python half turns them into numpy arrays).
 
 mod bytes;
+mod mode;
 mod region;
 mod solid;
 

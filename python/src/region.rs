@@ -3,58 +3,22 @@
 
 use crate::bytes::{float_bytes, floats, location_codes, measure, points2, Measure};
 use crate::error;
+use crate::mode::{all_in, map, on, Modal};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use std::hash::{Hash, Hasher};
 use yinset::io::yin2_text::{self, Yin2Text};
 use yinset::io::{self, geojson, wkb, wkt, NumberStyle, Polygon};
-use yinset::num::{Float, Num, Rational, Tolerance};
+use yinset::num::{Float, Num, Rational};
 use yinset::yin2::{FillRule, YinSet2};
 
-/// A 2D Yin set in either mode.
-#[derive(Clone)]
-enum Set2 {
-    /// Exact rationals.
-    Exact(YinSet2<Rational>),
-    /// `f64` on the grid of ε.
-    Float(YinSet2<Float>),
-}
-
-/// `$body` on the set `$s` of `$set`, whatever its mode.
-macro_rules! on {
-    ($set:expr, $s:ident => $body:expr) => {
-        match $set {
-            Set2::Exact($s) => $body,
-            Set2::Float($s) => $body,
-        }
-    };
-}
-
-/// The set `$body` computed from `$s`, in the mode of `$set`.
-macro_rules! map {
-    ($set:expr, $s:ident => $body:expr) => {
-        match $set {
-            Set2::Exact($s) => Set2::Exact($body),
-            Set2::Float($s) => Set2::Float($body),
-        }
-    };
-}
+/// A 2D Yin set in either mode (float: `f64` on the grid of ε).
+type Set2 = Modal<YinSet2<Rational>, YinSet2<Float>>;
 
 /// A 2D Yin set (regular open semianalytic subset of the plane), exact or float.
 #[pyclass(frozen, module = "yinset._yinset")]
 #[derive(Clone)]
 pub struct Region2(Set2);
-
-/// The mode of a new set: exact for `eps` None, float with tolerance ε otherwise.
-fn float_mode(eps: Option<f64>) -> PyResult<Option<Tolerance>> {
-    match eps {
-        None => Ok(None),
-        Some(e) if e.is_finite() && e > 0.0 => Ok(Some(Tolerance::new(e))),
-        Some(e) => Err(error(format!(
-            "eps = {e}: the tolerance must be finite and positive"
-        ))),
-    }
-}
 
 /// The fill rule named `fill` (None: the rings are a Yin set's boundary, validated).
 fn fill_rule(fill: Option<&str>) -> PyResult<Option<FillRule>> {
@@ -144,18 +108,6 @@ fn of_yin2<N: Num>(text: &str, ctx: N::Ctx) -> PyResult<YinSet2<N>> {
 }
 
 impl Region2 {
-    /// The region built by `exact()` or `float(ε)`, as `eps` asks.
-    fn new_in(
-        eps: Option<f64>,
-        exact: impl FnOnce() -> PyResult<YinSet2<Rational>>,
-        float: impl FnOnce(Tolerance) -> PyResult<YinSet2<Float>>,
-    ) -> PyResult<Region2> {
-        Ok(Region2(match float_mode(eps)? {
-            None => Set2::Exact(exact()?),
-            Some(t) => Set2::Float(float(t)?),
-        }))
-    }
-
     /// The region `op(self, other)`, computed without the GIL; both must be in the same mode.
     fn binary(
         &self,
@@ -164,12 +116,13 @@ impl Region2 {
         exact: fn(&YinSet2<Rational>, &YinSet2<Rational>) -> YinSet2<Rational>,
         float: fn(&YinSet2<Float>, &YinSet2<Float>) -> YinSet2<Float>,
     ) -> PyResult<Region2> {
-        let set = match (&self.0, &other.0) {
-            (Set2::Exact(a), Set2::Exact(b)) => Set2::Exact(py.detach(|| exact(a, b))),
-            (Set2::Float(a), Set2::Float(b)) => Set2::Float(py.detach(|| float(a, b))),
-            _ => return Err(mixed_modes()),
-        };
-        Ok(Region2(set))
+        self.0
+            .pair(
+                &other.0,
+                |a, b| Ok(py.detach(|| exact(a, b))),
+                |a, b| Ok(py.detach(|| float(a, b))),
+            )
+            .map(Region2)
     }
 
     /// The polygons of the set, for an OGC writer (`format` names it if the set is unbounded).
@@ -180,11 +133,6 @@ impl Region2 {
             ))
         })
     }
-}
-
-/// The error of an operation on an exact and a float set.
-pub(crate) fn mixed_modes() -> PyErr {
-    error("the operands mix exact and float mode: build both with eps or both without")
 }
 
 /// The number style of the OGC writers: exact digits (`p/q` where needed) or shortest decimals.
@@ -212,11 +160,12 @@ impl Region2 {
         let xy = floats(xy, 2)?;
         let fill = fill_rule(fill)?;
         py.detach(|| {
-            Region2::new_in(
+            Modal::new_in(
                 eps,
                 || build(rings_of(&xy, &lengths)?, fill, ()),
                 |t| build(rings_of(&xy, &lengths)?, fill, t),
             )
+            .map(Region2)
         })
     }
 
@@ -239,11 +188,12 @@ impl Region2 {
         };
         let fill = fill_rule(fill)?;
         py.detach(|| {
-            Region2::new_in(
+            Modal::new_in(
                 eps,
                 || of_polygons(read_ogc(data, format)?, fill, ()),
                 |t| of_polygons(read_ogc(data, format)?, fill, t),
             )
+            .map(Region2)
         })
     }
 
@@ -251,29 +201,31 @@ impl Region2 {
     #[staticmethod]
     #[pyo3(signature = (text, eps=None))]
     fn from_yin2(py: Python<'_>, text: &str, eps: Option<f64>) -> PyResult<Region2> {
-        py.detach(|| Region2::new_in(eps, || of_yin2(text, ()), |t| of_yin2(text, t)))
+        py.detach(|| Modal::new_in(eps, || of_yin2(text, ()), |t| of_yin2(text, t)).map(Region2))
     }
 
     /// The empty region 0̂.
     #[staticmethod]
     #[pyo3(signature = (eps=None))]
     fn empty(eps: Option<f64>) -> PyResult<Region2> {
-        Region2::new_in(
+        Modal::new_in(
             eps,
             || Ok(YinSet2::empty()),
             |t| Ok(YinSet2::empty().with_ctx(t)),
         )
+        .map(Region2)
     }
 
     /// The whole plane 1̂.
     #[staticmethod]
     #[pyo3(signature = (eps=None))]
     fn full(eps: Option<f64>) -> PyResult<Region2> {
-        Region2::new_in(
+        Modal::new_in(
             eps,
             || Ok(YinSet2::full()),
             |t| Ok(YinSet2::full().with_ctx(t)),
         )
+        .map(Region2)
     }
 
     /// True in exact mode.
@@ -323,30 +275,24 @@ impl Region2 {
 
     /// A ∧ C for each cell C of `cells` (in parallel).
     fn meet_each(&self, py: Python<'_>, cells: Vec<PyRef<'_, Region2>>) -> PyResult<Vec<Region2>> {
-        match &self.0 {
+        let cells: Vec<&Set2> = cells.iter().map(|c| &c.0).collect();
+        let parts: Vec<Set2> = match &self.0 {
             Set2::Exact(a) => {
-                let cells = cells
+                let cells = all_in(cells, Modal::exact)?;
+                py.detach(|| a.meet_each(&cells))
                     .into_iter()
-                    .map(|c| match &c.0 {
-                        Set2::Exact(c) => Ok(c.clone()),
-                        Set2::Float(_) => Err(mixed_modes()),
-                    })
-                    .collect::<PyResult<Vec<_>>>()?;
-                let parts = py.detach(|| a.meet_each(&cells));
-                Ok(parts.into_iter().map(|p| Region2(Set2::Exact(p))).collect())
+                    .map(Set2::Exact)
+                    .collect()
             }
             Set2::Float(a) => {
-                let cells = cells
+                let cells = all_in(cells, Modal::float)?;
+                py.detach(|| a.meet_each(&cells))
                     .into_iter()
-                    .map(|c| match &c.0 {
-                        Set2::Float(c) => Ok(c.clone()),
-                        Set2::Exact(_) => Err(mixed_modes()),
-                    })
-                    .collect::<PyResult<Vec<_>>>()?;
-                let parts = py.detach(|| a.meet_each(&cells));
-                Ok(parts.into_iter().map(|p| Region2(Set2::Float(p))).collect())
+                    .map(Set2::Float)
+                    .collect()
             }
-        }
+        };
+        Ok(parts.into_iter().map(Region2).collect())
     }
 
     /// Set equality (the same open set); false across modes.
@@ -360,11 +306,13 @@ impl Region2 {
 
     /// ρ(A) ⊆ ρ(B).
     fn is_subset(&self, py: Python<'_>, other: &Region2) -> PyResult<bool> {
-        match (&self.0, &other.0) {
-            (Set2::Exact(a), Set2::Exact(b)) => Ok(py.detach(|| a.is_subset(b))),
-            (Set2::Float(a), Set2::Float(b)) => Ok(py.detach(|| a.is_subset(b))),
-            _ => Err(mixed_modes()),
-        }
+        self.0
+            .pair(
+                &other.0,
+                |a, b| Ok(py.detach(|| a.is_subset(b))),
+                |a, b| Ok(py.detach(|| a.is_subset(b))),
+            )
+            .map(Modal::value)
     }
 
     /// A hash consistent with `equals`.

@@ -4,32 +4,16 @@
 
 use crate::bytes::{float_bytes, floats, indices, location_codes, measure, points3, Measure};
 use crate::error;
-use crate::region::mixed_modes;
+use crate::mode::{map, on, Modal};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use yinset::io::mesh::Mesh;
 use yinset::io::{obj, off, ply, stl};
-use yinset::num::{Float, Num, Rational, Tolerance};
+use yinset::num::{Float, Num, Rational};
 use yinset::yin3::{Yin3Error, YinSet3};
 
-/// A 3D Yin set in either mode.
-#[derive(Clone)]
-enum Set3 {
-    /// Exact rationals.
-    Exact(YinSet3<Rational>),
-    /// `f64` vertices, operations exact on them and rounded.
-    Float(YinSet3<Float>),
-}
-
-/// `$body` on the set `$s` of `$set`, whatever its mode.
-macro_rules! on {
-    ($set:expr, $s:ident => $body:expr) => {
-        match $set {
-            Set3::Exact($s) => $body,
-            Set3::Float($s) => $body,
-        }
-    };
-}
+/// A 3D Yin set in either mode (float: `f64` vertices, operations exact on them and rounded).
+type Set3 = Modal<YinSet3<Rational>, YinSet3<Float>>;
 
 /// A 3D Yin set (regular open semianalytic subset of space), exact or float.
 #[pyclass(frozen, module = "yinset._yinset")]
@@ -104,33 +88,10 @@ fn write<N: Num>(set: &YinSet3<N>, format: &str) -> PyResult<Vec<u8>> {
     })
 }
 
-/// The float tolerance `eps` asks for (None: exact mode).
-fn float_mode(eps: Option<f64>) -> PyResult<Option<Tolerance>> {
-    match eps {
-        None => Ok(None),
-        Some(e) if e.is_finite() && e > 0.0 => Ok(Some(Tolerance::new(e))),
-        Some(e) => Err(error(format!(
-            "eps = {e}: the tolerance must be finite and positive"
-        ))),
-    }
-}
-
 /// A binary operation of either mode, fallible in float mode.
 type Op<N> = fn(&YinSet3<N>, &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error>;
 
 impl Solid3 {
-    /// The solid built by `exact()` or `float(ε)`, as `eps` asks.
-    fn new_in(
-        eps: Option<f64>,
-        exact: impl FnOnce() -> PyResult<YinSet3<Rational>>,
-        float: impl FnOnce(Tolerance) -> PyResult<YinSet3<Float>>,
-    ) -> PyResult<Solid3> {
-        Ok(Solid3(match float_mode(eps)? {
-            None => Set3::Exact(exact()?),
-            Some(t) => Set3::Float(float(t)?),
-        }))
-    }
-
     /// `op(self, other)` without the GIL; both in the same mode.
     fn binary(
         &self,
@@ -139,16 +100,13 @@ impl Solid3 {
         exact: Op<Rational>,
         float: Op<Float>,
     ) -> PyResult<Solid3> {
-        let set = match (&self.0, &other.0) {
-            (Set3::Exact(a), Set3::Exact(b)) => {
-                Set3::Exact(py.detach(|| exact(a, b)).map_err(error)?)
-            }
-            (Set3::Float(a), Set3::Float(b)) => {
-                Set3::Float(py.detach(|| float(a, b)).map_err(error)?)
-            }
-            _ => return Err(mixed_modes()),
-        };
-        Ok(Solid3(set))
+        self.0
+            .pair(
+                &other.0,
+                |a, b| py.detach(|| exact(a, b)).map_err(error),
+                |a, b| py.detach(|| float(a, b)).map_err(error),
+            )
+            .map(Solid3)
     }
 }
 
@@ -181,11 +139,12 @@ impl Solid3 {
         }
         let faces: Vec<Vec<usize>> = flat.chunks_exact(width).map(<[usize]>::to_vec).collect();
         py.detach(|| {
-            Solid3::new_in(
+            Modal::new_in(
                 eps,
                 || build(points3(&xyz)?, faces.clone(), ()),
                 |t| build(points3(&xyz)?, faces.clone(), t),
             )
+            .map(Solid3)
         })
     }
 
@@ -194,11 +153,12 @@ impl Solid3 {
     #[pyo3(signature = (data, format, eps=None))]
     fn from_file(py: Python<'_>, data: &[u8], format: &str, eps: Option<f64>) -> PyResult<Solid3> {
         py.detach(|| {
-            Solid3::new_in(
+            Modal::new_in(
                 eps,
                 || of_file(data, format, ()),
                 |t| of_file(data, format, t),
             )
+            .map(Solid3)
         })
     }
 
@@ -206,14 +166,14 @@ impl Solid3 {
     #[staticmethod]
     #[pyo3(signature = (eps=None))]
     fn empty(eps: Option<f64>) -> PyResult<Solid3> {
-        Solid3::new_in(eps, || Ok(YinSet3::empty()), |_| Ok(YinSet3::empty()))
+        Modal::new_in(eps, || Ok(YinSet3::empty()), |_| Ok(YinSet3::empty())).map(Solid3)
     }
 
     /// The whole space 1̂.
     #[staticmethod]
     #[pyo3(signature = (eps=None))]
     fn full(eps: Option<f64>) -> PyResult<Solid3> {
-        Solid3::new_in(eps, || Ok(YinSet3::full()), |_| Ok(YinSet3::full()))
+        Modal::new_in(eps, || Ok(YinSet3::full()), |_| Ok(YinSet3::full())).map(Solid3)
     }
 
     /// True in exact mode.
@@ -249,10 +209,7 @@ impl Solid3 {
 
     /// A′.
     fn complement(&self, py: Python<'_>) -> Solid3 {
-        Solid3(py.detach(|| match &self.0 {
-            Set3::Exact(s) => Set3::Exact(s.complement()),
-            Set3::Float(s) => Set3::Float(s.complement()),
-        }))
+        Solid3(py.detach(|| map!(&self.0, s => s.complement())))
     }
 
     /// Set equality; false across modes.

@@ -15,7 +15,9 @@ def stubbed():
     for node in tree.body:
         if isinstance(node, ast.ClassDef):
             names.add(node.name)
-            classes[node.name] = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+            inherited = set().union(*(classes.get(b.id, set()) for b in node.bases))
+            own = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+            classes[node.name] = own | inherited
         elif isinstance(node, ast.AnnAssign):
             names.add(node.target.id)
     return names, classes
@@ -25,7 +27,8 @@ def public(cls):
     """The methods and properties a user calls: no private names, the operators included."""
     return {
         n
-        for n, v in vars(cls).items()
+        for c in cls.__mro__[:-1]
+        for n, v in vars(c).items()
         if (not n.startswith("_") or n.startswith("__") and n != "__init__" and callable(v))
         and n not in {"__module__", "__doc__", "__slots__", "__repr__", "__hash__"}
         and (callable(v) or isinstance(v, (property, classmethod)))

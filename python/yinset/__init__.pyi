@@ -2,7 +2,7 @@
 
 import os
 from fractions import Fraction
-from typing import Iterable, List, Optional, Sequence, Tuple, Union
+from typing import Iterable, List, Optional, Sequence, Tuple, TypeVar, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -21,7 +21,35 @@ class YinsetError(ValueError):
     """Invalid input (the kernel's message names the ring, face or vertex), or an operation
     float mode cannot represent."""
 
-class Region:
+_T = TypeVar("_T", bound="_Algebra")
+
+class _Algebra:
+    """The Boolean algebra of Region and Solid (yinset._algebra.Algebra)."""
+
+    @property
+    def exact(self) -> bool:
+        """True in exact mode."""
+    @property
+    def bounded(self) -> bool:
+        """True if the closure is compact."""
+    def __and__(self: _T, other: _T) -> _T:
+        """A ∧ B."""
+    def __or__(self: _T, other: _T) -> _T:
+        """A ∨ B."""
+    def __sub__(self: _T, other: _T) -> _T:
+        """A ∧ B′."""
+    def __xor__(self: _T, other: _T) -> _T:
+        """(A ∧ B′) ∨ (A′ ∧ B)."""
+    def __invert__(self: _T) -> _T:
+        """A′."""
+    def __eq__(self, other: object) -> bool:
+        """Set equality."""
+    def __bool__(self) -> bool:
+        """False for the empty set."""
+    def validate(self) -> None:
+        """Raise YinsetError if the boundary is invalid."""
+
+class Region(_Algebra):
     """A 2D Yin set: exact by default, float mode with ``eps``."""
 
     def __init__(
@@ -57,29 +85,12 @@ class Region:
     def full(cls, *, eps: Optional[float] = None) -> "Region":
         """The whole plane."""
     @property
-    def exact(self) -> bool:
-        """True in exact mode."""
-    @property
     def eps(self) -> Optional[float]:
         """The tolerance in float mode."""
-    def __and__(self, other: "Region") -> "Region":
-        """A ∧ B."""
-    def __or__(self, other: "Region") -> "Region":
-        """A ∨ B."""
-    def __sub__(self, other: "Region") -> "Region":
-        """A ∧ B′."""
-    def __xor__(self, other: "Region") -> "Region":
-        """(A ∧ B′) ∨ (A′ ∧ B)."""
-    def __invert__(self) -> "Region":
-        """A′."""
-    def __eq__(self, other: object) -> bool:
-        """Set equality."""
     def __le__(self, other: "Region") -> bool:
         """Subset."""
     def __hash__(self) -> int:
         """A hash consistent with set equality."""
-    def __bool__(self) -> bool:
-        """False for the empty region."""
     def meet_each(self, cells: Sequence["Region"]) -> List["Region"]:
         """[A ∧ C for C in cells], in parallel."""
     @property
@@ -91,13 +102,8 @@ class Region:
     @property
     def homology(self) -> Tuple[int, int]:
         """Homological (b0, b1)."""
-    @property
-    def bounded(self) -> bool:
-        """True if the closure is compact."""
     def locate(self, points: ArrayLike) -> "np.ndarray":
         """int8 location codes of an (n, 2) array."""
-    def validate(self) -> None:
-        """Raise YinsetError if the boundary is invalid."""
     def curves(self) -> List["np.ndarray"]:
         """The boundary curves as (n, 2) float64 arrays."""
     def to_wkt(self, *, exact: bool = False) -> str:
@@ -109,7 +115,7 @@ class Region:
     def to_shapely(self) -> object:
         """shapely MultiPolygon of a bounded region."""
 
-class Solid:
+class Solid(_Algebra):
     """A 3D Yin set: exact by default, float mode with ``eps``."""
 
     def __init__(self, vertices: ArrayLike, faces: ArrayLike, *, eps: Optional[float] = None) -> None:
@@ -132,37 +138,15 @@ class Solid:
     def full(cls, *, eps: Optional[float] = None) -> "Solid":
         """The whole space."""
     @property
-    def exact(self) -> bool:
-        """True in exact mode."""
-    def __and__(self, other: "Solid") -> "Solid":
-        """A ∧ B."""
-    def __or__(self, other: "Solid") -> "Solid":
-        """A ∨ B."""
-    def __sub__(self, other: "Solid") -> "Solid":
-        """A ∧ B′."""
-    def __xor__(self, other: "Solid") -> "Solid":
-        """(A ∧ B′) ∨ (A′ ∧ B)."""
-    def __invert__(self) -> "Solid":
-        """A′."""
-    def __eq__(self, other: object) -> bool:
-        """Set equality."""
-    def __bool__(self) -> bool:
-        """False for the empty solid."""
-    @property
     def volume(self) -> Optional[Measure]:
         """Fraction in exact mode, float in float mode, None if unbounded."""
     @property
     def betti(self) -> Tuple[int, int, int]:
         """(b0, b1, b2)."""
-    @property
-    def bounded(self) -> bool:
-        """True if the closure is compact."""
     def surfaces(self) -> List[Tuple["np.ndarray", bool, int]]:
         """Glued surfaces: (triangle indices, positive, genus)."""
     def locate(self, points: ArrayLike) -> "np.ndarray":
         """int8 location codes of an (n, 3) array."""
-    def validate(self) -> None:
-        """Raise YinsetError if the boundary is invalid."""
     def arrays(self) -> Tuple["np.ndarray", "np.ndarray"]:
         """(vertices (n, 3) float64, triangles (m, 3) int64)."""
     def to_trimesh(self) -> object:

@@ -3,15 +3,11 @@
 import numpy as np
 
 from . import _arrays
+from ._algebra import Algebra
 from ._yinset import Region2, YinsetError
 
 
-def _native(other):
-    """The native set of an operand, or None for anything but a Region."""
-    return other._set if isinstance(other, Region) else None
-
-
-class Region:
+class Region(Algebra):
     """A 2D Yin set: a regular open region of the plane, exact by default.
 
     ``Region(rings, eps=None, fill=None)`` builds it from a list of rings, each an (n, 2)
@@ -22,7 +18,7 @@ class Region:
     they cover under that rule. ``eps=None`` is exact mode; a positive ``eps`` is float mode.
     """
 
-    __slots__ = ("_set",)
+    __slots__ = ()
 
     def __init__(self, rings=(), *, eps=None, fill=None):
         if isinstance(rings, np.ndarray) and rings.ndim == 2:
@@ -30,13 +26,6 @@ class Region:
         arrays = [_open(_arrays.points(r, 2, f"ring {k}")) for k, r in enumerate(rings)]
         xy = b"".join(a.tobytes() for a in arrays)
         self._set = Region2.from_rings(xy, [len(a) for a in arrays], eps, fill)
-
-    @classmethod
-    def _wrap(cls, native):
-        """A Region around a native ``Region2``."""
-        r = cls.__new__(cls)
-        r._set = native
-        return r
 
     @classmethod
     def from_wkt(cls, text, *, eps=None, fill=None):
@@ -79,56 +68,18 @@ class Region:
         return cls._wrap(Region2.full(eps))
 
     @property
-    def exact(self):
-        """True in exact mode."""
-        return self._set.exact
-
-    @property
     def eps(self):
         """The tolerance in float mode, None in exact mode."""
         return self._set.eps
 
-    def __and__(self, other):
-        """A ∧ B: the interior of the intersection."""
-        o = _native(other)
-        return NotImplemented if o is None else Region._wrap(self._set.meet(o))
-
-    def __or__(self, other):
-        """A ∨ B: the interior of the closure of the union."""
-        o = _native(other)
-        return NotImplemented if o is None else Region._wrap(self._set.join(o))
-
-    def __sub__(self, other):
-        """A ∧ B′."""
-        o = _native(other)
-        return NotImplemented if o is None else Region._wrap(self._set.difference(o))
-
-    def __xor__(self, other):
-        """(A ∧ B′) ∨ (A′ ∧ B)."""
-        o = _native(other)
-        return NotImplemented if o is None else Region._wrap(self._set.symmetric_difference(o))
-
-    def __invert__(self):
-        """A′: the interior of the complement."""
-        return Region._wrap(self._set.complement())
-
-    def __eq__(self, other):
-        """Set equality (False across modes)."""
-        o = _native(other)
-        return NotImplemented if o is None else self._set.equals(o)
-
     def __le__(self, other):
         """Subset: every point of A is in B."""
-        o = _native(other)
+        o = self._operand(other)
         return NotImplemented if o is None else self._set.is_subset(o)
 
     def __hash__(self):
         """A hash consistent with set equality."""
         return hash(self._set.hash())
-
-    def __bool__(self):
-        """False for the empty region."""
-        return not self._set.is_empty()
 
     def __repr__(self):
         mode = "exact" if self.exact else f"eps={self.eps!r}"
@@ -143,7 +94,7 @@ class Region:
             if not isinstance(c, Region):
                 raise YinsetError(f"cell {k} is a {type(c).__name__}, not a Region")
             natives.append(c._set)
-        return [Region._wrap(p) for p in self._set.meet_each(natives)]
+        return [self._wrap(p) for p in self._set.meet_each(natives)]
 
     @property
     def area(self):
@@ -160,19 +111,10 @@ class Region:
         """(b0, b1): the ranks of the homology groups (holes touching at a point are one)."""
         return self._set.homology()
 
-    @property
-    def bounded(self):
-        """True if the closure is compact."""
-        return self._set.is_bounded()
-
     def locate(self, points):
         """The location codes (int8: INSIDE 1, ON_BOUNDARY 0, OUTSIDE -1) of an (n, 2) array."""
         a = _arrays.points(points, 2, "points")
         return _arrays.located(self._set.locate(a.tobytes()))
-
-    def validate(self):
-        """Check the boundary with the kernel's validator; raise YinsetError if invalid."""
-        self._set.validate()
 
     def curves(self):
         """The boundary curves as (n, 2) float64 arrays, interior on the left (exact vertices

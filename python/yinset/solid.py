@@ -5,14 +5,10 @@ import os
 import numpy as np
 
 from . import _arrays
+from ._algebra import Algebra
 from ._yinset import Solid3, YinsetError
 
 _FORMATS = {".obj": "obj", ".stl": "stl", ".off": "off", ".ply": "ply"}
-
-
-def _native(other):
-    """The native set of an operand, or None for anything but a Solid."""
-    return other._set if isinstance(other, Solid) else None
 
 
 def _format(path, format):
@@ -25,7 +21,7 @@ def _format(path, format):
     return _FORMATS[ext]
 
 
-class Solid:
+class Solid(Algebra):
     """A 3D Yin set: a regular open region of space, exact by default.
 
     ``Solid(vertices, faces, eps=None)`` builds it from an (n, 3) array of vertices and an
@@ -35,7 +31,7 @@ class Solid:
     mode (exact on the float64 values, results rounded to float64).
     """
 
-    __slots__ = ("_set",)
+    __slots__ = ()
 
     def __init__(self, vertices, faces, *, eps=None):
         xyz = _arrays.points(vertices, 3, "vertices")
@@ -45,13 +41,6 @@ class Solid:
         f = np.ascontiguousarray(f, dtype="<i8")
         width = f.shape[1] if f.size else 3
         self._set = Solid3.from_arrays(xyz.tobytes(), f.tobytes(), width, eps)
-
-    @classmethod
-    def _wrap(cls, native):
-        """A Solid around a native ``Solid3``."""
-        s = cls.__new__(cls)
-        s._set = native
-        return s
 
     @classmethod
     def from_trimesh(cls, mesh, *, eps=None):
@@ -80,46 +69,6 @@ class Solid:
         """The whole space."""
         return cls._wrap(Solid3.full(eps))
 
-    @property
-    def exact(self):
-        """True in exact mode."""
-        return self._set.exact
-
-    def __and__(self, other):
-        """A ∧ B."""
-        o = _native(other)
-        return NotImplemented if o is None else Solid._wrap(self._set.meet(o))
-
-    def __or__(self, other):
-        """A ∨ B."""
-        o = _native(other)
-        return NotImplemented if o is None else Solid._wrap(self._set.join(o))
-
-    def __sub__(self, other):
-        """A ∧ B′."""
-        o = _native(other)
-        return NotImplemented if o is None else Solid._wrap(self._set.difference(o))
-
-    def __xor__(self, other):
-        """(A ∧ B′) ∨ (A′ ∧ B)."""
-        o = _native(other)
-        return NotImplemented if o is None else Solid._wrap(self._set.symmetric_difference(o))
-
-    def __invert__(self):
-        """A′."""
-        return Solid._wrap(self._set.complement())
-
-    def __eq__(self, other):
-        """Set equality (False across modes)."""
-        o = _native(other)
-        return NotImplemented if o is None else self._set.equals(o)
-
-    __hash__ = None
-
-    def __bool__(self):
-        """False for the empty solid."""
-        return not self._set.is_empty()
-
     def __repr__(self):
         mode = "exact" if self.exact else "float"
         return f"<Solid {mode}, betti {self.betti}, volume {self.volume}>"
@@ -134,11 +83,6 @@ class Solid:
         """(b0, b1, b2): components, tunnels, cavities."""
         return self._set.betti()
 
-    @property
-    def bounded(self):
-        """True if the closure is compact."""
-        return self._set.is_bounded()
-
     def surfaces(self):
         """The glued surfaces: (triangle indices into ``arrays()[1]``, positive, genus) each."""
         return [(np.array(t, dtype=np.int64), p, g) for t, p, g in self._set.surfaces()]
@@ -147,10 +91,6 @@ class Solid:
         """The location codes (int8: INSIDE 1, ON_BOUNDARY 0, OUTSIDE -1) of an (n, 3) array."""
         a = _arrays.points(points, 3, "points")
         return _arrays.located(self._set.locate(a.tobytes()))
-
-    def validate(self):
-        """Check the boundary (the kernel's invariants I1–I4); raise YinsetError if invalid."""
-        self._set.validate()
 
     def arrays(self):
         """(vertices (n, 3) float64, nearest to the exact ones; triangles (m, 3) int64,
