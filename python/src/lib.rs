@@ -9,6 +9,10 @@ mod solid;
 
 use pyo3::prelude::*;
 
+/// The allocator of everything the kernel allocates (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 pyo3::create_exception!(
     _yinset,
     YinsetError,
