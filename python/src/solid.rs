@@ -61,21 +61,7 @@ fn write<N: Num>(set: &YinSet3<N>, format: &str) -> PyResult<Vec<u8>> {
     }
     let (v, t) = (set.vertices(), set.triangles());
     Ok(match format {
-        "obj" => {
-            let groups: Vec<(String, Vec<[usize; 3]>)> = set
-                .surfaces()
-                .iter()
-                .enumerate()
-                .map(|(k, s)| {
-                    let sign = if s.positive { "positive" } else { "negative" };
-                    (
-                        format!("surface_{k}_{sign}"),
-                        s.triangles.iter().map(|&i| t[i]).collect(),
-                    )
-                })
-                .collect();
-            obj::write_obj(v, &groups).into_bytes()
-        }
+        "obj" => obj::write_obj(v, &obj::surface_groups(set)).into_bytes(),
         "stl" => stl::write_stl_ascii(v, t).into_bytes(),
         "stl-binary" => stl::write_stl_binary(v, t).map_err(error)?,
         "off" => off::write_off(v, t).into_bytes(),

@@ -5,7 +5,7 @@
 use super::decode::WHOLE_SPACE;
 use super::error::CliError;
 use super::format::{Dimension, Format};
-use crate::io::obj::write_obj;
+use crate::io::obj::{surface_groups, write_obj};
 use crate::io::off::write_off;
 use crate::io::ply::write_ply;
 use crate::io::stl::{write_stl_ascii, write_stl_binary};
@@ -94,17 +94,7 @@ fn obj<N: Num>(set: &YinSet3<N>) -> String {
     if set.is_empty() {
         return "# yinset: the empty set (no boundary)\n".to_string();
     }
-    let groups: Vec<(String, Vec<[usize; 3]>)> = set
-        .surfaces()
-        .iter()
-        .enumerate()
-        .map(|(k, s)| {
-            let sign = if s.positive { "positive" } else { "negative" };
-            let triangles = s.triangles.iter().map(|&t| set.triangles()[t]).collect();
-            (format!("surface_{k}_{sign}"), triangles)
-        })
-        .collect();
-    let text = write_obj(set.vertices(), &groups);
+    let text = write_obj(set.vertices(), &surface_groups(set));
     if set.is_bounded() {
         text
     } else {

@@ -52,6 +52,7 @@ use super::mesh::{coordinate, used, Mesh};
 use super::{without_bom, ParseError};
 use crate::kernel::Point3;
 use crate::num::Num;
+use crate::yin3::YinSet3;
 use std::fmt::Write;
 
 /// Read the vertices and faces of an OBJ text (see the [module documentation](self) for what
@@ -222,6 +223,19 @@ fn integer(s: &str) -> Option<Option<i64>> {
         return None;
     }
     Some(s.parse().ok())
+}
+
+/// The triangle groups of a 3D set's OBJ text: one object `surface_K_positive` or
+/// `surface_K_negative` per glued surface (seed 003 Def. 7.1), its triangles' normals out of
+/// the set.
+pub fn surface_groups<N: Num>(set: &YinSet3<N>) -> Vec<(String, Vec<[usize; 3]>)> {
+    (set.surfaces().iter().enumerate())
+        .map(|(k, s)| {
+            let sign = if s.positive { "positive" } else { "negative" };
+            let triangles = s.triangles.iter().map(|&t| set.triangles()[t]).collect();
+            (format!("surface_{k}_{sign}"), triangles)
+        })
+        .collect()
 }
 
 /// The OBJ text of triangle groups: a `# yinset` header line; then, once each and renumbered
