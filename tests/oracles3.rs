@@ -22,7 +22,7 @@ use common::cells::{full_mask, Cells};
 use common::cells3::{Grid3, Oracle3, CELL_ORACLE3};
 use common::gen3::{features3, shares3, strategies, Shape3, CONTACT_MASKS};
 use common::geom3::{common_den, ray_count, scale, IntGeom, Rng};
-use common::laws::{self, law, ok, BinaryOut, CellOracle, Res, Tally};
+use common::laws::{self, law, ok, BinaryOut, Res, Tally};
 use common::q;
 use common::rotation::Rot;
 use common::runner::{cases3, run, run_split};
@@ -376,20 +376,12 @@ fn exact_volume_identities() {
 #[test]
 fn cell_checks_reject_wrong_results() {
     let g = Grid3::cube(2);
-    let one = Cells::new(1, false);
     let cases = [
         (Cells::new(1 | 1 << 7, false), CELL_ORACLE3[1]),
         (Cells::new(1 | 1 << 1, false), CELL_ORACLE3[2]),
         (Cells::new(1 << 1, false), CELL_ORACLE3[3]),
     ];
-    for (other, law) in cases {
-        let y = g.yin(other);
-        let mut t = Tally::default();
-        let e = laws::cells_check(&mut t, &g, one, &y, &g.yin(one), "y").unwrap_err();
-        assert!(e.contains(CELL_ORACLE3[0]), "{e}");
-        let e = g.invariants(&mut t, one, &y, "y").unwrap_err();
-        assert!(e.contains(law), "{other:?} should fail '{law}': {e}");
-    }
+    common::assert_cell_checks_fail(&g, |s| g.yin(s), Cells::new(1, false), &cases);
 }
 
 /// The cell oracle is not vacuous: hand-counted Betti numbers of configurations the kernel must

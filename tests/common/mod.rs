@@ -66,6 +66,25 @@ pub fn valid(y: &Y) -> &Y {
     y
 }
 
+/// Assert that a cell oracle's checks can fail: for the mask `s` and each `(other, law)`, the
+/// set of `other` (built by `yin`) fails `==` against the set of `s`, and its invariants fail
+/// `law` against the mask `s`.
+pub fn assert_cell_checks_fail<O: laws::CellOracle>(
+    o: &O,
+    yin: impl Fn(cells::Cells) -> O::Set,
+    s: cells::Cells,
+    cases: &[(cells::Cells, &str)],
+) {
+    for &(other, law) in cases {
+        let y = yin(other);
+        let mut t = laws::Tally::default();
+        let e = laws::cells_check(&mut t, o, s, &y, &yin(s), "y").unwrap_err();
+        assert!(e.contains(O::SAME), "{e}");
+        let e = o.invariants(&mut t, s, &y, "y").unwrap_err();
+        assert!(e.contains(law), "{other:?} should fail '{law}': {e}");
+    }
+}
+
 pub mod gen;
 pub mod gen3;
 pub mod runner;
