@@ -12,16 +12,17 @@
 //! squares, or squares cut into triangles by their diagonals), optionally with the exterior of
 //! the window: closed under complement, meet and join, where those are bitwise on masks. The
 //! expected set of every mask is traced from the mask independently of the kernel's operations
-//! (tests/common/cells.rs) and only validated by `from_curves`.
+//! (tests/kit/src/cells.rs) and only validated by `from_curves`; in 3D, the unions of the unit
+//! cells of a small grid, whose expected sets are built from the masks' faces
+//! (tests/kit/src/cells3.rs).
 
-mod cells3;
 #[path = "../tests/common/mod.rs"]
 mod common;
-mod laws3;
 
-use cells3::{Grid3, Y3};
 use common::cells::{full_mask, Affine, Cells, Complex};
-use common::laws::{self, Res, Tally};
+use common::cells3::{Grid3, FEATURES3};
+use common::laws::{self, CellOracle, Res, Tally};
+use common::rotation::{Rot, GENERAL};
 use common::Y;
 use std::collections::HashSet;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -30,6 +31,7 @@ use std::time::Instant;
 use yinset::kernel::{Point, Point3};
 use yinset::num::{Num, Rational};
 use yinset::yin2::YinSet2;
+use yinset_testkit::Y3;
 
 /// True for the full run (`YINSET_PROOFS=full`).
 fn full() -> bool {
@@ -98,7 +100,7 @@ impl Universe for Planar {
 
     fn unary(&self, t: &mut Tally, a: Cells) -> Res {
         let ya = self.get(a);
-        laws::cells_invariants(t, &self.cx, a, ya, "a (oracle input)")?;
+        self.cx.invariants(t, a, ya, "a (oracle input)")?;
         laws::unary(t, ya)?;
         let c = laws::ok(ya.complement(), "a'")?;
         let n = self.cx.len();
@@ -122,8 +124,6 @@ impl Universe for Planar {
 struct Spatial {
     g: Grid3,
     expected: Vec<Y3>,
-    /// Centres of every open cell of the grid's complex, and a point outside.
-    probes: Vec<Point3<Rational>>,
     /// Cube centres and a point outside (membership oracle).
     cube_probes: Vec<Point3<Rational>>,
 }
@@ -141,11 +141,10 @@ impl Spatial {
             "oracle not injective on {}",
             g.name
         );
-        let (probes, cube_probes) = (g.probes(), g.cube_probes());
+        let cube_probes = g.cube_probes();
         Spatial {
             g,
             expected,
-            probes,
             cube_probes,
         }
     }
@@ -170,14 +169,14 @@ impl Universe for Spatial {
     }
 
     fn unary(&self, t: &mut Tally, a: Cells) -> Res {
-        let (g, p) = (&self.g, &self.probes[..]);
+        let g = &self.g;
         let ya = self.get(a);
         let r = (|| {
-            laws3::cells_invariants(t, g, p, a, ya, "a (oracle input)")?;
+            g.invariants(t, a, ya, "a (oracle input)")?;
             laws::unary(t, ya)?;
             let c = laws::ok(ya.complement(), "a'")?;
             let na = a.not(g.len());
-            laws3::cells_check(t, g, p, na, &c, self.get(na), "a'")
+            laws::cells_check(t, g, na, &c, self.get(na), "a'")
         })();
         Spatial::at(r, || format!("a = {a:?}"))
     }
@@ -186,9 +185,7 @@ impl Universe for Spatial {
         let (ya, yb) = (self.get(a), self.get(b));
         let r = (|| {
             let out = laws::binary(t, ya, yb)?;
-            laws3::cells_binary(t, &self.g, &self.probes, (a, b), &out, &|s| {
-                self.get(s).clone()
-            })?;
+            laws::cells_binary(t, &self.g, (a, b), &out, &|s| self.get(s).clone())?;
             laws::membership(t, ya, yb, &out, &self.cube_probes)
         })();
         Spatial::at(r, || format!("a = {a:?}, b = {b:?}"))
@@ -630,13 +627,11 @@ fn general_position_universes_are_what_they_claim() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// 3D: unions of unit cells (proofs/cells3.rs), axis-aligned and in general position
+// 3D: unions of unit cells (tests/kit/src/cells3.rs), axis-aligned and in general position
 
-/// The rotation of the general-position universes: the unit quaternion (4 + i + 2j + 3k)/√30,
-/// about the oblique axis (1, 2, 3) with cos θ = 1/15. Every entry of its matrix is non-zero
-/// (4, −20, 22; 28, 10, 4; −10, 20, 20, over 30), so no face, edge or normal of a rotated
-/// cell is parallel to a coordinate plane or axis.
-const ROTATION: [i64; 4] = [4, 1, 2, 3];
+/// The rotation of the general-position universes: the unit quaternion [`GENERAL`], under
+/// which no face, edge or normal of a rotated cell is parallel to a coordinate plane or axis.
+const ROTATION: Rot = Rot::Quaternion(GENERAL);
 
 // Test names contain `_3d_`: `cargo test --test proofs _3d_` runs the 3D proofs only.
 
@@ -765,7 +760,7 @@ fn full_3d_unbounded() -> bool {
 /// points, coincident curves with equal and opposite orientation, slanted edges.
 #[test]
 fn degenerate_cases_in_universes() {
-    use common::gen::{FeatureStats, Features};
+    use common::gen::{feature_stats, Features};
     for (cx, min) in [
         (
             Complex::grid(3, 3),
@@ -780,9 +775,9 @@ fn degenerate_cases_in_universes() {
     ] {
         let u = Planar::new(cx);
         let all = pairs(&u.sets(false));
-        let mut stats = FeatureStats::default();
+        let mut stats = feature_stats();
         for &(a, b) in all.iter().step_by(37) {
-            stats.add(&Features::of(u.get(a), u.get(b)));
+            stats.add(Features::of(u.get(a), u.get(b)).as_array());
         }
         eprintln!(
             "{}",
@@ -794,7 +789,7 @@ fn degenerate_cases_in_universes() {
 
 /// How often the 3D universe's bounded pairs are degenerate, counted from the masks over every
 /// ordered pair of the 2×2×2 universe's bounded sets, both empty (the rotated universe has
-/// the same combinatorics). See [`cells3::FEATURES3`].
+/// the same combinatorics). See [`FEATURES3`].
 #[test]
 fn degenerate_cases_in_3d_universe() {
     let g = Grid3::grid(2, 2, 2);
@@ -816,7 +811,7 @@ fn degenerate_cases_in_3d_universe() {
         "degenerate features in the {total} ordered pairs of non-empty bounded sets of {}:",
         g.name
     );
-    for (k, name) in cells3::FEATURES3.iter().enumerate() {
+    for (k, name) in FEATURES3.iter().enumerate() {
         eprintln!("  {:5.1} %  {name}", 100.0 * shares[k]);
     }
     let min = [0.85, 0.6, 0.6, 0.05, 0.5, 0.02, 0.3, 0.03];
@@ -824,7 +819,7 @@ fn degenerate_cases_in_3d_universe() {
         assert!(
             shares[k] >= min[k],
             "{}: {:.3} < {}",
-            cells3::FEATURES3[k],
+            FEATURES3[k],
             shares[k],
             min[k]
         );
@@ -899,7 +894,7 @@ fn universes_3d_are_what_they_claim() {
         u.get(Cells::new(3, false)).volume(),
         Some(Rational::from_i64(2))
     );
-    let r = u.g.rotation().expect("rotated");
+    let r = u.g.rot.entries();
     let zero = Rational::from_i64(0);
     for i in 0..3 {
         for j in 0..3 {

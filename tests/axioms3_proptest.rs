@@ -1,10 +1,10 @@
 //! The Boolean-algebra axioms in 3D (seed 000 Thm 4.11 for the 3D Yin space, seed 003), checked
 //! exactly with `==` on 3D Yin sets by proptest, on generators biased to degeneracy
-//! (tests/common/gen3.rs): the same law definitions as the 2D suites (tests/common/laws.rs).
+//! (tests/common/gen3.rs): the same law definitions as the 2D suites (tests/kit/src/laws.rs).
 //! Every kernel output passes the exact validator. Case counts: `AXIOM3_CASES` (default below).
 
 mod common;
-use common::gen3::{features3, probe_points3, strategies, Shares3, MINIMUM_SHARES3};
+use common::gen3::{features3, probe_points3, shares3, strategies, MINIMUM_SHARES3};
 use common::laws;
 use common::runner::{cases3, run, run_split};
 use std::sync::Mutex;
@@ -24,7 +24,7 @@ fn unary_laws_3d() {
 #[test]
 fn binary_laws_and_membership_3d() {
     let pts = probe_points3();
-    let shares = Mutex::new(Shares3::default());
+    let shares = Mutex::new(shares3());
     run_split(
         "proptest 3D binary laws",
         cases3(512),

@@ -1,12 +1,12 @@
 //! The Boolean-algebra axioms in 3D, checked exactly with `==` on 3D Yin sets by quickcheck,
 //! with `Arbitrary` + `shrink` on the shape programs of tests/common/gen3.rs and the law
-//! definitions shared with the 2D suites (tests/common/laws.rs). Every kernel output passes
+//! definitions shared with the 2D suites (tests/kit/src/laws.rs). Every kernel output passes
 //! the exact validator. Case counts: `AXIOM3_CASES` (default below).
 
 mod common;
-use common::gen3::{features3, probe_points3, QPair3, QTriple3, Shape3, Shares3, MINIMUM_SHARES3};
+use common::gen3::{features3, probe_points3, shares3, Shape3, MINIMUM_SHARES3};
 use common::laws::{self, Tally};
-use common::runner::{cases3, verdict};
+use common::runner::{cases3, verdict, QPair, QTriple, Shares};
 use quickcheck::{Gen, QuickCheck, TestResult};
 use std::sync::Mutex;
 
@@ -30,16 +30,13 @@ fn qc_split<A: quickcheck::Arbitrary + std::fmt::Debug>(n: u64, prop: fn(A) -> T
 static UNARY: Mutex<Tally> = Mutex::new(Tally::new());
 static BINARY: Mutex<Tally> = Mutex::new(Tally::new());
 static TERNARY: Mutex<Tally> = Mutex::new(Tally::new());
-static SHARES: Mutex<Shares3> = Mutex::new(Shares3 {
-    pairs: 0,
-    counts: [0; 12],
-});
+static SHARES: Mutex<Shares<12>> = Mutex::new(shares3());
 
 fn unary_prop(s: Shape3) -> TestResult {
     verdict(&UNARY, |t| laws::unary(t, &s.build()))
 }
 
-fn binary_prop(p: QPair3) -> TestResult {
+fn binary_prop(p: QPair<Shape3>) -> TestResult {
     let pts = probe_points3();
     verdict(&BINARY, |t| {
         let (a, b) = (p.0.build(), p.1.build());
@@ -49,7 +46,7 @@ fn binary_prop(p: QPair3) -> TestResult {
     })
 }
 
-fn ternary_prop(p: QTriple3) -> TestResult {
+fn ternary_prop(p: QTriple<Shape3>) -> TestResult {
     verdict(&TERNARY, |t| {
         laws::ternary(t, &p.0.build(), &p.1.build(), &p.2.build())
     })
@@ -77,7 +74,7 @@ fn unary_laws_3d() {
 #[test]
 fn binary_laws_and_membership_3d() {
     let n = cases3(512) as u64;
-    qc_split(n, binary_prop as fn(QPair3) -> TestResult);
+    qc_split(n, binary_prop as fn(QPair<Shape3>) -> TestResult);
     report(&BINARY, "binary", n);
     let shares = SHARES.lock().unwrap();
     eprintln!("{}", shares.report("quickcheck 3D QPair3"));
@@ -87,6 +84,6 @@ fn binary_laws_and_membership_3d() {
 #[test]
 fn ternary_laws_3d() {
     let n = cases3(64) as u64;
-    qc_split(n, ternary_prop as fn(QTriple3) -> TestResult);
+    qc_split(n, ternary_prop as fn(QTriple<Shape3>) -> TestResult);
     report(&TERNARY, "ternary", n);
 }

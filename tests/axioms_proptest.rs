@@ -3,7 +3,7 @@
 //! Every kernel output passes the exact validator. Case counts: `AXIOM_CASES` (default below).
 
 mod common;
-use common::gen::{strategies, FeatureStats, Features, Shape};
+use common::gen::{feature_stats, strategies, Features, Shape};
 use common::laws;
 use common::runner::{cases, run};
 use proptest::strategy::{Strategy, ValueTree};
@@ -50,10 +50,10 @@ fn ternary_laws() {
 fn generator_produces_degenerate_cases() {
     let mut runner = TestRunner::deterministic();
     let strategy = strategies::pair();
-    let mut stats = FeatureStats::default();
+    let mut stats = feature_stats();
     for _ in 0..400 {
         let (a, b) = strategy.new_tree(&mut runner).unwrap().current();
-        stats.add(&Features::of(&a.build(), &b.build()));
+        stats.add(Features::of(&a.build(), &b.build()).as_array());
     }
     eprintln!("{}", stats.report("proptest pair()"));
     stats.assert_minimums(&MINIMUM_SHARES);

@@ -4,9 +4,9 @@
 //! `AXIOM_CASES` (default below).
 
 mod common;
-use common::gen::{FeatureStats, Features, QPair, QTriple, Shape};
+use common::gen::{feature_stats, Features, Shape};
 use common::laws::{self, Tally};
-use common::runner::verdict;
+use common::runner::{verdict, QPair, QTriple};
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
 use std::sync::Mutex;
 
@@ -32,7 +32,7 @@ fn unary_prop(s: Shape) -> TestResult {
     verdict(&UNARY, |t| laws::unary(t, &s.build()))
 }
 
-fn binary_prop(p: QPair) -> TestResult {
+fn binary_prop(p: QPair<Shape>) -> TestResult {
     let pts = laws::probe_points();
     verdict(&BINARY, |t| {
         let (a, b) = (p.0.build(), p.1.build());
@@ -41,7 +41,7 @@ fn binary_prop(p: QPair) -> TestResult {
     })
 }
 
-fn ternary_prop(p: QTriple) -> TestResult {
+fn ternary_prop(p: QTriple<Shape>) -> TestResult {
     verdict(&TERNARY, |t| {
         laws::ternary(t, &p.0.build(), &p.1.build(), &p.2.build())
     })
@@ -63,7 +63,7 @@ fn unary_laws() {
 #[test]
 fn binary_laws_and_membership() {
     let n = cases(512);
-    qc(n).quickcheck(binary_prop as fn(QPair) -> TestResult);
+    qc(n).quickcheck(binary_prop as fn(QPair<Shape>) -> TestResult);
     eprintln!(
         "{}",
         BINARY
@@ -76,7 +76,7 @@ fn binary_laws_and_membership() {
 #[test]
 fn ternary_laws() {
     let n = cases(256);
-    qc(n).quickcheck(ternary_prop as fn(QTriple) -> TestResult);
+    qc(n).quickcheck(ternary_prop as fn(QTriple<Shape>) -> TestResult);
     eprintln!(
         "{}",
         TERNARY
@@ -91,10 +91,10 @@ fn ternary_laws() {
 #[test]
 fn generator_produces_degenerate_cases() {
     let mut g = Gen::from_size_and_seed(16, 0x5eed);
-    let mut stats = FeatureStats::default();
+    let mut stats = feature_stats();
     for _ in 0..400 {
-        let QPair(a, b) = QPair::arbitrary(&mut g);
-        stats.add(&Features::of(&a.build(), &b.build()));
+        let QPair(a, b) = QPair::<Shape>::arbitrary(&mut g);
+        stats.add(Features::of(&a.build(), &b.build()).as_array());
     }
     eprintln!("{}", stats.report("quickcheck QPair"));
     stats.assert_minimums(&[
@@ -102,9 +102,9 @@ fn generator_produces_degenerate_cases() {
     ]);
 }
 
-static LAST_FAILURE: Mutex<Option<QPair>> = Mutex::new(None);
+static LAST_FAILURE: Mutex<Option<QPair<Shape>>> = Mutex::new(None);
 
-fn false_law(p: QPair) -> TestResult {
+fn false_law(p: QPair<Shape>) -> TestResult {
     let (x, y) = (p.0.build(), p.1.build());
     let m = x.meet(&y);
     let holds = m == x || m == y;
@@ -121,7 +121,7 @@ fn shrinking_yields_small_counterexamples() {
     let r = QuickCheck::new()
         .tests(256)
         .rng(Gen::from_size_and_seed(16, 7))
-        .quicktest(false_law as fn(QPair) -> TestResult);
+        .quicktest(false_law as fn(QPair<Shape>) -> TestResult);
     assert!(r.is_err(), "the false law was not refuted");
     let QPair(a, b) = LAST_FAILURE.lock().unwrap().clone().unwrap();
     eprintln!("shrunk counterexample: a = {a:?}\n                       b = {b:?}");

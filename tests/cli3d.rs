@@ -10,8 +10,9 @@ use serde_json::Value;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 use yinset::io::obj::read_obj;
+use yinset::kernel::Point3;
 use yinset::num::Rational;
-use yinset::yin3::YinSet3;
+use yinset::yin3::{shapes, YinSet3};
 
 /// The binary under test.
 fn yinset() -> Command {
@@ -98,20 +99,14 @@ fn cuboid(lo: [&str; 3], hi: [&str; 3], inward: bool) -> String {
         let c = |k: usize| if i >> k & 1 == 0 { lo[k] } else { hi[k] };
         text += &format!("v {} {} {}\n", c(0), c(1), c(2));
     }
-    for mut face in [
-        [1, 3, 4, 2],
-        [5, 6, 8, 7],
-        [1, 2, 6, 5],
-        [3, 7, 8, 4],
-        [1, 5, 7, 3],
-        [2, 4, 8, 6],
-    ] {
+    // The faces of the library's own box; negative indices count back from its 8 vertices.
+    let (_, faces) = shapes::cuboid(&Point3::<Rational>::int(0, 0, 0), &Point3::int(1, 1, 1));
+    for mut face in faces {
         if inward {
             face.reverse();
         }
-        // Negative indices count back from the box's own 8 vertices.
-        let [a, b, c, d] = face.map(|v| v as i64 - 9);
-        text += &format!("f {a} {b} {c} {d}\n");
+        let f: Vec<String> = face.iter().map(|&v| (v as i64 - 8).to_string()).collect();
+        text += &format!("f {}\n", f.join(" "));
     }
     text
 }

@@ -17,8 +17,9 @@
 //! drawn, of which the rotated ones are skipped).
 
 mod common;
-use common::cells3::{Rot, Y3};
 use common::gen3::strategies;
+use common::ops::{exact_of, Op, OPS};
+use common::rotation::Rot;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, TestRng, TestRunner};
 use std::cmp::Ordering;
@@ -28,30 +29,13 @@ use yinset::num::{Float, Num, Rational, Tolerance};
 use yinset::yin2::Location;
 use yinset::yin3::shapes::cuboid;
 use yinset::yin3::{Yin3Error, YinSet3};
+use yinset_testkit::Y3;
 
 type F3 = YinSet3<Float>;
 
 /// The constant of the measured error bound vol(F △ E) ≤ C · ε · A (the `yinset::yin3` docs, *Float
 /// mode*).
 const VOLUME_C: f64 = 1.0;
-
-/// The exact set of a float set's `f64` values, built independently of the kernel's float
-/// code (`None` for 0̂ and 1̂, which have no values).
-fn exact_of(y: &F3) -> Result<Y3, Yin3Error> {
-    if y.is_empty() {
-        return Ok(YinSet3::empty());
-    }
-    if y.is_full() {
-        return Ok(YinSet3::full());
-    }
-    let r = |v: &Float| Rational::from_f64(v.get()).expect("finite");
-    let pts = y
-        .vertices()
-        .iter()
-        .map(|p| Point3::new(r(&p.x), r(&p.y), r(&p.z)))
-        .collect();
-    YinSet3::from_triangles(pts, y.triangles().iter().map(|t| t.to_vec()).collect())
-}
 
 /// The same operand in both modes, each coordinate k of `y` mapped to the `f64` `v[k](x)`;
 /// `None` if the values do not bound a set.
@@ -79,7 +63,7 @@ fn both(y: &Y3, eps: f64, v: [impl Fn(&Rational) -> f64; 3]) -> Option<(Y3, F3)>
         .collect();
     let faces = y.triangles().iter().map(|t| t.to_vec()).collect();
     let f = YinSet3::from_triangles_with(pts, faces, Tolerance::new(eps)).ok()?;
-    Some((exact_of(&f).ok()?, f))
+    Some((exact_of(&f, 0).ok()?, f))
 }
 
 /// The comparison tally of a campaign.
@@ -91,33 +75,11 @@ struct Tally {
     skipped_inputs: usize,
 }
 
-const OPS: [&str; 5] = ["meet", "join", "difference", "xor", "complement"];
-
-fn float_op(op: &str, a: &F3, b: &F3) -> Result<F3, Yin3Error> {
-    match op {
-        "meet" => a.try_meet(b),
-        "join" => a.try_join(b),
-        "difference" => a.try_difference(b),
-        "xor" => a.try_symmetric_difference(b),
-        _ => Ok(a.complement()),
-    }
-}
-
-fn exact_op(op: &str, a: &Y3, b: &Y3) -> Y3 {
-    match op {
-        "meet" => a & b,
-        "join" => a | b,
-        "difference" => a - b,
-        "xor" => a ^ b,
-        _ => !a,
-    }
-}
-
 /// Compare the operations `ops` on one pair in both modes (module docs), into `t`.
-fn compare(t: &mut Tally, (ea, fa): &(Y3, F3), (eb, fb): &(Y3, F3), eps: f64, ops: &[&str]) {
+fn compare(t: &mut Tally, (ea, fa): &(Y3, F3), (eb, fb): &(Y3, F3), eps: f64, ops: &[Op]) {
     for &op in ops {
-        let e = exact_op(op, ea, eb);
-        let f = match float_op(op, fa, fb) {
+        let e = op.apply(ea, eb);
+        let f = match op.try_float(fa, fb) {
             Ok(f) => f,
             Err(Yin3Error::Unrepresentable(m)) => {
                 eprintln!("{op}: unrepresentable ({m})");
@@ -128,7 +90,7 @@ fn compare(t: &mut Tally, (ea, fa): &(Y3, F3), (eb, fb): &(Y3, F3), eps: f64, op
         };
         f.validate()
             .unwrap_or_else(|err| panic!("{op}: float result invalid: {err}"));
-        let fx = exact_of(&f).unwrap_or_else(|err| panic!("{op}: float values invalid: {err}"));
+        let fx = exact_of(&f, 0).unwrap_or_else(|err| panic!("{op}: float values invalid: {err}"));
         let area = ea.boundary_area() + eb.boundary_area() + e.boundary_area();
         let gap = (&fx ^ &e)
             .volume()
@@ -558,12 +520,12 @@ fn data_pair(name: &str, eps: f64) -> (Y3, F3) {
     let mesh = read_obj::<Float>(&text).expect("well-formed OBJ");
     let f = YinSet3::from_triangles_with(mesh.vertices, mesh.faces, Tolerance::new(eps))
         .expect("valid mesh");
-    (exact_of(&f).expect("exactly valid"), f)
+    (exact_of(&f, 0).expect("exactly valid"), f)
 }
 
 /// The operations `ops` on each pair of meshes of ../shared/data/3d (ε = 10⁻⁹) in both
 /// modes; `None` without the data.
-fn compare_shared(pairs: &[(&str, &str)], ops: &[&str]) -> Option<Tally> {
+fn compare_shared(pairs: &[(&str, &str)], ops: &[Op]) -> Option<Tally> {
     if !common::data_available() {
         return None;
     }
@@ -600,7 +562,7 @@ fn shared_meshes_in_float_mode() {
 /// five operations.
 #[test]
 fn crossing_meshes_meet_in_float_mode() {
-    let Some(t) = compare_shared(&[("ballmid.obj", "torus.obj")], &["meet"]) else {
+    let Some(t) = compare_shared(&[("ballmid.obj", "torus.obj")], &[Op::Meet]) else {
         return;
     };
     assert_eq!(t.comparisons, 1);

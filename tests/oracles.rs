@@ -2,7 +2,7 @@
 //!
 //! * unions of grid cells (and of triangles cutting the cells), whose Boolean algebra is bitwise
 //!   on masks: the expected Yin set is traced from the mask without the kernel's operations, the
-//!   expected Betti numbers are flood-fill counts (tests/common/cells.rs documents why edge
+//!   expected Betti numbers are flood-fill counts (tests/kit/src/cells.rs documents why edge
 //!   adjacency is the right connectivity for the set and for its complement);
 //! * point membership: for random points off the boundaries,
 //!   locate(p, A op B) = locate(p, A) op locate(p, B);
@@ -11,9 +11,9 @@
 //! Case counts: `AXIOM_CASES` (default below).
 
 mod common;
-use common::cells::{full_mask, Cells, Complex, Split};
+use common::cells::{full_mask, Cells, Complex, Split, CELL_ORACLE};
 use common::gen::strategies;
-use common::laws::{self, law, ok};
+use common::laws::{self, law, ok, CellOracle};
 use common::runner::{cases, run};
 use common::Y;
 use proptest::prelude::*;
@@ -69,7 +69,7 @@ fn grid_cell_oracle() {
             (cells_strategy(n), cells_strategy(n)),
             |t, (a, b)| {
                 let (ya, yb) = (cx.yin(a), cx.yin(b));
-                laws::cells_invariants(t, &cx, a, &ya, "a")?;
+                cx.invariants(t, a, &ya, "a")?;
                 let out = laws::binary(t, &ya, &yb)?;
                 laws::cells_binary(t, &cx, (a, b), &out, &|s| cx.yin(s))
             },
@@ -174,20 +174,18 @@ fn grid_cell_oracle_in_rational_coordinates() {
             ];
             for (what, s, y) in cases {
                 let want = cx.yin_mapped(s, &map);
-                law(t, laws::CELL_ORACLE[0], y == want, || {
-                    format!("{what}: {s:?}")
-                })?;
+                law(t, CELL_ORACLE[0], y == want, || format!("{what}: {s:?}"))?;
                 let (got, exp) = (y.betti(), cx.betti(s));
                 let mut holes = got.holes.clone();
                 holes.sort_unstable();
                 law(
                     t,
-                    laws::CELL_ORACLE[1],
+                    CELL_ORACLE[1],
                     got.components == exp.components && holes == exp.holes_sorted,
                     || format!("{what}: {got:?} vs {exp:?}"),
                 )?;
                 let want_area = cx.area(s).map(|x| x * area_scale.clone());
-                law(t, laws::CELL_ORACLE[2], y.area() == want_area, || {
+                law(t, CELL_ORACLE[2], y.area() == want_area, || {
                     format!("{what}: area {:?} vs {want_area:?}", y.area())
                 })?;
             }
@@ -309,6 +307,21 @@ fn cell_oracle_counts_by_edge_adjacency() {
     let c = g.betti(pinched.not(9));
     assert_eq!(c.components, 2);
     assert_eq!(y.complement(), g.yin(pinched.not(9)));
+}
+
+/// The cell checks can fail: on the 3×3 grid, a kernel result that is not the mask's set fails
+/// `==`, and each invariant fails on its own for a result that agrees with the mask in the
+/// invariants checked before it: Betti numbers (two cells touching at a corner, for one
+/// cell), area (two edge-adjacent cells) and location (another single cell).
+#[test]
+fn cell_checks_reject_wrong_results() {
+    let g = Complex::grid(3, 3);
+    let cases = [
+        (Cells::new(1 | 1 << 4, false), CELL_ORACLE[1]),
+        (Cells::new(1 | 1 << 1, false), CELL_ORACLE[2]),
+        (Cells::new(1 << 1, false), CELL_ORACLE[3]),
+    ];
+    common::assert_cell_checks_fail(&g, |s| g.yin(s), Cells::new(1, false), &cases);
 }
 
 /// Homological b₀ and b₁ of a union of pieces, from the cell complex alone: b₀ by

@@ -1,5 +1,5 @@
-//! Independent oracles for the 3D kernel's Boolean operations, exactly
-//! (tests/common/cells3.rs documents the constructions):
+//! Independent oracles for the 3D kernel's Boolean operations, exactly (the test kit's
+//! cells3.rs and geom3.rs document the constructions):
 //!
 //! * unions of unit cells of a 2×2×2 and a 3×3×3 grid, with an exterior bit for unbounded sets,
 //!   whose Boolean algebra is bitwise on masks: the expected set is built from the mask without
@@ -19,9 +19,12 @@
 
 mod common;
 use common::cells::{full_mask, Cells};
-use common::cells3::{common_den, q, ray_count, scale, Grid3, IntGeom, Oracle3, Rng, Rot, P3, Y3};
-use common::gen3::{features3, strategies, Shape3, Shares3, CONTACT_MASKS};
+use common::cells3::{Grid3, Oracle3, CELL_ORACLE3};
+use common::gen3::{features3, shares3, strategies, Shape3, CONTACT_MASKS};
+use common::geom3::{common_den, ray_count, scale, IntGeom, Rng};
 use common::laws::{self, law, ok, BinaryOut, Res, Tally};
+use common::q;
+use common::rotation::Rot;
 use common::runner::{cases3, run, run_split};
 use num_bigint::BigInt;
 use proptest::prelude::*;
@@ -30,6 +33,7 @@ use yinset::kernel::Point3;
 use yinset::num::{Num, Rational};
 use yinset::yin2::Location;
 use yinset::yin3::YinSet3;
+use yinset_testkit::{P3, Y3};
 
 /// A random union of cells, with a density drawn first so that sparse, dense and half-full
 /// masks all occur, and the exterior bit set a fifth of the time.
@@ -83,8 +87,8 @@ const CELL_MINIMUM_SHARES: [f64; 12] = [
 /// and every result against the mask algebra.
 #[test]
 fn cell_oracle_2x2x2() {
-    let o = Oracle3::new(2, Rot::None, true);
-    let shares = Mutex::new(Shares3::default());
+    let o = Oracle3::new(Grid3::cube(2), true);
+    let shares = Mutex::new(shares3());
     run_split(
         "cell oracle on the 2x2x2 grid (binary laws + oracle)",
         cases3(112),
@@ -106,7 +110,7 @@ fn cell_oracle_2x2x2() {
 /// The 3×3×3 grid (2^28 sets, not cached): the five operations against the mask algebra.
 #[test]
 fn cell_oracle_3x3x3() {
-    let o = Oracle3::new(3, Rot::None, false);
+    let o = Oracle3::new(Grid3::cube(3), false);
     run(
         "cell oracle on the 3x3x3 grid",
         cases3(12),
@@ -123,7 +127,7 @@ fn cell_oracle_3x3x3() {
 /// each of its 27 unit cells, against the mask algebra (cell k of 𝒴 is 𝒴's mask AND bit k).
 #[test]
 fn meet_each_cell_against_the_mask_algebra() {
-    let o = Oracle3::new(3, Rot::None, false);
+    let o = Oracle3::new(Grid3::cube(3), false);
     let cells: Vec<Cells> = (0..27).map(|k| Cells::new(1 << k, false)).collect();
     let unit_cells: Vec<Y3> = cells.iter().map(|&c| o.expected(c)).collect();
     run(
@@ -152,7 +156,7 @@ fn meet_each_cell_against_the_mask_algebra() {
 /// on the lattice, every face slanted; the kernel must agree with the mask algebra exactly.
 #[test]
 fn cell_oracle_2x2x2_in_general_position() {
-    let o = Oracle3::new(2, Rot::Oblique, true);
+    let o = Oracle3::new(Grid3::cube(2).rotated(Rot::Oblique), true);
     run(
         "cell oracle on the 2x2x2 grid turned about an oblique axis",
         cases3(16),
@@ -267,18 +271,14 @@ fn membership_against_ray_parity() {
 /// where rays from vertices and edge midpoints meet many edges and must be re-drawn.
 #[test]
 fn ray_oracle_on_cell_sets() {
-    let g = Grid3::new(2);
-    let pts: Vec<P3> = g
-        .probes()
-        .into_iter()
-        .map(|d| g.point(d, Rot::None))
-        .collect();
+    let g = Grid3::cube(2);
+    let pts: Vec<P3> = g.probes();
     run(
         "ray oracle on 2x2x2 cell sets",
         cases3(32),
         (cells_2x2x2(), any::<u64>()),
         |t, (s, seed)| {
-            let y = g.yin(s, Rot::None);
+            let y = g.yin(s);
             ray_check(t, &y, "cells", !s.outside, &pts, &mut Rng(seed | 1))
         },
     );
@@ -368,12 +368,28 @@ fn exact_volume_identities() {
     );
 }
 
+/// The cell checks can fail: on the 2×2×2 grid, a kernel result that is not the mask's set
+/// fails `==`, and each invariant fails on its own for a result that agrees with the mask in
+/// the invariants checked before it: Betti numbers (two cells sharing a vertex, for one cell),
+/// volume (two face-adjacent cells: connected like one cell) and location (another single
+/// cell: same topology and volume).
+#[test]
+fn cell_checks_reject_wrong_results() {
+    let g = Grid3::cube(2);
+    let cases = [
+        (Cells::new(1 | 1 << 7, false), CELL_ORACLE3[1]),
+        (Cells::new(1 | 1 << 1, false), CELL_ORACLE3[2]),
+        (Cells::new(1 << 1, false), CELL_ORACLE3[3]),
+    ];
+    common::assert_cell_checks_fail(&g, |s| g.yin(s), Cells::new(1, false), &cases);
+}
+
 /// The cell oracle is not vacuous: hand-counted Betti numbers of configurations the kernel must
 /// get right (edge and vertex contacts separate components; a ring is a solid torus; a cell
 /// enclosed by the others is a cavity; the complement of a cavity), and the kernel agrees.
 #[test]
 fn cell_oracle_counts_by_hand() {
-    let g3 = Grid3::new(3);
+    let g3 = Grid3::cube(3);
     let bit = |i: u64, j: u64, k: u64| 1u64 << (i + 3 * j + 9 * k);
     let all = full_mask(27);
     let cases: [(&str, Cells, (usize, usize, usize)); 8] = [
@@ -422,17 +438,17 @@ fn cell_oracle_counts_by_hand() {
     for (what, s, want) in cases {
         let cb = g3.betti(s);
         assert_eq!((cb.b0, cb.b1, cb.b2), want, "oracle on {what}");
-        let y = g3.yin(s, Rot::None);
+        let y = g3.yin(s);
         y.validate().unwrap();
         let b = y.betti();
         assert_eq!((b.b0, b.b1, b.b2), want, "kernel on {what}");
     }
     // The ray oracle on a unit cube and its complement: the centre, a face midpoint, a far point.
-    let g1 = Grid3::new(1);
+    let g1 = Grid3::cube(1);
     for outside in [false, true] {
         let s = Cells::new(u64::from(!outside), outside);
-        let y = g1.yin(s, Rot::None);
-        let pts = [[1, 1, 1], [2, 1, 1], [5, 1, 1]].map(|d| g1.point(d, Rot::None));
+        let y = g1.yin(s);
+        let pts = [[1, 1, 1], [2, 1, 1], [5, 1, 1]].map(|d| g1.point(d));
         let mut t = Tally::default();
         ray_check(&mut t, &y, "unit cell", !outside, &pts, &mut Rng(7)).unwrap();
         assert_eq!(t.total(), 1 + 3 + 2 + u64::from(!outside));

@@ -8,8 +8,8 @@
 //! comes from the code under test. Besides those, every test checks that inputs and outputs
 //! validate, that (A')' = A, and, for two bounded operands, |A∧B| + |A∨B| = |A| + |B|.
 //!
-//! Builders: `boxed` (6 outward quads), `tetra` and `prism` (faces turned outward by an integer
-//! test against an interior point), and `cells`, which builds the boundary of a union of unit
+//! Builders: `boxed` (the 6 outward quads of the test kit's `box_mesh`), `tetra` and `prism`
+//! (faces turned outward by an integer test against an interior point), and `cells`, which builds the boundary of a union of unit
 //! cubes directly (2 triangles per unit face between a cell in the set and one not in it), an
 //! independent construction for the complex shapes.
 
@@ -19,9 +19,10 @@ use yinset::num::{Num, Rational};
 use yinset::yin2::Location::{self, Inside, OnBoundary, Outside};
 use yinset::yin3::{Yin3Error, YinSet3};
 
+use yinset_testkit::shapes::{box_mesh, Mesh};
+
 type Y = YinSet3<Rational>;
 type P = Point3<Rational>;
-type Mesh = (Vec<[i64; 3]>, Vec<Vec<usize>>);
 
 // ---------------------------------------------------------------------------------------------
 // Numbers and points
@@ -64,33 +65,9 @@ fn rejected((pts, faces): Mesh) -> Yin3Error {
     }
 }
 
-/// Box faces over corners numbered by bits (x: 1, y: 2, z: 4), normals outward.
-const BOX_FACES: [[usize; 4]; 6] = [
-    [0, 2, 3, 1],
-    [4, 5, 7, 6],
-    [0, 1, 5, 4],
-    [2, 6, 7, 3],
-    [0, 4, 6, 2],
-    [1, 3, 7, 5],
-];
-
-/// The mesh of the box [x0,x1]×[y0,y1]×[z0,z1]: 8 corners, 6 outward quads.
-fn box_mesh(x0: i64, y0: i64, z0: i64, x1: i64, y1: i64, z1: i64) -> Mesh {
-    let pts = (0..8)
-        .map(|i| {
-            [
-                if i & 1 == 0 { x0 } else { x1 },
-                if i & 2 == 0 { y0 } else { y1 },
-                if i & 4 == 0 { z0 } else { z1 },
-            ]
-        })
-        .collect();
-    (pts, BOX_FACES.iter().map(|f| f.to_vec()).collect())
-}
-
 /// The box [x0,x1]×[y0,y1]×[z0,z1].
 fn boxed(x0: i64, y0: i64, z0: i64, x1: i64, y1: i64, z1: i64) -> Y {
-    build(box_mesh(x0, y0, z0, x1, y1, z1))
+    build(box_mesh([x0, y0, z0], [x1, y1, z1]))
 }
 
 /// Newell's normal (twice the vector area) of a planar face, in integers.
@@ -627,7 +604,7 @@ fn cavity_touching_wall_at_a_point() {
     let y = &k - &t;
     check(&y, Some(q(188, 3)), (1, 0, 0), 2, 1);
     let direct = build(combine(vec![
-        (box_mesh(0, 0, 0, 4, 4, 4), false),
+        (box_mesh([0, 0, 0], [4, 4, 4]), false),
         (tm, true),
     ]));
     check(&direct, Some(q(188, 3)), (1, 0, 0), 2, 1);
@@ -694,7 +671,7 @@ fn cavity_edge_on_wall() {
     check(&y, Some(q(188, 3)), (1, 0, 0), 2, 1);
     same(
         &build(combine(vec![
-            (box_mesh(0, 0, 0, 4, 4, 4), false),
+            (box_mesh([0, 0, 0], [4, 4, 4]), false),
             (tm, true),
         ])),
         &y,
@@ -806,7 +783,7 @@ fn ring_touching_four_walls_fig6() {
     );
     same(
         &build(combine(vec![
-            (box_mesh(0, 0, 0, 6, 6, 6), false),
+            (box_mesh([0, 0, 0], [6, 6, 6]), false),
             (ring_mesh(), true),
         ])),
         &y,
@@ -1109,7 +1086,7 @@ fn solid_torus_from_cubes() {
 /// A box without its top face: the rim edges have one face each.
 #[test]
 fn open_box_is_rejected_naming_the_open_edge() {
-    let (pts, mut faces) = box_mesh(0, 0, 0, 1, 1, 1);
+    let (pts, mut faces) = box_mesh([0, 0, 0], [1, 1, 1]);
     faces.remove(1); // the top [4,5,7,6]; faces now bottom, y0, y1, x0, x1
     let top: Vec<String> = [4, 5, 6, 7]
         .iter()
@@ -1147,8 +1124,8 @@ fn open_box_is_rejected_naming_the_open_edge() {
 #[test]
 fn crossing_boxes_in_one_face_list_are_rejected() {
     let e = rejected(combine(vec![
-        (box_mesh(0, 0, 0, 2, 2, 2), false),
-        (box_mesh(1, 1, 1, 3, 3, 3), false),
+        (box_mesh([0, 0, 0], [2, 2, 2]), false),
+        (box_mesh([1, 1, 1], [3, 3, 3]), false),
     ]));
     match &e {
         Yin3Error::Crossing { a, b, .. } => {
@@ -1163,8 +1140,8 @@ fn crossing_boxes_in_one_face_list_are_rejected() {
 #[test]
 fn overlapping_coplanar_faces_in_one_face_list_are_rejected() {
     let e = rejected(combine(vec![
-        (box_mesh(0, 0, 0, 2, 2, 2), false),
-        (box_mesh(0, 0, 0, 1, 1, 1), false),
+        (box_mesh([0, 0, 0], [2, 2, 2]), false),
+        (box_mesh([0, 0, 0], [1, 1, 1]), false),
     ]));
     match &e {
         Yin3Error::Overlap { a, b, .. } => {
@@ -1177,7 +1154,7 @@ fn overlapping_coplanar_faces_in_one_face_list_are_rejected() {
 /// The unit box with corner 7 moved to (1,1,2): the three quads through it are not planar.
 #[test]
 fn non_planar_quad_is_rejected() {
-    let (mut pts, faces) = box_mesh(0, 0, 0, 1, 1, 1);
+    let (mut pts, faces) = box_mesh([0, 0, 0], [1, 1, 1]);
     pts[7] = [1, 1, 2];
     let e = rejected((pts, faces));
     match &e {
@@ -1192,7 +1169,7 @@ fn non_planar_quad_is_rejected() {
 /// The box [0,2]³ plus a triangle (0,0,0),(1,0,0),(2,0,0) of collinear vertices (face 6).
 #[test]
 fn collinear_face_is_rejected() {
-    let (mut pts, mut faces) = box_mesh(0, 0, 0, 2, 2, 2);
+    let (mut pts, mut faces) = box_mesh([0, 0, 0], [2, 2, 2]);
     pts.push([1, 0, 0]);
     faces.push(vec![0, 8, 1]);
     let e = rejected((pts, faces));
@@ -1205,14 +1182,14 @@ fn collinear_face_is_rejected() {
 /// A quad naming one vertex twice, and a face of two vertices.
 #[test]
 fn repeated_vertex_and_short_faces_are_rejected() {
-    let (pts, mut faces) = box_mesh(0, 0, 0, 1, 1, 1);
+    let (pts, mut faces) = box_mesh([0, 0, 0], [1, 1, 1]);
     faces[2] = vec![0, 1, 1, 4];
     let e = rejected((pts.clone(), faces));
     assert!(
         matches!(e, Yin3Error::DegenerateFace { face: 2, .. }),
         "got {e:?}: {e}"
     );
-    let (_, mut faces) = box_mesh(0, 0, 0, 1, 1, 1);
+    let (_, mut faces) = box_mesh([0, 0, 0], [1, 1, 1]);
     faces[3] = vec![2, 6];
     let e = rejected((pts, faces));
     assert!(
@@ -1224,7 +1201,7 @@ fn repeated_vertex_and_short_faces_are_rejected() {
 /// Face 0 names vertex 8 of 8.
 #[test]
 fn out_of_range_index_is_rejected() {
-    let (pts, mut faces) = box_mesh(0, 0, 0, 1, 1, 1);
+    let (pts, mut faces) = box_mesh([0, 0, 0], [1, 1, 1]);
     faces[0] = vec![0, 2, 8, 1];
     let e = rejected((pts, faces));
     assert_eq!(
@@ -1249,7 +1226,7 @@ fn no_faces_is_rejected() {
 /// same way, so they do not alternate.
 #[test]
 fn box_with_one_flipped_face_is_rejected() {
-    let (pts, mut faces) = box_mesh(0, 0, 0, 1, 1, 1);
+    let (pts, mut faces) = box_mesh([0, 0, 0], [1, 1, 1]);
     faces[1].reverse();
     let e = rejected((pts, faces));
     match &e {
@@ -1266,8 +1243,8 @@ fn box_with_one_flipped_face_is_rejected() {
 #[test]
 fn nested_boxes_with_the_same_orientation_are_rejected() {
     let e = rejected(combine(vec![
-        (box_mesh(0, 0, 0, 4, 4, 4), false),
-        (box_mesh(1, 1, 1, 2, 2, 2), false),
+        (box_mesh([0, 0, 0], [4, 4, 4]), false),
+        (box_mesh([1, 1, 1], [2, 2, 2]), false),
     ]));
     match &e {
         Yin3Error::Orientation {
@@ -1286,13 +1263,13 @@ fn nested_boxes_with_the_same_orientation_are_rejected() {
 /// and the same two nested boxes with the inner one reversed are the cube with a cavity.
 #[test]
 fn reversed_box_is_the_complement() {
-    let (pts, faces) = box_mesh(0, 0, 0, 1, 1, 1);
+    let (pts, faces) = box_mesh([0, 0, 0], [1, 1, 1]);
     let r = build(combine(vec![((pts, faces), true)]));
     check(&r, None, (1, 0, 1), 1, 0);
     same(&r, &!&boxed(0, 0, 0, 1, 1, 1), "reversed box = C'");
     let cav = build(combine(vec![
-        (box_mesh(0, 0, 0, 4, 4, 4), false),
-        (box_mesh(1, 1, 1, 2, 2, 2), true),
+        (box_mesh([0, 0, 0], [4, 4, 4]), false),
+        (box_mesh([1, 1, 1], [2, 2, 2]), true),
     ]));
     check(&cav, Some(int(63)), (1, 0, 1), 2, 1);
     same(

@@ -10,6 +10,7 @@ use std::fmt::Debug;
 use yinset::kernel::Point;
 use yinset::num::{Float, Num, Rational, Tolerance};
 use yinset::yin2::{FillRule, Location, YinError, YinSet2};
+use yinset_testkit::membership::{self, Truth};
 
 /// Fail with the input that made the property fail.
 macro_rules! fail {
@@ -391,30 +392,15 @@ fn valid<N: Num, D: Debug>(what: &str, set: &YinSet2<N>, input: &D) {
     }
 }
 
-/// The expected location in the result of a Boolean function of two operands, at a point off
-/// both boundaries (`None` if on a boundary: no expectation).
-fn expect(a: Location, b: Location, f: impl Fn(bool, bool) -> bool) -> Option<Location> {
-    if a == Location::OnBoundary || b == Location::OnBoundary {
-        return None;
-    }
-    Some(if f(a == Location::Inside, b == Location::Inside) {
-        Location::Inside
-    } else {
-        Location::Outside
-    })
-}
-
 /// The Boolean operations checked: name, result, and the truth table it must follow off
 /// boundaries.
-type Op = (&'static str, fn(bool, bool) -> bool);
-
-const OPS: [Op; 6] = [
-    ("A∧B", |a, b| a && b),
-    ("A∨B", |a, b| a || b),
-    ("A'", |a, _| !a),
-    ("B'", |_, b| !b),
-    ("A−B", |a, b| a && !b),
-    ("A⊕B", |a, b| a != b),
+const OPS: [(&str, Truth); 6] = [
+    ("A∧B", membership::MEET),
+    ("A∨B", membership::JOIN),
+    ("A'", membership::COMPLEMENT_A),
+    ("B'", membership::COMPLEMENT_B),
+    ("A−B", membership::DIFFERENCE),
+    ("A⊕B", membership::SYMMETRIC_DIFFERENCE),
 ];
 
 /// The six results of [`OPS`] on `a` and `b`.
@@ -443,22 +429,17 @@ fn oracle<N: Num, D: Debug>(
     }
     let (la, lb) = (a.locate(points), b.locate(points));
     for ((name, f), set) in OPS.iter().zip(out) {
-        let got = set.locate(points);
-        for (k, p) in points.iter().enumerate() {
-            if let Some(want) = expect(la[k], lb[k], f) {
-                if got[k] != want {
-                    fail!(
-                        input,
-                        "membership oracle: {name} at ({}, {}) is {:?}, expected {want:?} \
-                         (A: {:?}, B: {:?})\nA = {a:?}\nB = {b:?}\n{name} = {set:?}",
-                        p.x,
-                        p.y,
-                        got[k],
-                        la[k],
-                        lb[k]
-                    );
-                }
-            }
+        if let Some((k, got, want)) = membership::first_failure(&la, &lb, &set.locate(points), *f) {
+            let p = &points[k];
+            fail!(
+                input,
+                "membership oracle: {name} at ({}, {}) is {got:?}, expected {want:?} \
+                 (A: {:?}, B: {:?})\nA = {a:?}\nB = {b:?}\n{name} = {set:?}",
+                p.x,
+                p.y,
+                la[k],
+                lb[k]
+            );
         }
     }
 }
@@ -628,21 +609,17 @@ pub fn ops_float(input: &OpsInput) {
     let (la, lb) = (ax.locate(&exact_points), bx.locate(&exact_points));
     for (((name, f), set), x) in OPS.iter().zip(&out).zip(&exact) {
         let got = x.locate(&exact_points);
-        for (k, p) in points.iter().enumerate() {
-            if let Some(want) = expect(la[k], lb[k], f) {
-                if got[k] != want {
-                    fail!(
-                        input,
-                        "membership oracle (float results read exactly): {name} at ({}, {}) is {:?}, \
-                         expected {want:?} (A: {:?}, B: {:?})\nA = {a:?}\nB = {b:?}\n{name} = {set:?}",
-                        p.x,
-                        p.y,
-                        got[k],
-                        la[k],
-                        lb[k]
-                    );
-                }
-            }
+        if let Some((k, got, want)) = membership::first_failure(&la, &lb, &got, *f) {
+            let p = &points[k];
+            fail!(
+                input,
+                "membership oracle (float results read exactly): {name} at ({}, {}) is {got:?}, \
+                 expected {want:?} (A: {:?}, B: {:?})\nA = {a:?}\nB = {b:?}\n{name} = {set:?}",
+                p.x,
+                p.y,
+                la[k],
+                lb[k]
+            );
         }
     }
     float_locate_agrees("A", &a, &ax, &points, &place, input);

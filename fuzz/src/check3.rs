@@ -6,60 +6,32 @@ use crate::check::fail;
 use crate::input3::{
     Combine, Construct3Input, LatticePoint, Operand, Ops3Input, Probe3, Solid, ROTATE,
 };
-use num_bigint::BigInt;
+use crate::text::check_parse_error;
 use std::fmt::Debug;
 use yinset::io::mesh;
 use yinset::io::obj::{read_obj, write_obj};
-use yinset::io::ParseError;
-use yinset::kernel::Point3;
 use yinset::num::{Float, Num, Rational};
-use yinset::yin2::Location;
 use yinset::yin3::{Yin3Error, YinSet3};
+use yinset_testkit::cells::Cells;
+use yinset_testkit::cells3::Grid3;
+use yinset_testkit::membership::{self, Truth};
+use yinset_testkit::rotation::{Rot, GENERAL};
+use yinset_testkit::shapes::{box_mesh, show3, tet_mesh, Mesh};
+use yinset_testkit::{P3, Y3};
 
-type Y3 = YinSet3<Rational>;
-type P3 = Point3<Rational>;
-
-/// The rotation of rotated inputs: the unit quaternion (4 + i + 2j + 3k)/√30 (axis (1, 2, 3),
-/// cos θ = 1/15), whose rational matrix has no zero entry: no face of a rotated box is
-/// parallel to a coordinate plane. Integer entries over 30.
-const ROTATION: [[i64; 3]; 3] = [[4, -20, 22], [28, 10, 4], [-10, 20, 20]];
-
-/// The exact point of doubled integer coordinates, rotated if asked.
+/// The exact point of doubled integer coordinates, rotated if asked by the unit quaternion
+/// [`GENERAL`] about the origin: no face of a rotated box is parallel to a coordinate plane.
 fn point(d: [i64; 3], rotate: bool) -> P3 {
-    let q = |n: i64, den: i64| Rational::new(BigInt::from(n), BigInt::from(den));
-    if rotate {
-        let r = ROTATION.map(|row| (0..3).map(|k| row[k] * d[k]).sum::<i64>());
-        Point3::new(q(r[0], 60), q(r[1], 60), q(r[2], 60))
+    let rot = if rotate {
+        Rot::Quaternion(GENERAL)
     } else {
-        Point3::new(q(d[0], 2), q(d[1], 2), q(d[2], 2))
-    }
+        Rot::None
+    };
+    rot.apply(d, [0; 3], 2)
 }
 
 fn lattice(p: LatticePoint, rotate: bool) -> P3 {
     point(p.0.map(|c| 2 * i64::from(c)), rotate)
-}
-
-/// A short description of a set for failure messages: 0̂, 1̂, or its triangles (float
-/// vertices as the shortest decimals that read back to them).
-pub fn show<N: Num>(y: &YinSet3<N>) -> String {
-    if y.is_empty() {
-        return "0̂".into();
-    }
-    if y.is_full() {
-        return "1̂".into();
-    }
-    let v = y.vertices();
-    let tris: Vec<String> = y
-        .triangles()
-        .iter()
-        .map(|t| format!("[{} {} {}]", v[t[0]], v[t[1]], v[t[2]]))
-        .collect();
-    let kind = if y.is_bounded() {
-        "bounded"
-    } else {
-        "unbounded"
-    };
-    format!("{{{kind}, {} triangles: {}}}", tris.len(), tris.join(", "))
 }
 
 /// Assert that `set` passes the exact validator.
@@ -68,102 +40,29 @@ fn valid<D: Debug>(what: &str, set: &Y3, input: &D) {
         fail!(
             input,
             "{what} fails the validator: {e}\n{what} = {}",
-            show(set)
+            show3(set)
         );
     }
 }
 
-/// Box corners numbered by bits (x: 1, y: 2, z: 4) and its outward quads.
-const BOX_FACES: [[usize; 4]; 6] = [
-    [0, 2, 3, 1],
-    [4, 5, 7, 6],
-    [0, 1, 5, 4],
-    [2, 6, 7, 3],
-    [0, 4, 6, 2],
-    [1, 3, 7, 5],
-];
-
-/// A mesh: integer vertices (doubled coordinates) and faces (vertex index lists, outward).
-pub type Mesh = (Vec<[i64; 3]>, Vec<Vec<usize>>);
-
 /// The boundary of a solid as integer vertices (doubled coordinates) and outward faces;
 /// `None` for the empty set.
 pub fn solid_mesh(s: &Solid) -> Option<Mesh> {
+    let doubled = |p: [u8; 3]| p.map(|c| 2 * i64::from(c));
     match s {
         Solid::None => None,
-        Solid::Box { lo, hi } => {
-            let pts = (0..8)
-                .map(|i| {
-                    [0, 1, 2].map(|k| 2 * i64::from(if i >> k & 1 == 0 { lo[k] } else { hi[k] }))
-                })
-                .collect();
-            Some((pts, BOX_FACES.iter().map(|f| f.to_vec()).collect()))
-        }
-        Solid::Tetra(p) => {
-            let v: Vec<[i64; 3]> = p.iter().map(|q| q.0.map(|c| 2 * i64::from(c))).collect();
-            let sub = |a: [i64; 3], b: [i64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-            let (x, y, z) = (sub(v[1], v[0]), sub(v[2], v[0]), sub(v[3], v[0]));
-            let det = x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0])
-                + x[2] * (y[0] * z[1] - y[1] * z[0]);
-            // For det(b−a, c−a, d−a) > 0 the faces acb, abd, adc, bcd point outward.
-            let faces = match det.signum() {
-                0 => return None,
-                1 => vec![vec![0, 2, 1], vec![0, 1, 3], vec![0, 3, 2], vec![1, 2, 3]],
-                _ => vec![vec![0, 1, 2], vec![0, 2, 3], vec![0, 3, 1], vec![2, 1, 3]],
-            };
-            Some((v, faces))
-        }
+        Solid::Box { lo, hi } => Some(box_mesh(doubled(*lo), doubled(*hi))),
+        Solid::Tetra(p) => tet_mesh(p.map(|q| doubled(q.0))),
         Solid::Cells { offset, mask } => {
             if *mask == 0 {
                 return None;
             }
-            let inside = |c: [i64; 3]| {
-                c.iter().all(|&x| (0..2).contains(&x))
-                    && mask >> (c[0] + 2 * c[1] + 4 * c[2]) & 1 == 1
-            };
-            let mut index = std::collections::HashMap::new();
-            let mut pts = Vec::new();
-            let mut faces = Vec::new();
+            let (pts, faces) = Grid3::cube(2).mesh(Cells::new(u64::from(*mask), false));
             let o = offset.map(i64::from);
-            for a in 0..3 {
-                let (u, v) = ((a + 1) % 3, (a + 2) % 3);
-                // Unit faces x_a = t between cells c (below) and c + e_a (above).
-                for t in -1..2 {
-                    for i in 0..2 {
-                        for j in 0..2 {
-                            let mut c = [0; 3];
-                            (c[a], c[u], c[v]) = (t, i, j);
-                            let mut d = c;
-                            d[a] += 1;
-                            let (lo, hi) = (inside(c), inside(d));
-                            if lo == hi {
-                                continue;
-                            }
-                            let corner = |du: i64, dv: i64| {
-                                let mut w = d;
-                                w[u] += du;
-                                w[v] += dv;
-                                [0, 1, 2].map(|k| 2 * (w[k] + o[k]))
-                            };
-                            // base → +u → +u+v → +v turns about e_a: outward iff the set is below.
-                            let mut quad: Vec<usize> =
-                                [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)]
-                                    .into_iter()
-                                    .map(|w| {
-                                        *index.entry(w).or_insert_with(|| {
-                                            pts.push(w);
-                                            pts.len() - 1
-                                        })
-                                    })
-                                    .collect();
-                            if hi {
-                                quad.reverse();
-                            }
-                            faces.push(quad);
-                        }
-                    }
-                }
-            }
+            let pts = pts
+                .into_iter()
+                .map(|w| [0, 1, 2].map(|k| 2 * (w[k] + o[k])))
+                .collect();
             Some((pts, faces))
         }
     }
@@ -238,21 +137,21 @@ pub fn ops3_exact(input: &Ops3Input) {
         fail!(
             input,
             "A∧B ≠ B∧A\nA∧B = {}\nB∧A = {}",
-            show(&meet),
-            show(&ba)
+            show3(&meet),
+            show3(&ba)
         );
     }
     if lhs != rhs {
         fail!(
             input,
             "(A∨B)' ≠ A'∧B'\n(A∨B)' = {}\nA'∧B' = {}",
-            show(&lhs),
-            show(&rhs)
+            show3(&lhs),
+            show3(&rhs)
         );
     }
     let caa = ca.complement();
     if caa != a {
-        fail!(input, "A'' ≠ A\nA'' = {}\nA = {}", show(&caa), show(&a));
+        fail!(input, "A'' ≠ A\nA'' = {}\nA = {}", show3(&caa), show3(&a));
     }
     if let (Some(x), Some(y), Some(m), Some(j)) =
         (a.volume(), b.volume(), meet.volume(), join.volume())
@@ -273,37 +172,24 @@ pub fn ops3_exact(input: &Ops3Input) {
         return;
     }
     let (la, lb) = (a.locate(&points), b.locate(&points));
-    type Op = fn(bool, bool) -> bool;
-    let ops: [(&str, &Y3, Op); 4] = [
-        ("A∧B", &meet, |p, q| p && q),
-        ("A∨B", &join, |p, q| p || q),
-        ("A'", &ca, |p, _| !p),
-        ("A−B", &diff, |p, q| p && !q),
+    let ops: [(&str, &Y3, Truth); 4] = [
+        ("A∧B", &meet, membership::MEET),
+        ("A∨B", &join, membership::JOIN),
+        ("A'", &ca, membership::COMPLEMENT_A),
+        ("A−B", &diff, membership::DIFFERENCE),
     ];
     for (name, set, f) in ops {
-        let got = set.locate(&points);
-        for k in 0..points.len() {
-            if la[k] == Location::OnBoundary || lb[k] == Location::OnBoundary {
-                continue;
-            }
-            let want = if f(la[k] == Location::Inside, lb[k] == Location::Inside) {
-                Location::Inside
-            } else {
-                Location::Outside
-            };
-            if got[k] != want {
-                fail!(
-                    input,
-                    "membership oracle: {name} at {} is {:?}, expected {want:?} (A: {:?}, B: {:?})\nA = {}\nB = {}\n{name} = {}",
-                    points[k],
-                    got[k],
-                    la[k],
-                    lb[k],
-                    show(&a),
-                    show(&b),
-                    show(set)
-                );
-            }
+        if let Some((k, got, want)) = membership::first_failure(&la, &lb, &set.locate(&points), f) {
+            fail!(
+                input,
+                "membership oracle: {name} at {} is {got:?}, expected {want:?} (A: {:?}, B: {:?})\nA = {}\nB = {}\n{name} = {}",
+                points[k],
+                la[k],
+                lb[k],
+                show3(&a),
+                show3(&b),
+                show3(set)
+            );
         }
     }
 }
@@ -363,7 +249,7 @@ fn construct_mesh<D: Debug>(v: Vec<P3>, faces: Vec<Vec<usize>>, input: &D) {
             let c = set.complement();
             valid("its complement", &c, input);
             if c.complement() != set {
-                fail!(input, "A'' ≠ A for the set built\nA = {}", show(&set));
+                fail!(input, "A'' ≠ A for the set built\nA = {}", show3(&set));
             }
             let six = Rational::from_i64(6);
             let zero = Rational::from_i64(0);
@@ -374,7 +260,7 @@ fn construct_mesh<D: Debug>(v: Vec<P3>, faces: Vec<Vec<usize>>, input: &D) {
                     input,
                     "volume {got:?} of the set built, but the faces enclose 6 × {:?}\nset = {}",
                     e.map(|e| e / six),
-                    show(&set)
+                    show3(&set)
                 ),
             }
         }
@@ -390,19 +276,6 @@ pub fn construct3(input: &Construct3Input) {
         .map(|f| f.iter().map(|&i| usize::from(i)).collect())
         .collect();
     construct_mesh(v, faces, input);
-}
-
-/// A parse error must point into the text.
-fn check_parse_error(e: &ParseError, text: &str) {
-    let lines: Vec<&str> = text.split('\n').collect();
-    let ok = e.line >= 1
-        && e.line <= lines.len()
-        && e.column >= 1
-        && e.column <= lines[e.line - 1].chars().count() + 1
-        && !e.message.is_empty();
-    if !ok {
-        fail!(text, "parse error outside the text: {e:?}");
-    }
 }
 
 /// Most faces of a mesh read that is built into a set (time per input).

@@ -19,32 +19,22 @@
 //! rounding, so the oracle's arithmetic stays small at any scale.
 
 use crate::check::fail;
-use crate::check3::{build_operand, probe_point, show};
+use crate::check3::{build_operand, probe_point};
 use crate::input3::{Ops3Input, Place3, MOVE_NONE, MOVE_SCALE, MOVE_SHIFT, MOVE_THIRDS, ROTATE};
-use num_bigint::BigInt;
 use std::cmp::Ordering;
 use std::fmt::Debug;
 use yinset::kernel::Point3;
 use yinset::num::{Float, Num, Rational, Tolerance};
 use yinset::yin2::Location;
 use yinset::yin3::{Yin3Error, YinSet3};
+use yinset_testkit::ops::{exact_of, pow2, OPS};
+use yinset_testkit::shapes::show3;
+use yinset_testkit::{P3, Y3};
 
-type Y3 = YinSet3<Rational>;
 type F3 = YinSet3<Float>;
-type P3 = Point3<Rational>;
 
 /// The constant C of the README's bound vol(F △ E) ≤ C·ε·A (3D float mode, "ε").
 pub const VOLUME_C: f64 = 1.0;
-
-/// 2^k, exactly.
-fn pow2(k: i32) -> Rational {
-    let p = BigInt::from(1) << k.unsigned_abs();
-    if k >= 0 {
-        Rational::from_integer(p)
-    } else {
-        Rational::new(BigInt::from(1), p)
-    }
-}
 
 /// The exact value of a finite `f64`.
 fn exact(v: f64) -> Rational {
@@ -77,32 +67,6 @@ fn placed(x: &Rational, c: usize, place: &Place3, moved: bool) -> f64 {
 struct Both {
     exact: Y3,
     float: F3,
-}
-
-/// The float set's values read as rationals and divided by 2^s, built independently with
-/// `from_triangles` (as tests/float_mode3.rs's `exact_of`).
-fn exact_of(y: &F3, s: i32) -> Result<Y3, Yin3Error> {
-    if y.is_empty() {
-        return Ok(YinSet3::empty());
-    }
-    if y.is_full() {
-        return Ok(YinSet3::full());
-    }
-    let down = pow2(-s);
-    let r = |v: &Float| {
-        let q = exact(v.get());
-        if s == 0 {
-            q
-        } else {
-            q * down.clone()
-        }
-    };
-    let pts = y
-        .vertices()
-        .iter()
-        .map(|p| Point3::new(r(&p.x), r(&p.y), r(&p.z)))
-        .collect();
-    YinSet3::from_triangles(pts, y.triangles().iter().map(|t| t.to_vec()).collect())
 }
 
 /// The largest side of the bounding box and the largest coordinate magnitude of `f64` points,
@@ -177,19 +141,19 @@ fn operand<D: Debug>(name: &str, y: &Y3, moved: bool, place: &Place3, input: &D)
         (Ok(e), Err(err)) => fail!(
             input,
             "operand {name}: exact mode accepts its f64 values, float mode rejects them: {err:?}\nexact: {}",
-            show(&e)
+            show3(&e)
         ),
         (Err(err), Ok(f)) => fail!(
             input,
             "operand {name}: float mode accepts f64 values that exact mode rejects ({err})\nfloat: {}",
-            show(&f)
+            show3(&f)
         ),
         (Ok(e), Ok(f)) => {
             if let Err(err) = f.validate() {
                 fail!(
                     input,
                     "operand {name}: the float set fails the validator: {err}\n{}",
-                    show(&f)
+                    show3(&f)
                 );
             }
             match exact_of(&f, s) {
@@ -197,13 +161,13 @@ fn operand<D: Debug>(name: &str, y: &Y3, moved: bool, place: &Place3, input: &D)
                 Ok(x) => fail!(
                     input,
                     "operand {name}: the float set's values are not the exact set of the values given\nfloat: {}\nexact: {}",
-                    show(&x),
-                    show(&e)
+                    show3(&x),
+                    show3(&e)
                 ),
                 Err(err) => fail!(
                     input,
                     "operand {name}: the float set's values do not build a valid set: {err}\n{}",
-                    show(&f)
+                    show3(&f)
                 ),
             }
             Some(Both { exact: e, float: f })
@@ -229,29 +193,6 @@ fn symmetric_difference_volume(x: &Y3, y: &Y3) -> Option<Rational> {
     Some(p.volume()? + q.volume()? - Rational::from_i64(2) * m.volume()?)
 }
 
-/// The operations compared.
-const OPS: [&str; 5] = ["A∧B", "A∨B", "A−B", "A⊕B", "A'"];
-
-fn float_op(op: &str, a: &F3, b: &F3) -> Result<F3, Yin3Error> {
-    match op {
-        "A∧B" => a.try_meet(b),
-        "A∨B" => a.try_join(b),
-        "A−B" => a.try_difference(b),
-        "A⊕B" => a.try_symmetric_difference(b),
-        _ => Ok(a.complement()),
-    }
-}
-
-fn exact_op(op: &str, a: &Y3, b: &Y3) -> Y3 {
-    match op {
-        "A∧B" => a.meet(b),
-        "A∨B" => a.join(b),
-        "A−B" => a.difference(b),
-        "A⊕B" => a.symmetric_difference(b),
-        _ => a.complement(),
-    }
-}
-
 /// Float `locate` against exact `locate` at the probes: where float mode locates a probe inside
 /// or outside (farther than ε from the boundary), exact mode must agree on the exact result;
 /// within ε float mode says on the boundary, which exact mode need not. For a set rounded once
@@ -271,8 +212,8 @@ fn check_locate<D: Debug>(name: &str, f: &F3, e: &Y3, fp: &[Point3<Float>], ep: 
                 got[k],
                 want[k],
                 f.ctx().eps(),
-                show(f),
-                show(e)
+                show3(f),
+                show3(e)
             );
         }
     }
@@ -334,30 +275,30 @@ pub fn ops3_float(input: &Ops3Input) {
     check_locate("B", &fb.float, eb, &fp, &ep, input);
     let operand_area = ea.boundary_area() + eb.boundary_area();
     for op in OPS {
-        let f = match float_op(op, &fa.float, &fb.float) {
+        let f = match op.try_float(&fa.float, &fb.float) {
             Ok(f) => f,
             Err(Yin3Error::Unrepresentable(_)) => continue,
             Err(err) => fail!(
                 input,
                 "{op}: float mode fails with {err:?} (only Unrepresentable is allowed)\nA = {}\nB = {}",
-                show(&fa.float),
-                show(&fb.float)
+                show3(&fa.float),
+                show3(&fb.float)
             ),
         };
         if let Err(err) = f.validate() {
             fail!(
                 input,
                 "{op}: the float result fails the validator: {err}\n{op} = {}",
-                show(&f)
+                show3(&f)
             );
         }
         // Only now (exact A⊕B can take a second on rounded rotated operands).
-        let e = exact_op(op, ea, eb);
+        let e = op.apply(ea, eb);
         let fx = exact_of(&f, s).unwrap_or_else(|err| {
             fail!(
                 input,
                 "{op}: the float result's values do not build a valid exact set: {err}\n{op} = {}",
-                show(&f)
+                show3(&f)
             )
         });
         let gap = symmetric_difference_volume(&fx, &e).unwrap_or_else(|| {
@@ -374,8 +315,8 @@ pub fn ops3_float(input: &Ops3Input) {
                 } else {
                     "unbounded"
                 },
-                show(&fx),
-                show(&e)
+                show3(&fx),
+                show3(&e)
             )
         });
         let area = operand_area + e.boundary_area();
@@ -390,8 +331,8 @@ pub fn ops3_float(input: &Ops3Input) {
                 input,
                 "{op}: vol(F △ E) = {:e} exceeds {VOLUME_C}·ε·A = {bound:e} (ε = {eps:e}, A = {area:e}, unscaled)\nfloat {op} = {}\nexact {op} = {}",
                 gap.to_f64(),
-                show(&fx),
-                show(&e)
+                show3(&fx),
+                show3(&e)
             );
         }
         // The set's and its complement's (rounding that makes pieces touch changes only the
@@ -405,11 +346,11 @@ pub fn ops3_float(input: &Ops3Input) {
                 fc.betti(),
                 e.betti(),
                 ec.betti(),
-                show(&fx),
-                show(&e)
+                show3(&fx),
+                show3(&e)
             );
         }
-        check_locate(op, &f, &e, &fp, &ep, input);
+        check_locate(&op.to_string(), &f, &e, &fp, &ep, input);
     }
 }
 

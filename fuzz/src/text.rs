@@ -16,7 +16,7 @@ pub fn text_of(data: &[u8]) -> String {
 }
 
 /// A parse error must point into the text: line ≤ number of lines, column ≤ line length + 1.
-fn check_parse_error(e: &ParseError, text: &str) {
+pub(crate) fn check_parse_error(e: &ParseError, text: &str) {
     let lines: Vec<&str> = text.split('\n').collect();
     let ok = e.line >= 1
         && e.line <= lines.len()

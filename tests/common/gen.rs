@@ -19,6 +19,7 @@
 //! Shrinking works on the programs: fewer steps, smaller primitives, no complement.
 
 use super::cells::{Cells, Complex};
+use super::runner::{qc_bool, qc_range, Program, Shares};
 use super::Y;
 use proptest::prelude::*;
 use quickcheck::{Arbitrary, Gen};
@@ -500,14 +501,6 @@ pub mod strategies {
 // ---------------------------------------------------------------------------------------------
 // quickcheck: Arbitrary + shrink
 
-fn qc_range(g: &mut Gen, lo: i64, hi: i64) -> i64 {
-    lo + (u32::arbitrary(g) as i64).rem_euclid(hi - lo + 1)
-}
-
-fn qc_bool(g: &mut Gen, p_true: f64) -> bool {
-    (u32::arbitrary(g) as f64) < p_true * (u32::MAX as f64)
-}
-
 impl Arbitrary for Prim {
     fn arbitrary(g: &mut Gen) -> Prim {
         let r = |g: &mut Gen, lo, hi| qc_range(g, lo, hi);
@@ -578,6 +571,7 @@ impl Arbitrary for Shape {
     }
 }
 
+/// A shape related to `a` (derived from it most of the time), for quickcheck's pairs.
 fn qc_related(g: &mut Gen, a: &Shape) -> Shape {
     match qc_range(g, 0, 5) {
         0..=1 => return Shape::arbitrary(g),
@@ -610,64 +604,12 @@ fn qc_related(g: &mut Gen, a: &Shape) -> Shape {
     a.derive(&d)
 }
 
-/// A pair of shapes, the second often derived from the first.
-#[derive(Clone, Debug)]
-pub struct QPair(pub Shape, pub Shape);
-
-/// A triple of shapes, the second and third often derived from the first.
-#[derive(Clone, Debug)]
-pub struct QTriple(pub Shape, pub Shape, pub Shape);
-
-impl Arbitrary for QPair {
-    fn arbitrary(g: &mut Gen) -> QPair {
-        let a = Shape::arbitrary(g);
-        let b = qc_related(g, &a);
-        QPair(a, b)
+impl Program for Shape {
+    fn related(g: &mut Gen, a: &Shape) -> Shape {
+        qc_related(g, a)
     }
-
-    fn shrink(&self) -> Box<dyn Iterator<Item = QPair>> {
-        let (a, b) = (self.0.clone(), self.1.clone());
-        let first: Vec<QPair> = a
-            .shrink_shape()
-            .into_iter()
-            .map(|x| QPair(x, b.clone()))
-            .collect();
-        let second: Vec<QPair> = b
-            .shrink_shape()
-            .into_iter()
-            .map(|y| QPair(a.clone(), y))
-            .collect();
-        Box::new(first.into_iter().chain(second))
-    }
-}
-
-impl Arbitrary for QTriple {
-    fn arbitrary(g: &mut Gen) -> QTriple {
-        let a = Shape::arbitrary(g);
-        let b = qc_related(g, &a);
-        let c = qc_related(g, &a);
-        QTriple(a, b, c)
-    }
-
-    fn shrink(&self) -> Box<dyn Iterator<Item = QTriple>> {
-        let (a, b, c) = (self.0.clone(), self.1.clone(), self.2.clone());
-        let mut v: Vec<QTriple> = Vec::new();
-        v.extend(
-            a.shrink_shape()
-                .into_iter()
-                .map(|x| QTriple(x, b.clone(), c.clone())),
-        );
-        v.extend(
-            b.shrink_shape()
-                .into_iter()
-                .map(|y| QTriple(a.clone(), y, c.clone())),
-        );
-        v.extend(
-            c.shrink_shape()
-                .into_iter()
-                .map(|z| QTriple(a.clone(), b.clone(), z)),
-        );
-        Box::new(v.into_iter())
+    fn smaller(&self) -> Vec<Shape> {
+        self.shrink_shape()
     }
 }
 
@@ -704,6 +646,7 @@ pub struct Features {
     pub slanted: bool,
 }
 
+/// What [`Features::as_array`] reports, in order.
 pub const FEATURE_NAMES: [&str; 12] = [
     "shared vertex",
     "collinear overlapping edges",
@@ -814,50 +757,7 @@ impl Features {
     }
 }
 
-/// Counts of features over a sample of pairs.
-#[derive(Clone, Debug, Default)]
-pub struct FeatureStats {
-    pub pairs: usize,
-    pub counts: [usize; 12],
-}
-
-impl FeatureStats {
-    pub fn add(&mut self, f: &Features) {
-        self.pairs += 1;
-        for (c, on) in self.counts.iter_mut().zip(f.as_array()) {
-            *c += on as usize;
-        }
-    }
-
-    pub fn share(&self, k: usize) -> f64 {
-        self.counts[k] as f64 / self.pairs.max(1) as f64
-    }
-
-    pub fn report(&self, who: &str) -> String {
-        let mut s = format!(
-            "degenerate-case statistics of {who} over {} pairs:\n",
-            self.pairs
-        );
-        for (k, name) in FEATURE_NAMES.iter().enumerate() {
-            s += &format!(
-                "  {:<42} {:>5.1}%  ({})\n",
-                name,
-                100.0 * self.share(k),
-                self.counts[k]
-            );
-        }
-        s
-    }
-
-    /// Panic if any feature occurs in less than its minimum share.
-    pub fn assert_minimums(&self, min: &[f64; 12]) {
-        for (k, name) in FEATURE_NAMES.iter().enumerate() {
-            assert!(
-                self.share(k) >= min[k],
-                "generator no longer produces '{name}' often enough: {:.1}% < {:.1}%",
-                100.0 * self.share(k),
-                100.0 * min[k]
-            );
-        }
-    }
+/// The statistics of [`Features`] over a sample of pairs, asserted on any sample.
+pub const fn feature_stats() -> Shares<12> {
+    Shares::new(&FEATURE_NAMES, 0)
 }

@@ -9,7 +9,7 @@
 //! and it may be complemented (unbounded sets; an empty program gives 0̂ or 1̂). The primitives
 //! are boxes, corner tetrahedra (three faces on lattice planes, one slanted), general lattice
 //! tetrahedra, and 2×2×2 blocks of lattice cells built by the independent cell builder of
-//! tests/common/cells3.rs (shared faces, and cells meeting along an edge or at a vertex only:
+//! the test kit (tests/kit/src/cells3.rs) (shared faces, and cells meeting along an edge or at a vertex only:
 //! non-manifold edges and points). Because the lattice is tiny, independent primitives share
 //! vertices, overlap in coplanar faces and touch faces with vertices and edges all the time.
 //!
@@ -21,14 +21,18 @@
 //! smaller primitives, no rotation, no complement.
 //!
 //! [`Features3`] measures the degenerate features of a pair from the boundaries' geometry
-//! (vertices and triangles, with the exact integer predicates of cells3.rs), not from the
+//! (vertices and triangles, with the exact integer predicates of the kit's geom3.rs), not from the
 //! kernel's internals.
 
 use super::cells::Cells;
-use super::cells3::{
+use super::cells3::Grid3;
+use super::geom3::{
     common_den, coplanar_overlap, in_coplanar_triangle, normal, on_triangle, orient,
-    segment_triangle, Grid3, Hit, IntGeom, Mesh, Rot, V, Y3,
+    segment_triangle, Hit, IntGeom, V,
 };
+use super::rotation::Rot;
+use super::runner::{qc_bool, qc_range, Program, Shares};
+use super::shapes::{box_mesh, det, tet_mesh, Mesh};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
@@ -37,6 +41,7 @@ use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet};
 use yinset::kernel::Point3;
 use yinset::yin3::YinSet3;
+use yinset_testkit::Y3;
 
 /// The largest lattice coordinate of a primitive's anchor (in half units).
 pub const L: i64 = 4;
@@ -96,43 +101,6 @@ pub struct Derive3 {
     pub complement: bool,
 }
 
-/// Box faces over corners numbered by bits (x: 1, y: 2, z: 4), normals outward.
-const BOX_FACES: [[usize; 4]; 6] = [
-    [0, 2, 3, 1],
-    [4, 5, 7, 6],
-    [0, 1, 5, 4],
-    [2, 6, 7, 3],
-    [0, 4, 6, 2],
-    [1, 3, 7, 5],
-];
-
-fn det(a: [i64; 3], b: [i64; 3], c: [i64; 3], d: [i64; 3]) -> i64 {
-    let (u, v, w) = (
-        [0, 1, 2].map(|k| b[k] - a[k]),
-        [0, 1, 2].map(|k| c[k] - a[k]),
-        [0, 1, 2].map(|k| d[k] - a[k]),
-    );
-    u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
-        + u[2] * (v[0] * w[1] - v[1] * w[0])
-}
-
-/// The tetrahedron's mesh, faces outward.
-fn tet_mesh(v: [[i64; 3]; 4]) -> Mesh {
-    let pos = det(v[0], v[1], v[2], v[3]) > 0;
-    // With det(v0, v1, v2, v3) > 0, v3 is on the normal side of v0 v1 v2: reverse that face.
-    let faces = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]]
-        .iter()
-        .map(|f| {
-            let mut f = f.to_vec();
-            if !pos {
-                f.reverse();
-            }
-            f
-        })
-        .collect();
-    (v.to_vec(), faces)
-}
-
 /// A non-degenerate tetrahedron near the given lattice points.
 fn fix_tet(mut v: [[i64; 3]; 4]) -> [[i64; 3]; 4] {
     for k in 0..12 {
@@ -148,23 +116,20 @@ impl Prim3 {
     /// The primitive's boundary, in half units.
     pub fn mesh(&self) -> Mesh {
         match *self {
-            Prim3::Box { at, size } => {
-                let pts = (0..8)
-                    .map(|i| [0, 1, 2].map(|k| at[k] + if i >> k & 1 == 1 { size[k] } else { 0 }))
-                    .collect();
-                (pts, BOX_FACES.iter().map(|f| f.to_vec()).collect())
-            }
+            Prim3::Box { at, size } => box_mesh(at, [0, 1, 2].map(|k| at[k] + size[k])),
             Prim3::Corner { at, size, octant } => {
                 let mut v = [at; 4];
                 for k in 0..3 {
                     let s = if octant >> k & 1 == 1 { -1 } else { 1 };
                     v[k + 1][k] += s * size[k];
                 }
-                tet_mesh(v)
+                tet_mesh(v).expect("a corner tetrahedron has three edges along the axes")
             }
-            Prim3::Tet { v } => tet_mesh(fix_tet(v)),
+            Prim3::Tet { v } => {
+                tet_mesh(fix_tet(v)).expect("fix_tet makes the corners non-coplanar")
+            }
             Prim3::Cells { at, mask } => {
-                let (pts, faces) = Grid3::new(2).mesh(Cells::new(mask as u64, false));
+                let (pts, faces) = Grid3::cube(2).mesh(Cells::new(mask as u64, false));
                 let pts = pts
                     .into_iter()
                     .map(|p| [0, 1, 2].map(|k| p[k] + at[k]))
@@ -492,14 +457,6 @@ pub mod strategies {
 // ---------------------------------------------------------------------------------------------
 // quickcheck: Arbitrary + shrink
 
-fn qc_range(g: &mut Gen, lo: i64, hi: i64) -> i64 {
-    lo + (u32::arbitrary(g) as i64).rem_euclid(hi - lo + 1)
-}
-
-fn qc_bool(g: &mut Gen, p_true: f64) -> bool {
-    (u32::arbitrary(g) as f64) < p_true * (u32::MAX as f64)
-}
-
 fn qc_lattice(g: &mut Gen, hi: i64) -> [i64; 3] {
     [0; 3].map(|_| qc_range(g, 0, hi))
 }
@@ -623,57 +580,12 @@ fn qc_related(g: &mut Gen, a: &Shape3) -> Shape3 {
     a.derive(&d)
 }
 
-/// A pair of shapes, the second often derived from the first.
-#[derive(Clone, Debug)]
-pub struct QPair3(pub Shape3, pub Shape3);
-
-/// A triple of shapes, the second and third often derived from the first.
-#[derive(Clone, Debug)]
-pub struct QTriple3(pub Shape3, pub Shape3, pub Shape3);
-
-impl Arbitrary for QPair3 {
-    fn arbitrary(g: &mut Gen) -> QPair3 {
-        let a = Shape3::arbitrary(g);
-        let b = qc_related(g, &a);
-        QPair3(a, b)
+impl Program for Shape3 {
+    fn related(g: &mut Gen, a: &Shape3) -> Shape3 {
+        qc_related(g, a)
     }
-
-    fn shrink(&self) -> Box<dyn Iterator<Item = QPair3>> {
-        let (a, b) = (self.0.clone(), self.1.clone());
-        let mut v: Vec<QPair3> = Vec::new();
-        v.extend(a.shrink_shape().into_iter().map(|x| QPair3(x, b.clone())));
-        v.extend(b.shrink_shape().into_iter().map(|y| QPair3(a.clone(), y)));
-        Box::new(v.into_iter())
-    }
-}
-
-impl Arbitrary for QTriple3 {
-    fn arbitrary(g: &mut Gen) -> QTriple3 {
-        let a = Shape3::arbitrary(g);
-        let b = qc_related(g, &a);
-        let c = qc_related(g, &a);
-        QTriple3(a, b, c)
-    }
-
-    fn shrink(&self) -> Box<dyn Iterator<Item = QTriple3>> {
-        let (a, b, c) = (self.0.clone(), self.1.clone(), self.2.clone());
-        let mut v: Vec<QTriple3> = Vec::new();
-        v.extend(
-            a.shrink_shape()
-                .into_iter()
-                .map(|x| QTriple3(x, b.clone(), c.clone())),
-        );
-        v.extend(
-            b.shrink_shape()
-                .into_iter()
-                .map(|y| QTriple3(a.clone(), y, c.clone())),
-        );
-        v.extend(
-            c.shrink_shape()
-                .into_iter()
-                .map(|z| QTriple3(a.clone(), b.clone(), z)),
-        );
-        Box::new(v.into_iter())
+    fn smaller(&self) -> Vec<Shape3> {
+        self.shrink_shape()
     }
 }
 
@@ -825,57 +737,10 @@ pub fn non_manifold(y: &Y3) -> (bool, bool) {
     (edge, point)
 }
 
-/// Counts of features over a sample of pairs.
-#[derive(Clone, Debug, Default)]
-pub struct Shares3 {
-    pub pairs: usize,
-    pub counts: [usize; 12],
-}
-
-impl Shares3 {
-    pub fn add(&mut self, f: [bool; 12]) {
-        self.pairs += 1;
-        for (c, on) in self.counts.iter_mut().zip(f) {
-            *c += on as usize;
-        }
-    }
-
-    pub fn share(&self, k: usize) -> f64 {
-        self.counts[k] as f64 / self.pairs.max(1) as f64
-    }
-
-    pub fn report(&self, who: &str) -> String {
-        let mut s = format!(
-            "degenerate-case statistics of {who} over {} pairs:\n",
-            self.pairs
-        );
-        for (k, name) in FEATURES3.iter().enumerate() {
-            s += &format!(
-                "  {:<52} {:>5.1}%  ({})\n",
-                name,
-                100.0 * self.share(k),
-                self.counts[k]
-            );
-        }
-        s
-    }
-
-    /// Panic if any feature occurs in less than its minimum share (checked only on samples
-    /// of at least 100 pairs).
-    pub fn assert_minimums(&self, min: &[f64; 12]) {
-        if self.pairs < 100 {
-            eprintln!("(only {} pairs: minimum shares not asserted)", self.pairs);
-            return;
-        }
-        for (k, name) in FEATURES3.iter().enumerate() {
-            assert!(
-                self.share(k) >= min[k],
-                "generator no longer produces '{name}' often enough: {:.1}% < {:.1}%",
-                100.0 * self.share(k),
-                100.0 * min[k]
-            );
-        }
-    }
+/// The statistics of [`features3`] over a sample of pairs, asserted on samples of at least 100
+/// pairs.
+pub const fn shares3() -> Shares<12> {
+    Shares::new(&FEATURES3, 100)
 }
 
 /// The minimum shares asserted by the suites (in the order of [`FEATURES3`]): about four
@@ -888,7 +753,7 @@ pub const MINIMUM_SHARES3: [f64; 12] = [
 /// Points for the membership law: a lattice offset by odd multiples of 1/38 and 1/46 so that
 /// they rarely lie on a boundary (those that do are skipped by the law).
 pub fn probe_points3() -> Vec<Point3<yinset::num::Rational>> {
-    use super::cells3::q;
+    use yinset_testkit::q;
     let mut v = Vec::new();
     for i in -1..=5i64 {
         for j in -1..=5i64 {

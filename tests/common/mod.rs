@@ -1,4 +1,5 @@
-//! Shapes shared by the integration tests.
+//! Shapes and generators shared by the integration tests; the laws, the oracles and the
+//! integer meshes are the test kit's (tests/kit), re-exported here.
 #![allow(dead_code)]
 
 use std::path::PathBuf;
@@ -6,7 +7,9 @@ use yinset::kernel::Point;
 use yinset::num::Rational;
 use yinset::yin2::YinSet2;
 
-pub type Y = YinSet2<Rational>;
+// Each test binary uses some of them (as with `dead_code` above).
+#[allow(unused_imports)]
+pub use yinset_testkit::{cells, cells3, geom3, laws, membership, ops, q, rotation, shapes, Y};
 
 #[path = "../../src/io/testdata.rs"]
 mod testdata;
@@ -28,11 +31,6 @@ pub fn data_file_3d(name: &str) -> PathBuf {
     let path = testdata::root().join("3d").join(name);
     assert!(path.is_file(), "test data missing: {}", path.display());
     path
-}
-
-/// Exact rational p/q.
-pub fn q(p: i64, d: i64) -> Rational {
-    Rational::new(p.into(), d.into())
 }
 
 /// A vertex cycle from integer pairs.
@@ -68,10 +66,25 @@ pub fn valid(y: &Y) -> &Y {
     y
 }
 
-pub mod arrangement;
-pub mod cells;
-pub mod cells3;
+/// Assert that a cell oracle's checks can fail: for the mask `s` and each `(other, law)`, the
+/// set of `other` (built by `yin`) fails `==` against the set of `s`, and its invariants fail
+/// `law` against the mask `s`.
+pub fn assert_cell_checks_fail<O: laws::CellOracle>(
+    o: &O,
+    yin: impl Fn(cells::Cells) -> O::Set,
+    s: cells::Cells,
+    cases: &[(cells::Cells, &str)],
+) {
+    for &(other, law) in cases {
+        let y = yin(other);
+        let mut t = laws::Tally::default();
+        let e = laws::cells_check(&mut t, o, s, &y, &yin(s), "y").unwrap_err();
+        assert!(e.contains(O::SAME), "{e}");
+        let e = o.invariants(&mut t, s, &y, "y").unwrap_err();
+        assert!(e.contains(law), "{other:?} should fail '{law}': {e}");
+    }
+}
+
 pub mod gen;
 pub mod gen3;
-pub mod laws;
 pub mod runner;

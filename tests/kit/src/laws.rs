@@ -1,13 +1,16 @@
 //! The Boolean-algebra laws, checked exactly with `==` on Yin sets (seed 000 Thm 4.11), with
 //! every kernel output passed through the exact validator. Shared by the proptest and
 //! quickcheck suites (2D and 3D) and by proofs/: the laws are written once, generically over
-//! [`Algebra`], which both `YinSet2` and `YinSet3` implement.
+//! [`Algebra`], which both `YinSet2` and `YinSet3` implement; so are the checks of a kernel
+//! result against a cell oracle ([`CellOracle`], [`cells_check`], [`cells_binary`]).
 //!
 //! Each check counts itself in a [`Tally`] under the law's name, so that suites can report how
 //! many cases of each law they checked.
 
-use super::cells::{Cells, Complex};
-use super::Y;
+use crate::cells::Cells;
+use crate::membership::{self, Truth};
+use crate::shapes::show3;
+use crate::{Y, Y3};
 use std::collections::BTreeMap;
 use std::fmt::{Debug, Display};
 use yinset::kernel::{Point, Point3};
@@ -22,12 +25,19 @@ pub trait Algebra: Clone + PartialEq + Debug {
     type Pt: Clone + Display;
     /// The names of the two measure identities checked by [`binary`].
     const MEASURE_LAWS: [&'static str; 2];
+    /// 0̂, the empty set.
     fn zero() -> Self;
+    /// 1̂, the whole space.
     fn one() -> Self;
+    /// The meet a∧b.
     fn meet(&self, o: &Self) -> Self;
+    /// The join a∨b.
     fn join(&self, o: &Self) -> Self;
+    /// The complement a'.
     fn complement(&self) -> Self;
+    /// The difference a∖b.
     fn difference(&self, o: &Self) -> Self;
+    /// The symmetric difference a⊕b.
     fn symmetric_difference(&self, o: &Self) -> Self;
     /// The order, decided otherwise than by `a∧b == a` where the space allows it;
     /// `difference` is `self ∖ o`, already computed and validated.
@@ -36,6 +46,7 @@ pub trait Algebra: Clone + PartialEq + Debug {
     fn check(&self) -> Result<(), String>;
     /// Area or volume; `None` if unbounded.
     fn measure(&self) -> Option<Rational>;
+    /// The location of each point.
     fn locate(&self, pts: &[Self::Pt]) -> Vec<Location>;
     /// A readable description for failure messages.
     fn show(&self) -> String;
@@ -99,8 +110,6 @@ impl Algebra for Y {
     }
 }
 
-type Y3 = YinSet3<Rational>;
-
 impl Algebra for Y3 {
     type Pt = Point3<Rational>;
     const MEASURE_LAWS: [&'static str; 2] = [
@@ -144,24 +153,7 @@ impl Algebra for Y3 {
     }
     /// 0̂, 1̂, or the boundary's triangles (outward normals) and whether it is bounded.
     fn show(&self) -> String {
-        if self.is_empty() {
-            return "0̂".into();
-        }
-        if self.is_full() {
-            return "1̂".into();
-        }
-        let v = self.vertices();
-        let tris: Vec<String> = self
-            .triangles()
-            .iter()
-            .map(|t| format!("[{} {} {}]", v[t[0]], v[t[1]], v[t[2]]))
-            .collect();
-        let kind = if self.is_bounded() {
-            "bounded"
-        } else {
-            "unbounded"
-        };
-        format!("{{{kind}; {}}}", tris.join(", "))
+        show3(self)
     }
 }
 
@@ -171,26 +163,31 @@ pub type Res = Result<(), String>;
 /// Cases checked, per law.
 #[derive(Clone, Debug, Default)]
 pub struct Tally {
+    /// Cases checked, by the law's name.
     pub counts: BTreeMap<&'static str, u64>,
 }
 
 impl Tally {
+    /// No cases yet.
     pub const fn new() -> Tally {
         Tally {
             counts: BTreeMap::new(),
         }
     }
 
+    /// Add another tally's counts.
     pub fn merge(&mut self, other: &Tally) {
         for (k, v) in &other.counts {
             *self.counts.entry(k).or_default() += v;
         }
     }
 
+    /// Cases checked, all laws together.
     pub fn total(&self) -> u64 {
         self.counts.values().sum()
     }
 
+    /// The counts as a table under `title`.
     pub fn report(&self, title: &str) -> String {
         let mut s = format!("{title}: {} checks\n", self.total());
         for (k, v) in &self.counts {
@@ -231,6 +228,7 @@ fn neq<A: Algebra>(l: &A, r: &A) -> String {
     format!("\n  left  = {}\n  right = {}", show(l), show(r))
 }
 
+/// The laws [`unary`] checks.
 pub const UNARY_LAWS: [&str; 9] = [
     "idempotence: a∧a = a",
     "idempotence: a∨a = a",
@@ -281,10 +279,15 @@ pub const BINARY_LAWS: [&str; 7] = [
 
 /// The results of one binary case, for further oracles.
 pub struct BinaryOut<A> {
+    /// a∧b.
     pub meet: A,
+    /// a∨b.
     pub join: A,
+    /// a∖b.
     pub difference: A,
+    /// a⊕b.
     pub symmetric_difference: A,
+    /// a'.
     pub complement_a: A,
 }
 
@@ -343,6 +346,7 @@ pub fn binary<A: Algebra>(t: &mut Tally, a: &A, b: &A) -> Result<BinaryOut<A>, S
     })
 }
 
+/// The laws [`ternary`] checks.
 pub const TERNARY_LAWS: [&str; 4] = [
     "associativity: (a∧b)∧c = a∧(b∧c)",
     "associativity: (a∨b)∨c = a∨(b∨c)",
@@ -404,6 +408,7 @@ pub fn probe_points() -> Vec<Point<Rational>> {
     v
 }
 
+/// The name of the membership law.
 pub const MEMBERSHIP: &str = "membership: locate(p, a op b) = locate(p, a) op locate(p, b)";
 
 /// The point-membership oracle: for every point off ∂a and ∂b, the location in a∧b, a∨b,
@@ -417,30 +422,24 @@ pub fn membership<A: Algebra>(
     pts: &[A::Pt],
 ) -> Res {
     let (la, lb) = (a.locate(pts), b.locate(pts));
-    type Op = fn(bool, bool) -> bool;
-    let ops: [(&str, &A, Op); 5] = [
-        ("∧", &out.meet, |p, q| p && q),
-        ("∨", &out.join, |p, q| p || q),
-        ("∖", &out.difference, |p, q| p && !q),
-        ("⊕", &out.symmetric_difference, |p, q| p != q),
-        ("'", &out.complement_a, |p, _| !p),
+    let ops: [(&str, &A, Truth); 5] = [
+        ("∧", &out.meet, membership::MEET),
+        ("∨", &out.join, membership::JOIN),
+        ("∖", &out.difference, membership::DIFFERENCE),
+        (
+            "⊕",
+            &out.symmetric_difference,
+            membership::SYMMETRIC_DIFFERENCE,
+        ),
+        ("'", &out.complement_a, membership::COMPLEMENT_A),
     ];
     for (name, r, f) in ops {
         let lr = r.locate(pts);
-        for k in 0..pts.len() {
-            if la[k] == Location::OnBoundary || lb[k] == Location::OnBoundary {
-                continue;
-            }
-            let want = if f(la[k] == Location::Inside, lb[k] == Location::Inside) {
-                Location::Inside
-            } else {
-                Location::Outside
-            };
-            law(t, MEMBERSHIP, lr[k] == want, || {
+        for (k, got, want) in membership::judged(&la, &lb, &lr, f) {
+            law(t, MEMBERSHIP, got == want, || {
                 format!(
-                    "a {name} b at {}: {:?}, expected {want:?}\n  a = {}\n  b = {}",
+                    "a {name} b at {}: {got:?}, expected {want:?}\n  a = {}\n  b = {}",
                     pts[k],
-                    lr[k],
                     show(a),
                     show(b)
                 )
@@ -450,72 +449,54 @@ pub fn membership<A: Algebra>(
     Ok(())
 }
 
-pub const CELL_ORACLE: [&str; 4] = [
-    "cells: kernel result = set traced from the mask",
-    "cells: Betti numbers = flood-fill counts",
-    "cells: area = sum of the pieces",
-    "cells: locate(piece centroid) = mask bit",
-];
-
-/// The grid-cell oracle for one kernel result `y` that should be the union of pieces `s`:
-/// `y == expected` (the set traced from the mask independently of the kernel's operations),
-/// and the invariants of [`cells_invariants`].
-pub fn cells_check(t: &mut Tally, cx: &Complex, s: Cells, y: &Y, expected: &Y, what: &str) -> Res {
-    law(t, CELL_ORACLE[0], y == expected, || {
-        format!("{what} on {} ({s:?}){}", cx.name, neq(y, expected))
-    })?;
-    cells_invariants(t, cx, s, y, what)
+/// A cell oracle: a universe of sets indexed by [`Cells`] masks, whose Boolean algebra is
+/// bitwise on the masks, and which reads the invariants of each set off its mask.
+pub trait CellOracle {
+    /// The sets of the universe.
+    type Set: Algebra;
+    /// The name of the law `kernel result = expected set`.
+    const SAME: &'static str;
+    /// The universe's name, for failure messages.
+    fn name(&self) -> &str;
+    /// The number of cells (bits of a mask).
+    fn cells(&self) -> usize;
+    /// The invariants of a set `y` that should be the union `s`, read off the mask (Betti
+    /// numbers, measure, locations), each counted as a law.
+    fn invariants(&self, t: &mut Tally, s: Cells, y: &Self::Set, what: &str) -> Res;
 }
 
-/// The invariants of a set `y` that should be the union of pieces `s`, read off the mask: its
-/// Betti numbers equal the flood-fill counts, its area the sum of the pieces, and each piece
-/// centroid (and a point outside the window) is located as the mask says.
-pub fn cells_invariants(t: &mut Tally, cx: &Complex, s: Cells, y: &Y, what: &str) -> Res {
-    let want = cx.betti(s);
-    let got = y.betti();
-    let mut holes = got.holes.clone();
-    holes.sort_unstable();
-    law(
-        t,
-        CELL_ORACLE[1],
-        got.components == want.components
-            && holes == want.holes_sorted
-            && got.total_holes == want.total_holes,
-        || {
-            format!(
-                "{what} on {} ({s:?}): kernel {got:?}, expected {want:?}",
-                cx.name
-            )
-        },
-    )?;
-    let (ga, wa) = (y.area(), cx.area(s));
-    law(t, CELL_ORACLE[2], ga == wa, || {
-        format!(
-            "{what} on {} ({s:?}): area {ga:?}, expected {wa:?}",
-            cx.name
-        )
-    })?;
-    let pts: Vec<_> = cx.probes().into_iter().map(|(_, p)| p).collect();
-    let (gl, wl) = (y.locate(&pts), cx.expected_locations(s));
-    law(t, CELL_ORACLE[3], gl == wl, || {
-        format!(
-            "{what} on {} ({s:?}): located {gl:?}, expected {wl:?}",
-            cx.name
-        )
-    })
-}
-
-/// The grid-cell oracle on all results of one binary case: a∧b, a∨b, a∖b, a⊕b and a' against
-/// the bitwise operations on the masks.
-pub fn cells_binary(
+/// The cell oracle for one kernel result `y` that should be the union `s`: `y == expected`
+/// (the set built from the mask independently of the kernel's operations), and the invariants
+/// of [`CellOracle::invariants`].
+pub fn cells_check<O: CellOracle>(
     t: &mut Tally,
-    cx: &Complex,
-    (a, b): (Cells, Cells),
-    out: &BinaryOut<Y>,
-    expected: &dyn Fn(Cells) -> Y,
+    o: &O,
+    s: Cells,
+    y: &O::Set,
+    expected: &O::Set,
+    what: &str,
 ) -> Res {
-    let n = cx.len();
-    let cases: [(&str, Cells, &Y); 5] = [
+    law(t, O::SAME, y == expected, || {
+        format!("{what} on {} ({s:?}){}", o.name(), neq(y, expected))
+    })?;
+    o.invariants(t, s, y, what)
+}
+
+/// The name of the order law against mask inclusion.
+pub const CELL_ORDER: &str = "cells: a∧b = a ⇔ mask(a) ⊆ mask(b)";
+
+/// The cell oracle on all results of one binary case: a∧b, a∨b, a∖b, a⊕b and a' against the
+/// bitwise operations on the masks (`expected` gives the set of a mask), and the order against
+/// mask inclusion.
+pub fn cells_binary<O: CellOracle>(
+    t: &mut Tally,
+    o: &O,
+    (a, b): (Cells, Cells),
+    out: &BinaryOut<O::Set>,
+    expected: &dyn Fn(Cells) -> O::Set,
+) -> Res {
+    let n = o.cells();
+    let cases: [(&str, Cells, &O::Set); 5] = [
         ("a∧b", a.and(b), &out.meet),
         ("a∨b", a.or(b), &out.join),
         ("a∖b", a.minus(b, n), &out.difference),
@@ -523,13 +504,10 @@ pub fn cells_binary(
         ("a'", a.not(n), &out.complement_a),
     ];
     for (what, s, y) in cases {
-        cells_check(t, cx, s, y, &expected(s), what)?;
+        cells_check(t, o, s, y, &expected(s), what)?;
     }
     let order = out.meet == expected(a);
-    law(
-        t,
-        "cells: a∧b = a ⇔ mask(a) ⊆ mask(b)",
-        order == a.le(b),
-        || format!("on {}: a = {a:?}, b = {b:?}", cx.name),
-    )
+    law(t, CELL_ORDER, order == a.le(b), || {
+        format!("on {}: a = {a:?}, b = {b:?}", o.name())
+    })
 }

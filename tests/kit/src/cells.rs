@@ -36,13 +36,13 @@
 //! needed, and the decomposition is the unique realizable spadjor (seed 000 Thm 3.21): within
 //! one atom, curves touch only where a component of the complement pinches, never in a cycle.
 
+use crate::arrangement;
+use crate::laws::{law, CellOracle, Res, Tally};
+use crate::Y;
 use std::collections::HashMap;
 use yinset::kernel::Point;
 use yinset::num::Rational;
 use yinset::yin2::{Location, YinSet2};
-
-use super::arrangement;
-use super::Y;
 
 /// A vertex in integer coordinates scaled by the complex's denominator (2 for the grids).
 type V = (i64, i64);
@@ -66,6 +66,7 @@ pub enum Split {
 /// plane by [`Complex::point`], through a rational affine map if the complex has one.
 #[derive(Clone, Debug)]
 pub struct Complex {
+    /// Its name in tables and failure messages.
     pub name: String,
     /// Each piece as a counterclockwise cycle of scaled integer coordinates.
     pub pieces: Vec<Vec<(i64, i64)>>,
@@ -122,26 +123,34 @@ impl Affine {
 /// A union of pieces of a [`Complex`], plus the exterior of the window if `outside`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Cells {
+    /// Bit p: piece (or cell) p is in the set.
     pub mask: u64,
+    /// The exterior of the window is in the set.
     pub outside: bool,
 }
 
 impl Cells {
+    /// The set of these pieces, with the exterior if `outside`.
     pub fn new(mask: u64, outside: bool) -> Cells {
         Cells { mask, outside }
     }
+    /// The meet (intersection of the masks).
     pub fn and(self, o: Cells) -> Cells {
         Cells::new(self.mask & o.mask, self.outside && o.outside)
     }
+    /// The join (union of the masks).
     pub fn or(self, o: Cells) -> Cells {
         Cells::new(self.mask | o.mask, self.outside || o.outside)
     }
+    /// The complement in a universe of `n` pieces.
     pub fn not(self, n: usize) -> Cells {
         Cells::new(!self.mask & full_mask(n), !self.outside)
     }
+    /// The difference, in a universe of `n` pieces.
     pub fn minus(self, o: Cells, n: usize) -> Cells {
         self.and(o.not(n))
     }
+    /// The symmetric difference.
     pub fn xor(self, o: Cells) -> Cells {
         Cells::new(self.mask ^ o.mask, self.outside != o.outside)
     }
@@ -163,8 +172,11 @@ pub fn full_mask(n: usize) -> u64 {
 /// The expected Betti numbers: components, and the sorted multiset of holes per component.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ExpectedBetti {
+    /// The number of components.
     pub components: usize,
+    /// The number of holes of each component, in increasing order.
     pub holes_sorted: Vec<usize>,
+    /// The number of holes in all.
     pub total_holes: usize,
 }
 
@@ -246,7 +258,7 @@ impl Complex {
 
     /// The bounded faces of the arrangement of the sides of `polygons` (integer vertices, no two
     /// sides collinear): pieces whose vertices include the sides' crossings, with their
-    /// non-trivial denominators (tests/common/arrangement.rs).
+    /// non-trivial denominators (tests/kit/src/arrangement.rs).
     pub fn arrangement(name: &str, polygons: &[Vec<(i64, i64)>]) -> Complex {
         let (faces, den) = arrangement::faces(polygons);
         Complex::from_pieces(name, faces, den)
@@ -308,6 +320,7 @@ impl Complex {
         })
     }
 
+    /// The number of pieces.
     pub fn len(&self) -> usize {
         self.pieces.len()
     }
@@ -568,4 +581,63 @@ fn interior(c: &[V]) -> (i64, i64, i64) {
         })
         .map(|(a, b, d)| (a.0 + b.0 + d.0, a.1 + b.1 + d.1, 3))
         .expect("a simple polygon has an ear")
+}
+
+/// The names of the 2D cell oracle's checks, in the order [`Complex`]'s [`CellOracle`] counts
+/// them: the result against the set traced from the mask, then its invariants.
+pub const CELL_ORACLE: [&str; 4] = [
+    "cells: kernel result = set traced from the mask",
+    "cells: Betti numbers = flood-fill counts",
+    "cells: area = sum of the pieces",
+    "cells: locate(piece centroid) = mask bit",
+];
+
+impl CellOracle for Complex {
+    type Set = Y;
+    const SAME: &'static str = CELL_ORACLE[0];
+
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn cells(&self) -> usize {
+        self.len()
+    }
+
+    /// Its Betti numbers equal the flood-fill counts, its area the sum of the pieces, and each
+    /// piece centroid (and a point outside the window) is located as the mask says.
+    fn invariants(&self, t: &mut Tally, s: Cells, y: &Y, what: &str) -> Res {
+        let want = self.betti(s);
+        let got = y.betti();
+        let mut holes = got.holes.clone();
+        holes.sort_unstable();
+        law(
+            t,
+            CELL_ORACLE[1],
+            got.components == want.components
+                && holes == want.holes_sorted
+                && got.total_holes == want.total_holes,
+            || {
+                format!(
+                    "{what} on {} ({s:?}): kernel {got:?}, expected {want:?}",
+                    self.name
+                )
+            },
+        )?;
+        let (ga, wa) = (y.area(), self.area(s));
+        law(t, CELL_ORACLE[2], ga == wa, || {
+            format!(
+                "{what} on {} ({s:?}): area {ga:?}, expected {wa:?}",
+                self.name
+            )
+        })?;
+        let pts: Vec<_> = self.probes().into_iter().map(|(_, p)| p).collect();
+        let (gl, wl) = (y.locate(&pts), self.expected_locations(s));
+        law(t, CELL_ORACLE[3], gl == wl, || {
+            format!(
+                "{what} on {} ({s:?}): located {gl:?}, expected {wl:?}",
+                self.name
+            )
+        })
+    }
 }
