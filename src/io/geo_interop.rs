@@ -30,7 +30,12 @@ use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 pub enum GeoError {
     /// A coordinate is not finite (NaN or infinite).
     #[error("polygon {polygon}: {source}")]
-    Number { polygon: usize, source: NumError },
+    Number {
+        /// The polygon, counting from 0.
+        polygon: usize,
+        /// What is wrong with the coordinate.
+        source: NumError,
+    },
     /// The rings do not bound a Yin set (the validator's reason; curves count exteriors and
     /// holes in order, polygon by polygon).
     #[error(transparent)]

@@ -27,7 +27,7 @@ pub struct Facet {
 }
 
 /// The boundary triangles of `sets` with their surfaces' orientations, in the pictures' own
-/// coordinates ([`super::picture_frame`]: offsets from the lower corner of the sets' bounding
+/// coordinates (`io::picture_frame`: offsets from the lower corner of the sets' bounding
 /// box over its larger side, computed exactly, then rounded to `f64`), so that sets at any
 /// position and scale are drawn alike.
 pub fn facets<N: Num>(sets: &[&YinSet3<N>]) -> Vec<Facet> {

@@ -2,7 +2,7 @@
 //! oriented ones dashed (seed 000 Fig. 13), non-manifold points (vertices shared by two or more
 //! curves, where curves touch) marked with dots.
 //!
-//! Coordinates are the picture's own ([`super::picture_frame`]): offsets from the lower-left
+//! Coordinates are the picture's own (`io::picture_frame`): offsets from the lower-left
 //! corner of the sets' bounding box over its larger side, computed exactly and then written
 //! as `f64`, so sets at any position and scale are drawn alike; the y axis points up. An
 //! unbounded set is filled to the edge of the picture.
