@@ -146,6 +146,30 @@ fn check_rounded<N: Num>(
              {EXACTLY}"
         )));
     }
+    // Neighbours merged by rounding where the validator sees none: a last vertex rounded onto
+    // the first, which it takes for the closing repeat and drops.
+    let merged = origins
+        .iter()
+        .zip(rounded.iter().flatten())
+        .find_map(|((k, r, ring), curve)| {
+            let n = ring.len();
+            let v = (0..n).find(|&i| {
+                let j = (i + 1) % n;
+                curve[i] == curve[j] && ring[i] != ring[j]
+            })?;
+            Some((*k, *r, v, (v + 1) % n, ring))
+        });
+    if let Some((k, r, v, w, ring)) = merged {
+        if a_set() {
+            return Err(WriteError(format!(
+                "rounded to the nearest f64s, vertices {v} {} and {w} {} of {} coincide: \
+                 {EXACTLY}",
+                ring[v],
+                ring[w],
+                ring_name(k, r)
+            )));
+        }
+    }
     let curves = rounded.iter().flatten();
     let turned = origins.iter().zip(curves).find(|((_, _, ring), curve)| {
         twice_signed_area(curve).sign() != twice_signed_area(ring).sign()
@@ -250,6 +274,23 @@ mod tests {
         let e = nearest_polygons(&apart).unwrap_err().0;
         assert!(e.contains("share the edge"), "{e}");
         assert!(e.contains("'s exterior ring is (1"), "{e}");
+    }
+
+    /// A quadrilateral whose last vertex rounds onto its first: the rounded ring is a valid
+    /// triangle, but the set written would not be the set.
+    #[test]
+    fn a_last_vertex_rounded_onto_the_first_is_refused() {
+        let p = |x: &str, y: &str| Point::new(q(x), q(y));
+        let quad = Polygon {
+            exterior: vec![p("0", "0"), p("1", "0"), p("1", "1"), p("1e-400", "2e-400")],
+            interiors: vec![],
+        };
+        let e = nearest_polygons(&[quad]).unwrap_err().0;
+        assert!(e.contains("vertices 3 (1/1"), "{e}");
+        assert!(
+            e.contains("and 0 (0, 0) of polygon 0's exterior ring coincide"),
+            "{e}"
+        );
     }
 
     #[test]
