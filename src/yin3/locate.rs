@@ -30,13 +30,9 @@ impl TriBoxes {
     /// that a triangle exactly `slack` away is among them).
     pub(crate) fn at<N: Num>(&self, q: &Point3<N>, slack: f64) -> impl Iterator<Item = usize> + '_ {
         let b = f64_box([q]);
-        let widen = |v: [f64; 3], by: f64| {
-            v.map(|x| match by < 0.0 {
-                true => (x + by).next_down(),
-                false => (x + by).next_up(),
-            })
-        };
-        let near = AABB::from_corners(widen(b.lower(), -slack), widen(b.upper(), slack));
+        let lower = b.lower().map(|x| (x - slack).next_down());
+        let upper = b.upper().map(|x| (x + slack).next_up());
+        let near = AABB::from_corners(lower, upper);
         self.0
             .locate_in_envelope_intersecting(&near)
             .map(|g| g.data)
