@@ -936,7 +936,7 @@ fn ogc_rings_must_be_closed_in_wkt_geojson_and_wkb() {
         1,
         &[
             "line 1, column 10",
-            "a ring of 3 points is not closed: it ends at (0, 4)",
+            "a ring of 3 points is not closed: its last point is not its first",
         ],
     );
     fails(

@@ -464,11 +464,15 @@ mod tests {
                 (1, 8),
                 "expected `(`, found the end of the input",
             ),
-            ("MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0))", (1, 37), "not closed"),
+            (
+                "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0))",
+                (1, 37),
+                "not closed",
+            ),
             (
                 "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0)),\n ((5 0, 7 0, 7 2)))",
                 (2, 3),
-                "a ring of 3 points is not closed: it ends at (7, 2), not at its first point (5, 0)",
+                "a ring of 3 points is not closed: its last point is not its first",
             ),
             (
                 "POLYGON ((0 0, 4 0, 4 4, 0 0), (1 1, 2 1, 2 2))",
