@@ -228,3 +228,15 @@ fn exact_fill_of_a_ring_spanning_sixty_orders_of_magnitude() {
         .expect("finite rings are always filled");
     set.validate().expect("valid");
 }
+
+/// parse_wkt, `POLYGON((0 0666…60, 0 0))` (a 67-digit y): an unclosed ring is refused by the
+/// exact and the float reader with the same message, although its first point reads as
+/// different numbers in the two modes (the message once showed them).
+#[test]
+fn unclosed_ring_is_refused_alike_in_both_modes() {
+    let text = format!("POLYGON((0 0{}0, 0 0))", "6".repeat(66));
+    let exact = yinset::io::wkt::read_polygons::<yinset::num::Rational>(&text).unwrap_err();
+    let float = yinset::io::wkt::read_polygons::<Float>(&text).unwrap_err();
+    assert_eq!(exact, float);
+    assert!(exact.message.contains("is not closed"), "{exact:?}");
+}
