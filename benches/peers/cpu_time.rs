@@ -97,3 +97,45 @@ impl ValueFormatter for Nanoseconds {
         "ns"
     }
 }
+
+#[repr(C)]
+struct Timeval {
+    tv_sec: i64,
+    tv_usec: i64,
+}
+
+/// Linux's `struct rusage`: the user and system times, then 14 counters of `long`.
+#[repr(C)]
+struct Rusage {
+    ru_utime: Timeval,
+    ru_stime: Timeval,
+    #[allow(dead_code)] // written by getrusage, not read here
+    counters: [i64; 14],
+}
+
+extern "C" {
+    fn getrusage(who: i32, usage: *mut Rusage) -> i32;
+}
+
+/// Linux's `RUSAGE_CHILDREN`: the children of the calling process that have been waited for.
+const RUSAGE_CHILDREN: i32 = -1;
+
+/// The CPU time (user and system) of this process's waited-for children so far.
+#[allow(dead_code)] // only the benches that spawn processes use it
+pub fn children_cpu() -> Duration {
+    let zero = || Timeval {
+        tv_sec: 0,
+        tv_usec: 0,
+    };
+    let mut r = Rusage {
+        ru_utime: zero(),
+        ru_stime: zero(),
+        counters: [0; 14],
+    };
+    // SAFETY: `getrusage` writes one `struct rusage` (two `struct timeval` of two 64-bit fields
+    // and 14 `long`s on x86_64 and aarch64 Linux) to a valid pointer and reads nothing else.
+    let rc = unsafe { getrusage(RUSAGE_CHILDREN, &mut r) };
+    assert_eq!(rc, 0, "getrusage(RUSAGE_CHILDREN) failed");
+    let d = |t: &Timeval| Duration::new(t.tv_sec as u64, 1000 * t.tv_usec as u32);
+    d(&r.ru_utime) + d(&r.ru_stime)
+}
