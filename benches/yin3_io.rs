@@ -70,7 +70,9 @@ const RATIOS: [Ratio; 5] = [
     ("read/meet", "≤ 0.5", |v| {
         Some((v.get("parse R")? + v.get("valid R")?) / v.get("meet")?)
     }),
-    ("CLI/meet", "≤ 1.5", |v| Some(v.get("CLI cpu")? / v.get("meet")?)),
+    ("CLI/meet", "≤ 1.5", |v| {
+        Some(v.get("CLI cpu")? / v.get("meet")?)
+    }),
     ("¬ µs/tri", "flat", |v| {
         Some(1e3 * v.get("¬R")? / v.get("R tris")?)
     }),
@@ -119,12 +121,7 @@ fn obj<N: Num>(set: &YinSet3<N>) -> String {
 }
 
 /// Parse and `from_triangles` of OBJ text, timed apart (keys `parse X`, `valid X`, `X tris`).
-fn read<N: Num>(
-    text: &str,
-    x: &str,
-    reps: usize,
-    v: &mut Values,
-) -> Result<YinSet3<N>, String> {
+fn read<N: Num>(text: &str, x: &str, reps: usize, v: &mut Values) -> Result<YinSet3<N>, String> {
     let (t, mesh) = best(reps, || (), |()| read_obj::<N>(text));
     let mesh = mesh.map_err(|e| format!("parse {x}: {e}"))?;
     v.insert(format!("parse {x}"), t);
@@ -157,7 +154,11 @@ fn cli(o: &Opts, w: &Workload, float: bool, v: &mut Values) -> Result<(), String
         if !done.status.success() {
             let err = String::from_utf8_lossy(&done.stderr);
             let last = err.lines().rev().find(|l| !l.trim().is_empty());
-            return Err(format!("yinset meet: {}: {}", done.status, last.unwrap_or("")));
+            return Err(format!(
+                "yinset meet: {}: {}",
+                done.status,
+                last.unwrap_or("")
+            ));
         }
         if wall > LONG_MS {
             break;
@@ -241,7 +242,11 @@ fn workloads(o: &Opts) -> (Vec<Workload>, Vec<String>) {
             b,
         })
         .collect();
-    let sizes: &[usize] = if o.quick { &[10_000] } else { &[10_000, 100_000] };
+    let sizes: &[usize] = if o.quick {
+        &[10_000]
+    } else {
+        &[10_000, 100_000]
+    };
     for &n in sizes {
         let m = work::sphere_m(n);
         let (a, b) = work::v1(n);
@@ -308,7 +313,10 @@ fn all_columns() -> Vec<(String, Box<dyn Fn(&Values) -> Option<f64>>)> {
         })
         .collect();
     // Reading back is parse and from_triangles together, as the target counts it.
-    let at = cols.iter().position(|(q, _)| q == "¬R").expect("¬R is a column");
+    let at = cols
+        .iter()
+        .position(|(q, _)| q == "¬R")
+        .expect("¬R is a column");
     cols.insert(
         at,
         (
@@ -355,8 +363,14 @@ fn tsv(rows: &[Row]) -> String {
             writeln!(s, "{}\t{}\t{q}\t{x}", r.workload, r.mode).expect("writing to a String");
         }
         if let Some(st) = &r.status {
-            writeln!(s, "{}\t{}\tstatus\t{}", r.workload, r.mode, st.replace(['\t', '\n'], " "))
-                .expect("writing to a String");
+            writeln!(
+                s,
+                "{}\t{}\tstatus\t{}",
+                r.workload,
+                r.mode,
+                st.replace(['\t', '\n'], " ")
+            )
+            .expect("writing to a String");
         }
     }
     s
@@ -369,7 +383,11 @@ fn read_tsv(path: &Path) -> Vec<Row> {
     for (i, line) in text.lines().enumerate() {
         let f: Vec<&str> = line.splitn(4, '\t').collect();
         let [w, m, q, x] = f[..] else {
-            panic!("{}:{}: not workload⇥mode⇥quantity⇥value", path.display(), i + 1)
+            panic!(
+                "{}:{}: not workload⇥mode⇥quantity⇥value",
+                path.display(),
+                i + 1
+            )
         };
         if !rows.last().is_some_and(|r| r.workload == w && r.mode == m) {
             rows.push(Row {
@@ -468,9 +486,7 @@ fn main() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let out = get("--out").map_or_else(|| root.join("target/yin3_io.md"), PathBuf::from);
     if let Some(i) = args.iter().position(|a| a == "--merge") {
-        let file = |k: usize| {
-            PathBuf::from(args.get(i + k).expect("--merge BEFORE.tsv AFTER.tsv"))
-        };
+        let file = |k: usize| PathBuf::from(args.get(i + k).expect("--merge BEFORE.tsv AFTER.tsv"));
         let s = merge(&read_tsv(&file(1)), &read_tsv(&file(2)));
         print!("{s}");
         return save(&out, &s);
