@@ -18,7 +18,8 @@
 //! benches/yin3_work, V1 at 10⁴ and 10⁵ triangles per sphere (`--quick`: 10⁴ only, one call
 //! each) and kigumi's checker ∧ text from `--kigumi DIR` or `$KIGUMI_MESHES` (a row saying so
 //! when neither is given or the files are missing). `--tsv` writes the measurements one a line;
-//! `--merge` prints the before/after tables of two such files (benches/yin3_io.sh).
+//! `--merge` prints the before/after tables of two such files (benches/yin3_io.sh). A row
+//! notes where the command's output differs from the library's text of the meet.
 
 #[allow(dead_code)] // only the clocks are used here
 #[path = "peers/cpu_time.rs"]
@@ -136,8 +137,9 @@ fn read<N: Num>(text: &str, x: &str, reps: usize, v: &mut Values) -> Result<YinS
     Ok(set)
 }
 
-/// The best wall and CPU ms of `yinset meet A B -o OUT` (with `--eps auto` if `float`).
-fn cli(o: &Opts, w: &Workload, float: bool, v: &mut Values) -> Result<(), String> {
+/// The best wall and CPU ms of `yinset meet A B -o OUT` (with `--eps auto` if `float`), and
+/// the text it wrote.
+fn cli(o: &Opts, w: &Workload, float: bool, v: &mut Values) -> Result<String, String> {
     let out = work::out_dir().join(format!("io_{}_{}.obj", w.slug, float as u8));
     let (mut wall, mut cpu) = (f64::INFINITY, f64::INFINITY);
     for _ in 0..o.reps.max(1) {
@@ -166,7 +168,7 @@ fn cli(o: &Opts, w: &Workload, float: bool, v: &mut Values) -> Result<(), String
     }
     v.insert("CLI wall".into(), wall);
     v.insert("CLI cpu".into(), cpu);
-    Ok(())
+    std::fs::read_to_string(&out).map_err(|e| format!("{}: {e}", out.display()))
 }
 
 /// Every quantity of one pair in backend `N`, as far as it gets (the error says where it
@@ -181,7 +183,8 @@ fn measure<N: Num>(o: &Opts, w: &Workload, v: &mut Values) -> Result<(), String>
     let (t, written) = best(o.reps, || (), |()| obj(&m));
     v.insert("write R".into(), t);
     let float = !N::EXACT;
-    cli(o, w, float, v)?;
+    // The command must have done the work timed here: its file is the library's text.
+    let same = cli(o, w, float, v)? == written;
     if m.is_empty() || m.is_full() || !m.is_bounded() {
         return Err("the meet is empty, full or unbounded: nothing to read back".into());
     }
@@ -192,7 +195,11 @@ fn measure<N: Num>(o: &Opts, w: &Workload, v: &mut Values) -> Result<(), String>
     drop(c);
     let (t, _) = best(o.reps, || (), |()| obj(&r));
     v.insert("convert R".into(), t);
-    Ok(())
+    if same {
+        Ok(())
+    } else {
+        Err("the command's output differs from the library's OBJ text of the meet".into())
+    }
 }
 
 /// [`measure`] as a row, a panic included.
@@ -291,24 +298,28 @@ struct Opts {
     yinset: PathBuf,
 }
 
-/// A quantity's cell: ms (or a count) with three significant digits, "–" if missing.
+/// A quantity's cell: ms with three significant digits, a whole number (a count) in full, "–"
+/// if missing.
 fn cell(x: Option<f64>) -> String {
     match x {
         None => "–".into(),
-        Some(x) if x >= 100.0 => format!("{x:.0}"),
+        Some(x) if x >= 100.0 || x.fract() == 0.0 => format!("{x:.0}"),
         Some(x) if x >= 10.0 => format!("{x:.1}"),
         Some(x) if x >= 1.0 => format!("{x:.2}"),
         Some(x) => format!("{x:.3}"),
     }
 }
 
+/// A column's value in a row.
+type Getter = Box<dyn Fn(&Values) -> Option<f64>>;
+
 /// The columns of the one-run table: (header, value of a row).
-fn all_columns() -> Vec<(String, Box<dyn Fn(&Values) -> Option<f64>>)> {
-    let mut cols: Vec<(String, Box<dyn Fn(&Values) -> Option<f64>>)> = QUANTITIES
+fn all_columns() -> Vec<(String, Getter)> {
+    let mut cols: Vec<(String, Getter)> = QUANTITIES
         .iter()
         .filter(|q| !matches!(**q, "parse R" | "valid R"))
         .map(|&q| {
-            let get: Box<dyn Fn(&Values) -> Option<f64>> = Box::new(move |v| v.get(q).copied());
+            let get: Getter = Box::new(move |v| v.get(q).copied());
             (q.to_string(), get)
         })
         .collect();
