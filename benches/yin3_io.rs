@@ -489,11 +489,7 @@ fn save(path: &Path, text: &str) {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let get = |k: &str| {
-        args.iter()
-            .position(|a| a == k)
-            .and_then(|i| args.get(i + 1))
-    };
+    let get = |k: &str| work::option(&args, k);
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let out = get("--out").map_or_else(|| root.join("target/yin3_io.md"), PathBuf::from);
     if let Some(i) = args.iter().position(|a| a == "--merge") {

@@ -408,11 +408,7 @@ fn peak(mode: &str, m: usize) {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let get = |k: &str| {
-        args.iter()
-            .position(|a| a == k)
-            .and_then(|i| args.get(i + 1))
-    };
+    let get = |k: &str| work::option(&args, k);
     if let Some(mode) = get("--peak") {
         let m = args
             .iter()

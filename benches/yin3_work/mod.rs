@@ -259,3 +259,9 @@ pub fn load<N: Num>(path: &Path) -> YinSet3<N> {
     YinSet3::from_triangles(m.vertices, m.faces)
         .unwrap_or_else(|e| panic!("{}: not a Yin set: {e}", path.display()))
 }
+
+/// The value after the command-line option `name` in `args`, if any.
+pub fn option<'a>(args: &'a [String], name: &str) -> Option<&'a String> {
+    let i = args.iter().position(|a| a == name)?;
+    args.get(i + 1)
+}
