@@ -12,7 +12,7 @@
 use super::grid_orient::odd_decode;
 use super::{Num, Rational};
 use num_bigint::BigInt;
-use num_traits::Zero;
+use num_traits::{ToPrimitive, Zero};
 
 /// Σ over `simplices` of det[p₁ − o, …, p_D − o], the `p`s indices into the finite `points`
 /// and o = `points[0]`: twice the signed area of closed curves given by their directed edges
@@ -36,7 +36,7 @@ pub(crate) fn det_sum<const D: usize>(
         .max()
         .unwrap_or(0);
     let scale = Rational::times_power_of_two(BigInt::from(1), BigInt::from(1), D as i32 * low);
-    let sum = if width <= NARROW[D - 2] {
+    let relative = if width <= NARROW[D - 2] {
         let ints = |p: &[(i64, i32); D]| {
             p.map(|(m, e)| {
                 if m == 0 {
@@ -47,33 +47,79 @@ pub(crate) fn det_sum<const D: usize>(
             })
         };
         let o = ints(&decoded[0]);
-        let rel: Vec<[i128; D]> = (decoded.iter())
-            .map(|p| {
-                let p = ints(p);
-                std::array::from_fn(|k| p[k] - o[k])
-            })
-            .collect();
-        let mut total = Total::default();
-        for s in simplices {
-            total.add(det(s.map(|i| &rel[i])));
-        }
-        total.value()
+        Relative::Narrow(
+            (decoded.iter())
+                .map(|p| {
+                    let p = ints(p);
+                    std::array::from_fn(|k| p[k] - o[k])
+                })
+                .collect(),
+        )
     } else {
         let ints = |p: &[(i64, i32); D]| {
             p.map(|(m, e)| BigInt::from(m) << if m == 0 { 0 } else { e - low })
         };
         let o = ints(&decoded[0]);
-        let rel: Vec<[BigInt; D]> = (decoded.iter())
-            .map(|p| {
-                let p = ints(p);
-                std::array::from_fn(|k| &p[k] - &o[k])
-            })
-            .collect();
-        simplices
-            .map(|s| big_det(s.map(|i| &rel[i])))
-            .fold(BigInt::zero(), |a, b| a + b)
+        Relative::Wide(
+            (decoded.iter())
+                .map(|p| {
+                    let p = ints(p);
+                    std::array::from_fn(|k| &p[k] - &o[k])
+                })
+                .collect(),
+        )
     };
-    Rational::from_integer(sum) * scale
+    Rational::from_integer(relative.det_sum(simplices)) * scale
+}
+
+/// Integer points relative to the first, as `i128`s where they are narrow enough for exact
+/// `i128` determinants ([`NARROW`]), else as big integers.
+pub(super) enum Relative<const D: usize> {
+    /// Every relative coordinate below 2^(`NARROW` + 1) in magnitude.
+    Narrow(Vec<[i128; D]>),
+    /// Any others.
+    Wide(Vec<[BigInt; D]>),
+}
+
+impl<const D: usize> Relative<D> {
+    /// The relative form of the integer points `points` (not empty), narrow where it can be.
+    pub(super) fn of(points: &[[BigInt; D]]) -> Relative<D> {
+        let o = &points[0];
+        let wide: Vec<[BigInt; D]> = (points.iter())
+            .map(|p| std::array::from_fn(|k| &p[k] - &o[k]))
+            .collect();
+        let bits = (wide.iter().flatten().map(|v| v.bits()).max()).unwrap_or(0);
+        let to_narrow = |p: &[BigInt; D]| -> Option<[i128; D]> {
+            let mut out = [0i128; D];
+            for (o, v) in out.iter_mut().zip(p) {
+                *o = v.to_i128()?;
+            }
+            Some(out)
+        };
+        let narrow = (bits <= NARROW[D - 2] as u64)
+            .then(|| wide.iter().map(to_narrow).collect::<Option<Vec<_>>>())
+            .flatten();
+        match narrow {
+            Some(rel) => Relative::Narrow(rel),
+            None => Relative::Wide(wide),
+        }
+    }
+
+    /// Σ over `simplices` (indices into the points) of det[p₁ − o, …, p_D − o].
+    pub(super) fn det_sum(&self, simplices: impl Iterator<Item = [usize; D]>) -> BigInt {
+        match self {
+            Relative::Narrow(rel) => {
+                let mut total = Total::default();
+                for s in simplices {
+                    total.add(det(s.map(|i| &rel[i])));
+                }
+                total.value()
+            }
+            Relative::Wide(rel) => simplices
+                .map(|s| big_det(s.map(|i| &rel[i])))
+                .fold(BigInt::zero(), |a, b| a + b),
+        }
+    }
 }
 
 /// The widest grid integers, in bits, whose `i128` path is exact, for D = 2 and 3: the

@@ -67,7 +67,13 @@ pub(crate) fn grid_orient3d(
     let [d0, d1, d2] = d;
     let n = grid_integers([a0, a1, a2, b0, b1, b2, c0, c1, c2, d0, d1, d2])?;
     let diff = |p: usize| [0, 1, 2].map(|k| n[3 * p + k] - n[k]);
-    let (u, v, w) = (diff(1), diff(2), diff(3));
+    Some(det3_sign(diff(1), diff(2), diff(3)))
+}
+
+/// The sign of det[u, v, w] for integer vectors with components below 2^61 in magnitude,
+/// exactly on `i128`s: each minor of v and w is below 2^123, and each product with u is taken
+/// in two halves, the minor split at 2^64.
+pub(crate) fn det3_sign(u: [i64; 3], v: [i64; 3], w: [i64; 3]) -> Ordering {
     let wide = |x: i64| i128::from(x);
     // (v × w)ₖ, each below 2^123.
     let cross = [0, 1, 2].map(|k| {
@@ -83,10 +89,10 @@ pub(crate) fn grid_orient3d(
     }
     high += low >> 64;
     let low = low & i128::from(u64::MAX);
-    Some(match high {
+    match high {
         0 => low.cmp(&0),
         _ => high.cmp(&0),
-    })
+    }
 }
 
 #[cfg(test)]

@@ -14,6 +14,7 @@ mod float;
 mod gmp;
 mod grid_orient;
 mod interval;
+mod lattice;
 mod literal;
 mod quotient;
 mod rational;
@@ -28,6 +29,7 @@ pub use float::{Float, Tolerance, TooFine};
 pub use gmp::GmpRational;
 pub(crate) use grid_orient::common_grid;
 pub(crate) use interval::Interval;
+pub(crate) use lattice::lattice_det_sum;
 pub use literal::Literal;
 pub use rational::Rational;
 
@@ -243,8 +245,12 @@ pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<O
 /// The sign of det[b − a, c − a, d − a] evaluated in `f64` from coordinates each within
 /// 3 ulps of the exact ones, if the error bound proves it; `None` if it cannot decide.
 ///
-/// With M the largest magnitude and u = 2⁻⁵³, each difference is off by at most 8M·u, each
-/// 2×2 minor by about 70M²·u, the determinant by about 330M³·u; 2048M³·u is safe.
+/// A semi-static bound, in the size of the differences rather than of the coordinates, so that
+/// small triangles far from the origin are decided too. With M the largest coordinate, u = 2⁻⁵³
+/// and D the largest computed difference, each difference is off by at most e = 8M·u and every
+/// difference, true or computed, is at most D′ = D + e; each 2×2 minor is then off by at most
+/// 4D′e + 2e² + 6D′²u, and the determinant by 3(2D′²e + D′(4D′e + 2e² + 6D′²u)) + 30D′³u ≤
+/// 24D′²e + 48D′³u; twice that is safe against the rounding of the bound itself.
 pub(crate) fn filtered_orient3d(
     a: [f64; 3],
     b: [f64; 3],
@@ -260,8 +266,16 @@ pub(crate) fn filtered_orient3d(
     let w = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
     let det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
         + u[2] * (v[0] * w[1] - v[1] * w[0]);
-    let bound = 2048.0 * m * m * m * f64::EPSILON * 0.5;
-    if !det.is_finite() || !bound.is_finite() || m.is_nan() || m < 1e-90 {
+    let unit = f64::EPSILON * 0.5;
+    let e = 8.0 * m * unit;
+    let reach = [u, v, w]
+        .iter()
+        .flatten()
+        .fold(0.0f64, |s, x| s.max(x.abs()))
+        + e;
+    let bound = 2.0 * reach * reach * (24.0 * e + 48.0 * reach * unit);
+    // Below 1e-90 products of three differences could lose bits to underflow.
+    if !det.is_finite() || !bound.is_finite() || m.is_nan() || reach < 1e-90 {
         return None;
     }
     if det > bound {

@@ -1,7 +1,7 @@
 //! The default exact backend: rationals stored inline as two machine integers while they fit,
 //! as `num-rational`'s big rationals otherwise, compared through a floating-point filter.
 
-use super::grid_orient::odd_decode;
+use super::grid_orient::{det3_sign, odd_decode};
 use super::quotient::{nearest_f64, Leading};
 use super::{
     big, exact_orient, exact_orient3d, exact_orient3d_f64, exact_orient_f64, filtered_orient,
@@ -452,6 +452,75 @@ fn fraction_free_orient(a: [&Rational; 2], b: [&Rational; 2], c: [&Rational; 2])
     left.cmp(&right)
 }
 
+/// Sign of det[b − a, c − a, d − a] for small values on a common grid (decimal input: every
+/// denominator divides a power of ten): with L < 2⁶² the lcm of the twelve denominators, the
+/// coordinates times L are integers below 2¹²⁴ and their differences below 2¹²⁵, whose
+/// determinant is taken on `i128`s when they are below 2⁶¹ ([`det3_sign`]), in big integers
+/// otherwise. `None` for a big value or a larger L.
+fn lattice_orient3d(points: [[&Rational; 3]; 4]) -> Option<Ordering> {
+    let mut terms = [[(0i128, 1i128); 3]; 4];
+    let mut l: i128 = 1;
+    for (t, p) in terms.iter_mut().flatten().zip(points.iter().flatten()) {
+        let Repr::Small(n, d) = p.0 else {
+            return None;
+        };
+        let d = i128::from(d);
+        if l % d != 0 {
+            l = l / big::gcd_u128(l.unsigned_abs(), d.unsigned_abs()) as i128 * d;
+            if l >= LIMIT {
+                return None;
+            }
+        }
+        *t = (i128::from(n), d);
+    }
+    let [o, rest @ ..] = terms.map(|p| p.map(|(n, d)| n * (l / d)));
+    let [u, v, w] = rest.map(|p| [0, 1, 2].map(|k| p[k] - o[k]));
+    let narrow = |p: [i128; 3]| -> Option<[i64; 3]> {
+        let mut out = [0i64; 3];
+        for (o, x) in out.iter_mut().zip(p) {
+            *o = i64::try_from(x).ok().filter(|x| x.abs() < 1 << 61)?;
+        }
+        Some(out)
+    };
+    Some(match (narrow(u), narrow(v), narrow(w)) {
+        (Some(u), Some(v), Some(w)) => det3_sign(u, v, w),
+        _ => {
+            let big = |p: [i128; 3]| p.map(BigInt::from);
+            let (z, u, v, w) = (big([0; 3]), big(u), big(v), big(w));
+            exact_orient3d(z.each_ref(), u.each_ref(), v.each_ref(), w.each_ref())
+        }
+    })
+}
+
+/// Sign of det[b − a, c − a, d − a] in integers, without reducing any intermediate (a rational
+/// sum would take a gcd at every step): each difference p − a is a vector of integers over
+/// positive denominators, scaled by their product (by one of them where they are equal, as the
+/// coordinates of a constructed point's homogeneous form are) to a vector of integers, which
+/// changes the determinant by a positive factor.
+fn fraction_free_orient3d(
+    a: [&Rational; 3],
+    b: [&Rational; 3],
+    c: [&Rational; 3],
+    d: [&Rational; 3],
+) -> Ordering {
+    let a = a.map(|v| v.big());
+    let scaled = |p: [&Rational; 3]| -> [BigInt; 3] {
+        let p = p.map(|v| v.big());
+        let num = [0, 1, 2].map(|k| p[k].numer() * a[k].denom() - a[k].numer() * p[k].denom());
+        let den = [0, 1, 2].map(|k| p[k].denom() * a[k].denom());
+        if den[0] == den[1] && den[1] == den[2] {
+            num
+        } else {
+            let [x, y, z] = num;
+            let [dx, dy, dz] = den;
+            [x * &dy * &dz, y * &dx * &dz, z * dx * dy]
+        }
+    };
+    let (u, v, w) = (scaled(b), scaled(c), scaled(d));
+    let zero = [0, 0, 0].map(BigInt::from);
+    exact_orient3d(zero.each_ref(), u.each_ref(), v.each_ref(), w.each_ref())
+}
+
 /// The coordinates of a point as `i128` if they are integers of magnitude below `bound`: the
 /// orientation determinants of such points are computed exactly in `i128` (below 2⁶¹ in 2D,
 /// 2⁴⁰ in 3D, their determinants stay below 2¹²⁷).
@@ -636,15 +705,15 @@ impl Num for Rational {
     fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], _ctx: &()) -> Ordering {
         let f = |p: [&Self; 3]| p.map(approx);
         filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| {
-            let i = |p: [&Self; 3]| integers(p, 1 << 40);
-            match (i(a), i(b), i(c), i(d)) {
-                (Some(a), Some(b), Some(c), Some(d)) => {
-                    exact_orient3d(a.each_ref(), b.each_ref(), c.each_ref(), d.each_ref())
-                }
-                _ => match (dyadic(a), dyadic(b), dyadic(c), dyadic(d)) {
-                    (Some(a), Some(b), Some(c), Some(d)) => exact_orient3d_f64(a, b, c, d),
-                    _ => exact_orient3d(a, b, c, d),
-                },
+            // A repeated point (triangles sharing a corner) spans no volume, which no filter
+            // can certify.
+            if a == d || b == d || c == d || a == b || b == c || c == a {
+                return Ordering::Equal;
+            }
+            match (dyadic(a), dyadic(b), dyadic(c), dyadic(d)) {
+                (Some(a), Some(b), Some(c), Some(d)) => exact_orient3d_f64(a, b, c, d),
+                _ => lattice_orient3d([a, b, c, d])
+                    .unwrap_or_else(|| fraction_free_orient3d(a, b, c, d)),
             }
         })
     }
@@ -1052,5 +1121,84 @@ mod tests {
             assert_eq!(h, Rational::new(n.into(), (2 * d).into()));
             assert_eq!(h.clone() + h, x);
         }
+    }
+
+    /// The sign of det[b − a, c − a, d − a] in plain `num-rational` arithmetic: the oracle of
+    /// the 3D predicates.
+    fn plain_orient3d(p: &[[BigRational; 3]; 4]) -> Ordering {
+        let [u, v, w] = [1, 2, 3].map(|i| [0, 1, 2].map(|k| &p[i][k] - &p[0][k]));
+        let det = &u[0] * (&v[1] * &w[2] - &v[2] * &w[1]) - &u[1] * (&v[0] * &w[2] - &v[2] * &w[0])
+            + &u[2] * (&v[0] * &w[1] - &v[1] * &w[0]);
+        det.cmp(&BigRational::zero())
+    }
+
+    proptest::proptest! {
+        /// `orient3d` agrees with plain rational arithmetic, and its semi-static filter is never
+        /// wrong where it decides, on small triangles far from the origin (offsets to 10¹², sides
+        /// down to 10⁻⁹) with decimal corners (not dyadic: the lattice path) and d exactly on
+        /// their plane (a big value: the fraction-free path), or nudged off it by a few units of
+        /// 10⁻ʲ, or repeating a corner.
+        #[test]
+        fn orient3d_is_plain_rational_for_small_triangles_far_out(
+            offset in proptest::array::uniform3(-1_000_000_000_000i64..1_000_000_000_000),
+            sides in proptest::array::uniform3(proptest::array::uniform3(-1000i64..1000)),
+            scale in 0u32..10,
+            places in 0u32..6,
+            st in ((-50i64..50, 1i64..12), (-50i64..50, 1i64..12)),
+            nudge in (0usize..3, -3i64..=3, 8u32..40),
+            repeat in 0usize..8,
+        ) {
+            let ten = |k: u32| BigRational::from_integer(BigInt::from(10).pow(k));
+            let a: [BigRational; 3] = offset.map(|x| BigRational::from_integer(x.into()) / ten(places));
+            let corner = |s: [i64; 3]| [0, 1, 2].map(|k| &a[k] + BigRational::from_integer(s[k].into()) / ten(scale + places));
+            let (b, c) = (corner(sides[0]), corner(sides[1]));
+            let (s, t) = (BigRational::new(st.0.0.into(), st.0.1.into()), BigRational::new(st.1.0.into(), st.1.1.into()));
+            let mut d = [0, 1, 2].map(|k| &a[k] + &s * (&b[k] - &a[k]) + &t * (&c[k] - &a[k]));
+            d[nudge.0] += BigRational::from_integer(nudge.1.into()) / ten(nudge.2);
+            let p = match repeat {
+                0 => [a.clone(), b.clone(), c, a],
+                1 => [a, b.clone(), c, b],
+                _ => [a, b, c, d],
+            };
+            let r = p.clone().map(|q| q.map(Rational::from));
+            let [ra, rb, rc, rd] = r.each_ref().map(|q| q.each_ref());
+            let expected = plain_orient3d(&p);
+            proptest::prop_assert_eq!(Rational::orient3d(ra, rb, rc, rd, &()), expected);
+            let f = |q: [&Rational; 3]| q.map(approx);
+            if let Some(sign) = filtered_orient3d(f(ra), f(rb), f(rc), f(rd)) {
+                proptest::prop_assert_eq!(sign, expected);
+            }
+        }
+    }
+
+    /// The two exact fallbacks of `orient3d` on their own, against plain rational arithmetic:
+    /// decimals on the lattice of 10⁻¹⁸ (coplanar, and a unit of the last place off the plane),
+    /// and values of ~300-bit terms, where only the fraction-free one applies.
+    #[test]
+    fn exact_orient3d_fallbacks_are_plain_rational() {
+        let r = |s: &str| Rational::parse(s).unwrap().big().into_owned();
+        let on = ["0.1", "0.2", "0.3", "0.000000000000000001"];
+        let p = |x: [&str; 3]| x.map(r);
+        let coplanar = [
+            p([on[0], on[0], on[0]]),
+            p([on[1], on[0], on[0]]),
+            p([on[0], on[1], on[0]]),
+            p([on[2], on[2], on[0]]),
+        ];
+        let mut off = coplanar.clone();
+        off[3][2] = r("0.100000000000000001");
+        for q in [&coplanar, &off] {
+            let v = q.clone().map(|x| x.map(Rational::from));
+            let [a, b, c, d] = v.each_ref().map(|x| x.each_ref());
+            assert_eq!(lattice_orient3d([a, b, c, d]), Some(plain_orient3d(q)));
+            assert_eq!(fraction_free_orient3d(a, b, c, d), plain_orient3d(q));
+        }
+        assert_eq!(plain_orient3d(&off), Ordering::Greater);
+        let big = |k: u32| sized(7, 3, 40 + k) - sized(5, 2, 30 + k);
+        let q = [0, 1, 2, 3].map(|i| [0, 1, 2].map(|k| big(3 * i + k)));
+        let v = q.clone().map(|x| x.map(Rational::from));
+        let [a, b, c, d] = v.each_ref().map(|x| x.each_ref());
+        assert_eq!(lattice_orient3d([a, b, c, d]), None);
+        assert_eq!(fraction_free_orient3d(a, b, c, d), plain_orient3d(&q));
     }
 }

@@ -11,8 +11,9 @@ use super::glue::{corner_cycles, glued_surfaces};
 use super::hasse::{hasse, Atom3};
 use super::locate::{on_triangles, winding, TriBoxes};
 use crate::kernel::{BBox3, Point3};
-use crate::num::{det_sum, Num, Rational};
+use crate::num::{det_sum, lattice_det_sum, Num, Rational};
 use crate::yin2::Location;
+use num_bigint::BigInt;
 use std::hash::{Hash, Hasher};
 use std::sync::OnceLock;
 
@@ -182,6 +183,22 @@ impl<N: Num> Brep<N> {
     fn float_volume(&self) -> Rational {
         let points: Vec<[f64; 3]> = self.points.iter().map(|p| p.to_f64()).collect();
         det_sum(&points, self.tris.iter().copied()) / Rational::from_i64(6)
+    }
+
+    /// The volume of an exact boundary: a sixth of Σ det[p − o, q − o, r − o] over its
+    /// triangles, on the integers of its coordinates' common lattice where it has a modest one
+    /// ([`lattice_det_sum`]), else summed in `N`.
+    fn exact_volume(&self) -> N {
+        let fractions: Vec<[(BigInt, BigInt); 3]> = (self.points.iter())
+            .map(|p| p.coords().map(|c| c.fraction()))
+            .collect();
+        match lattice_det_sum(&fractions, self.tris.iter().copied()) {
+            Some(sum) => N::nearest(&(sum / Rational::from_i64(6))),
+            None => {
+                let sum = (self.all_corners()).fold(N::zero(), |s, [p, q, r]| s + det3(p, q, r));
+                sum / N::from_i64(6)
+            }
+        }
     }
 
     /// All triangles' corners.
@@ -415,12 +432,7 @@ impl<N: Num> YinSet3<N> {
         match &self.repr {
             Repr3::Empty => Some(N::zero()),
             Repr3::Full => None,
-            Repr3::Brep(b) if b.bounded && N::EXACT => {
-                let sum = b
-                    .all_corners()
-                    .fold(N::zero(), |s, [p, q, r]| s + det3(p, q, r));
-                Some(sum / N::from_i64(6))
-            }
+            Repr3::Brep(b) if b.bounded && N::EXACT => Some(b.exact_volume()),
             Repr3::Brep(b) if b.bounded => Some(N::nearest(&b.float_volume())),
             Repr3::Brep(_) => None,
         }

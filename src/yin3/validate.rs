@@ -226,7 +226,7 @@ impl Yin3Error {
 
 /// The boundary bounded by `faces` over `vertices`, every decision exact (float mode too: its
 /// ε applies to operations, not to validity); `rounded` if the vertices are the exact values
-/// of a float-mode input, whose errors show points as `f64`s.
+/// of a float-mode input (`f64`s), whose errors show points as `f64`s.
 fn build<N: Num>(
     vertices: &[Point3<N>],
     faces: &[Vec<usize>],
@@ -240,6 +240,29 @@ fn build<N: Num>(
             soup.push(tri.map(|v| &vertices[v]), 0);
             face_of.push(f);
         }
+    }
+    // A conforming complex (every two triangles meet only in shared corners and edges: most
+    // meshes, and every stored result) is its own arrangement; only others are arranged. The
+    // exact values of a float input are told apart as the `f64`s they are, whose planes'
+    // filter decides most pairs with a few dot products.
+    let everything = vec![true; soup.points.len()];
+    let conforming = if rounded {
+        let f64s: Vec<Point3<Float>> = (soup.points.iter())
+            .map(|p| {
+                let [x, y, z] = p.to_f64();
+                Point3::new(Float::new(x), Float::new(y), Float::new(z))
+            })
+            .collect();
+        conforming_after_moves(&f64s, &soup.tris, &everything)
+    } else {
+        conforming_after_moves(&soup.points, &soup.tris, &everything)
+    };
+    if conforming {
+        let tris = soup.tris;
+        let brep =
+            Brep::assemble(soup.points, tris).map_err(|e| e.renumber_faces(&face_of, rounded))?;
+        check_windings(&brep, &exact).map_err(|e| e.renumber_faces(&face_of, rounded))?;
+        return Ok(brep);
     }
     let arrangement = arrange(&mut soup, Pairs::All, &exact).map_err(|e| match e {
         ArrangeError::Clash {
