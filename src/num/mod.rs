@@ -222,15 +222,22 @@ pub trait Num:
 /// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within 3 ulps of
 /// the exact ones, if the error bound proves it; `None` if it cannot decide.
 ///
-/// With M the largest magnitude and u = 2⁻⁵³, each coordinate is off by at most 3M·u, each
-/// difference by 8M·u, each product by 35M²·u, the determinant by 71M²·u; 256M²·u is safe.
+/// A semi-static bound, as [`filtered_orient3d`]'s: with M the largest coordinate, u = 2⁻⁵³
+/// and D the largest computed difference, each difference is off by at most e = 8M·u and every
+/// difference is at most D′ = D + e; each product is then off by at most 2D′e + e² ≤ 3D′e, and
+/// the determinant by 6D′e + 6D′²u; twice that is safe.
 pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
     let m = [a[0], a[1], b[0], b[1], c[0], c[1]]
         .iter()
         .fold(0.0f64, |m, v| m.max(v.abs()));
-    let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    let bound = 256.0 * m * m * f64::EPSILON * 0.5;
-    if !det.is_finite() || !bound.is_finite() || m.is_nan() || m < 1e-140 {
+    let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
+    let det = u[0] * v[1] - u[1] * v[0];
+    let unit = f64::EPSILON * 0.5;
+    let e = 8.0 * m * unit;
+    let reach = [u, v].iter().flatten().fold(0.0f64, |s, x| s.max(x.abs())) + e;
+    let bound = 2.0 * reach * (6.0 * e + 6.0 * reach * unit);
+    // Below 1e-140 products of two differences could lose bits to underflow.
+    if !det.is_finite() || !bound.is_finite() || m.is_nan() || reach < 1e-140 {
         return None;
     }
     if det > bound {

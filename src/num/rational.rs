@@ -1171,6 +1171,39 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        /// `orient2d` agrees with plain rational arithmetic, and its semi-static filter is never
+        /// wrong where it decides, on short segments far from the origin (offsets to 10¹²,
+        /// lengths down to 10⁻⁹) with decimal ends and c exactly on their line, nudged off it
+        /// by a few units of 10⁻ʲ, or repeating an end.
+        #[test]
+        fn orient2d_is_plain_rational_for_short_segments_far_out(
+            offset in proptest::array::uniform2(-1_000_000_000_000i64..1_000_000_000_000),
+            side in proptest::array::uniform2(-1000i64..1000),
+            scale in 0u32..10,
+            places in 0u32..6,
+            t in (-50i64..50, 1i64..12),
+            nudge in (0usize..2, -3i64..=3, 8u32..40),
+            repeat in 0usize..8,
+        ) {
+            let ten = |k: u32| BigRational::from_integer(BigInt::from(10).pow(k));
+            let a: [BigRational; 2] = offset.map(|x| BigRational::from_integer(x.into()) / ten(places));
+            let b = [0, 1].map(|k| &a[k] + BigRational::from_integer(side[k].into()) / ten(scale + places));
+            let t = BigRational::new(t.0.into(), t.1.into());
+            let mut c = [0, 1].map(|k| &a[k] + &t * (&b[k] - &a[k]));
+            c[nudge.0] += BigRational::from_integer(nudge.1.into()) / ten(nudge.2);
+            let p = if repeat == 0 { [a.clone(), b, a] } else { [a, b, c] };
+            let expected = plain_orient(p[0].each_ref(), p[1].each_ref(), p[2].each_ref());
+            let r = p.map(|q| q.map(Rational::from));
+            let [ra, rb, rc] = r.each_ref().map(|q| q.each_ref());
+            proptest::prop_assert_eq!(Rational::orient2d(ra, rb, rc, &()), expected);
+            let f = |q: [&Rational; 2]| q.map(approx);
+            if let Some(sign) = filtered_orient(f(ra), f(rb), f(rc)) {
+                proptest::prop_assert_eq!(sign, expected);
+            }
+        }
+    }
+
     /// The two exact fallbacks of `orient3d` on their own, against plain rational arithmetic:
     /// decimals on the lattice of 10⁻¹⁸ (coplanar, and a unit of the last place off the plane),
     /// and values of ~300-bit terms, where only the fraction-free one applies.
