@@ -70,6 +70,35 @@ impl FinTable {
         }
         table
     }
+
+    /// The table of the same triangles each reversed (`[p, q, r]` → `[p, r, q]`), without a
+    /// predicate: the same edges with the same fins in the same order, each fin's `forward`
+    /// flipped. Proof: reversing a triangle keeps its edges and, for each edge, its vertex off
+    /// it (the fin's `apex`), and turns the direction it runs along the edge. [`FinTable::new`]
+    /// keys an edge by its vertex indices in increasing order, whatever the direction, and
+    /// collects its fins in increasing triangle order (a triangle has one fin per edge), so
+    /// each edge has the same fins in the same first order; `sort_about` then compares fins by
+    /// the edge's endpoints and their apexes alone, never by `forward`, and its sort is stable
+    /// from a fixed first fin, so it gives the same rotation order. (The edges of the table
+    /// built by [`FinTable::new`] from the reversed triangles may be numbered differently,
+    /// since a reversed triangle meets its edges in another order; nothing depends on that
+    /// numbering.)
+    pub(crate) fn reversed(&self) -> FinTable {
+        let fins = (self.fins.iter())
+            .map(|fins| {
+                (fins.iter())
+                    .map(|f| Fin {
+                        forward: !f.forward,
+                        ..*f
+                    })
+                    .collect()
+            })
+            .collect();
+        FinTable {
+            edges: self.edges.clone(),
+            fins,
+        }
+    }
 }
 
 /// The partner of `fin` in `pairing`, given the fins `prev` and `next` to it in the

@@ -87,30 +87,45 @@ pub(crate) fn hasse<N: Num>(
     let positive: Vec<bool> = (0..count)
         .map(|s| volumes.sign(s) == Ordering::Greater)
         .collect();
-    let mut atoms: Vec<Atom3> = (0..count)
-        .filter(|&s| positive[s])
-        .map(|s| Atom3 {
-            outer: Some(s),
-            inner: (0..count)
-                .filter(|&n| !positive[n] && parent[n] == Some(s))
-                .collect(),
-        })
-        .collect();
-    let free: Vec<usize> = (0..count)
-        .filter(|&n| !positive[n] && parent[n].is_none())
-        .collect();
-    if !free.is_empty() {
-        atoms.push(Atom3 {
-            outer: None,
-            inner: free,
-        });
-    }
     Hasse {
         bounded: volumes.total_sign() == Ordering::Greater,
+        atoms: atoms(&positive, &parent),
         positive,
         parent,
-        atoms,
     }
+}
+
+/// The atoms of surfaces with orientations `positive` and Hasse diagram `parent` (seed 003
+/// Thm 7.10): one per positive surface, in increasing order, with the negative surfaces whose
+/// parent it is; then, if any negative surface has no parent, the unbounded atom of those.
+/// Inner surfaces are in increasing order.
+pub(crate) fn atoms(positive: &[bool], parent: &[Option<usize>]) -> Vec<Atom3> {
+    // The atom of each positive surface, and the unbounded atom's place after them.
+    let mut atom = vec![usize::MAX; positive.len()];
+    let mut atoms: Vec<Atom3> = Vec::new();
+    for (s, _) in positive.iter().enumerate().filter(|(_, &p)| p) {
+        atom[s] = atoms.len();
+        atoms.push(Atom3 {
+            outer: Some(s),
+            inner: Vec::new(),
+        });
+    }
+    let unbounded = atoms.len();
+    for (n, _) in positive.iter().enumerate().filter(|(_, &p)| !p) {
+        let a = match parent[n] {
+            Some(s) if positive[s] => atom[s],
+            Some(_) => continue,
+            None => unbounded,
+        };
+        if a == atoms.len() {
+            atoms.push(Atom3 {
+                outer: None,
+                inner: Vec::new(),
+            });
+        }
+        atoms[a].inner.push(n);
+    }
+    atoms
 }
 
 /// Six times the signed volume of each surface, Σ det[a, b, c] over its triangles (seed 003

@@ -146,6 +146,7 @@
 mod arrange;
 mod betti;
 mod canonical;
+mod complement;
 mod contact;
 mod error;
 mod fins;

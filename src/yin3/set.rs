@@ -56,8 +56,8 @@ pub(crate) struct Brep<N: Num> {
     pub(crate) parent: Vec<Option<usize>>,
     pub(crate) atoms: Vec<Atom3>,
     pub(crate) bounded: bool,
-    betti: OnceLock<Betti3>,
-    canon: OnceLock<Canon<N>>,
+    pub(super) betti: OnceLock<Betti3>,
+    pub(super) canon: OnceLock<Canon<N>>,
 }
 
 impl<N: Num> Brep<N> {
@@ -101,21 +101,11 @@ impl<N: Num> Brep<N> {
         let (label, count) = glued_surfaces(&table, tris.len(), Pairing::Inside);
         let h = hasse(&points, &tris, &label, count, ctx);
         let genus = genera(&tris, &table, &label, count);
-        let mut surfaces: Vec<GluedSurface> = (0..count)
-            .map(|s| GluedSurface {
-                triangles: Vec::new(),
-                positive: h.positive[s],
-                genus: genus[s],
-            })
-            .collect();
-        for (t, &l) in label.iter().enumerate() {
-            surfaces[l].triangles.push(t);
-        }
         Ok(Brep {
+            surfaces: surfaces(&label, count, &h.positive, &genus),
             points,
             tris,
             table,
-            surfaces,
             parent: h.parent,
             atoms: h.atoms,
             bounded: h.bounded,
@@ -143,14 +133,6 @@ impl<N: Num> Brep<N> {
     pub(crate) fn with_points<M: Num>(self, points: Vec<Point3<M>>) -> Brep<M> {
         let mut points = points.into_iter();
         self.map_points(|_| points.next().expect("one point for each point"))
-    }
-
-    /// The boundary of the complement (seed 000 Def. 4.4 in 3D): every triangle reversed and
-    /// the glued surfaces regrouped.
-    pub(crate) fn complement(&self) -> Brep<N> {
-        let tris = self.tris.iter().map(|&[p, q, r]| [p, r, q]).collect();
-        Brep::assemble(self.points.clone(), tris)
-            .unwrap_or_else(|e| panic!("the reversed boundary of a Yin set is one: {e}"))
     }
 
     /// The Betti numbers of the set it bounds (yin3 docs: *Betti numbers*), computed once.
@@ -260,9 +242,35 @@ pub(crate) fn compact<N: Num>(
     (kept, tris)
 }
 
+/// The glued surfaces of the triangles' labels `label` (`count` of them), each with its
+/// orientation and genus.
+pub(super) fn surfaces(
+    label: &[usize],
+    count: usize,
+    positive: &[bool],
+    genus: &[usize],
+) -> Vec<GluedSurface> {
+    let mut surfaces: Vec<GluedSurface> = (0..count)
+        .map(|s| GluedSurface {
+            triangles: Vec::new(),
+            positive: positive[s],
+            genus: genus[s],
+        })
+        .collect();
+    for (t, &l) in label.iter().enumerate() {
+        surfaces[l].triangles.push(t);
+    }
+    surfaces
+}
+
 /// The genus of each glued surface: its triangles joined across its own pairing (the
 /// ⊥-pairing restricted to its fins, GS.2), χ = V − E + F with V its corner cycles.
-fn genera(tris: &[[usize; 3]], table: &FinTable, label: &[usize], count: usize) -> Vec<usize> {
+pub(super) fn genera(
+    tris: &[[usize; 3]],
+    table: &FinTable,
+    label: &[usize],
+    count: usize,
+) -> Vec<usize> {
     let mut cycles = corner_cycles(table, tris, Some(label), Pairing::Outside);
     // A cycle joins corners of one surface: counted once, at its root corner.
     let mut vertices = vec![0i64; count];
