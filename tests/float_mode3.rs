@@ -112,11 +112,14 @@ fn compare(t: &mut Tally, (ea, fa): &(Y3, F3), (eb, fb): &(Y3, F3), eps: f64, op
     }
 }
 
+/// Generated pairs: `FLOAT3_CASES` or 16, at most `YINSET_CASES`.
 fn cases() -> u32 {
-    std::env::var("FLOAT3_CASES")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(16)
+    yinset_testkit::cases(
+        std::env::var("FLOAT3_CASES")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(16),
+    )
 }
 
 /// Generated pairs rounded to f64, the second also shifted by (δ, 2δ, 3δ), δ ∈ {0, ε/8, 3ε}
