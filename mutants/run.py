@@ -44,7 +44,10 @@ def run(cmd, cwd, timeout, log):
             p.wait()
             rc = None
     status = "timeout" if rc is None else ("ok" if rc == 0 else "fail")
-    return status, time.monotonic() - t0
+    secs = time.monotonic() - t0
+    with open(log, "a") as out:
+        out.write(f"# {status} in {secs:.1f} s\n")
+    return status, secs
 
 
 def cargo(module, what):
@@ -62,6 +65,13 @@ def git(*args):
     return subprocess.check_output(["git", *args], cwd=plan.ROOT, text=True).strip()
 
 
+def restore():
+    """The worktree as committed: the mutation reverted, and the failures proptest persisted
+    (proptest-regressions/) dropped, so that no mutant's tests replay another's."""
+    subprocess.check_call(["git", "checkout", "--", "."], cwd=plan.WORKTREE)
+    subprocess.check_call(["git", "clean", "-fdq"], cwd=plan.WORKTREE)
+
+
 def prepare(commit):
     """The worktree at `commit` (any mutation an interrupted run left reverted), its build
     folder (seeded with this checkout's build of the dependencies) and the mutants' diffs."""
@@ -71,7 +81,7 @@ def prepare(commit):
     head = subprocess.check_output(["git", "rev-parse", "HEAD"], cwd=wt, text=True).strip()
     if head != commit:
         sys.exit(f"{wt} is at {head}, not at the sample's commit {commit}")
-    subprocess.check_call(["git", "checkout", "--", "."], cwd=wt)
+    restore()
     if not plan.BUILD.exists() and (plan.ROOT / "target" / "debug").exists():
         plan.BUILD.mkdir(parents=True)
         subprocess.check_call(
@@ -130,18 +140,26 @@ def test(mutant, base):
                 return "timeout", time.monotonic() - t0
         return "missed", time.monotonic() - t0
     finally:
-        subprocess.check_call(["git", "checkout", "--", mutant["file"]], cwd=plan.WORKTREE)
+        restore()
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--limit", type=int, help="test at most this many mutants in this run")
+    ap.add_argument(
+        "--mutant", action="append", help="test this sampled mutant first (repeatable)"
+    )
     args = ap.parse_args()
     if shutil.which("cargo-mutants") is None:
         sys.exit("cargo-mutants is needed for the mutants' diffs: cargo install cargo-mutants --locked")
     commit, names = plan.read_sample()
     done = plan.read_results()
-    todo = [n for n in names if n not in done][: args.limit]
+    first = args.mutant or []
+    unknown = [n for n in first if n not in names]
+    if unknown:
+        sys.exit(f"not in the sample: {unknown}")
+    todo = [n for n in first + [n for n in names if n not in first] if n not in done]
+    todo = todo[: args.limit]
     LOGS.mkdir(parents=True, exist_ok=True)
     by_name = prepare(commit)
     missing = [n for n in names if n not in by_name]
