@@ -78,10 +78,8 @@ def prepare(commit):
     wt = plan.WORKTREE
     if not wt.exists():
         git("worktree", "add", "--detach", str(wt), commit)
-    head = subprocess.check_output(["git", "rev-parse", "HEAD"], cwd=wt, text=True).strip()
-    if head != commit:
-        sys.exit(f"{wt} is at {head}, not at the sample's commit {commit}")
     restore()
+    subprocess.check_call(["git", "checkout", "--quiet", "--detach", commit], cwd=wt)
     if not plan.BUILD.exists() and (plan.ROOT / "target" / "debug").exists():
         plan.BUILD.mkdir(parents=True)
         subprocess.check_call(
