@@ -496,7 +496,8 @@ fn locate_on_a_slanted_face_at_every_magnitude() {
     // Both orientations (a bounded set and its complement), so that one of them has a
     // normal whose x is negative, which an underflowed normal (0, 0, 0) takes as positive.
     let flipped = tris.map(|[a, b, c]| [a, c, b]);
-    let scales = [-1070, -1000, 0, 1000].map(|k| 2f64.powi(k));
+    // 2^k as the product of two halves: unoptimised, `powi` gives 0 for a subnormal power.
+    let scales = [-1070, -1000, 0, 1000].map(|k: i32| 2f64.powi(k / 2) * 2f64.powi(k - k / 2));
     for (s, tris) in scales.iter().flat_map(|&s| [(s, tris), (s, flipped)]) {
         let v = [
             [0.0, 0.0, 0.0],
