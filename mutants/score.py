@@ -32,9 +32,10 @@ def row(label, outcomes, sampled):
     viable = detected + count["missed"]
     lo, hi = wilson(detected, viable)
     score = f"{100 * detected / viable:.1f} %" if viable else "–"
+    interval = f"{100 * lo:.1f} – {100 * hi:.1f} %" if viable else "–"
     return (
         f"| {label} | {len(outcomes)} of {sampled} | {count['unviable']} | {count['caught']} "
-        f"| {count['timeout']} | {count['missed']} | {score} | {100 * lo:.1f} – {100 * hi:.1f} % |"
+        f"| {count['timeout']} | {count['missed']} | {score} | {interval} |"
     )
 
 
