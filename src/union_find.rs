@@ -75,6 +75,7 @@ mod tests {
     use std::collections::BTreeSet;
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// `union` is false exactly for elements already joined (some added after the start),
         /// and the classes are the components of the joined pairs, numbered from 0 in order of
         /// first appearance: an oracle that relabels a whole class on every join.

@@ -10,11 +10,9 @@ use common::runner::{verdict, QPair, QTriple};
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
 use std::sync::Mutex;
 
-fn cases(default: u64) -> u64 {
-    std::env::var("AXIOM_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(default)
+/// `AXIOM_CASES` or `default`, at most `YINSET_CASES` (as the proptest suites).
+fn cases(default: u32) -> u64 {
+    common::runner::cases(default).into()
 }
 
 fn qc(n: u64) -> QuickCheck {

@@ -44,7 +44,7 @@ fn placement() -> impl Strategy<Value = (f64, f64)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(400)))]
 
     /// 2D: the float set's exact area is exact mode's area of its own `f64` vertices, and its
     /// area is the nearest `f64` of that.

@@ -44,6 +44,11 @@ fn factor() -> usize {
         .unwrap_or(1)
 }
 
+/// `n` cases, at most `YINSET_CASES` (the test kit's cap).
+fn capped(n: usize) -> usize {
+    yinset_testkit::cases(n.try_into().unwrap_or(u32::MAX)) as usize
+}
+
 /// A scale configuration: grid side n, coordinates `n·scale + offset`, tolerance ε.
 #[derive(Clone, Copy, Debug)]
 struct Config {
@@ -225,7 +230,7 @@ impl Campaign {
 
 #[test]
 fn well_separated_random_pairs() {
-    let cases = 1000 * factor();
+    let cases = capped(1000 * factor());
     let mut c = Campaign::default();
     for seed in 0..cases as u64 {
         let mut rng = Rng::new(seed);
@@ -244,7 +249,7 @@ fn well_separated_random_pairs() {
 
 #[test]
 fn near_degenerate_random_pairs() {
-    let cases = 1000 * factor();
+    let cases = capped(1000 * factor());
     let mut c = Campaign::default();
     let mut seed = 1u64 << 32;
     while c.stats.cases < cases {
@@ -282,7 +287,7 @@ fn near_degenerate_random_pairs() {
 /// bound are required here.
 #[test]
 fn coarse_tolerance_random_pairs() {
-    let cases = 200 * factor();
+    let cases = capped(200 * factor());
     let mut c = Campaign::default();
     for seed in 0..cases as u64 {
         let seed = (2u64 << 32) + seed;
@@ -311,7 +316,7 @@ fn coarse_tolerance_random_pairs() {
 #[test]
 fn random_stars() {
     let mut c = Campaign::default();
-    for seed in 0..(2 * factor()) as u64 {
+    for seed in 0..capped(2 * factor()) as u64 {
         let mut rng = Rng::new((3u64 << 32) + seed);
         let n = 100 + 100 * (seed % 4) as usize;
         let a = vec![gen::random_star(&mut rng, n, [0.0, 0.0], 0.0)];

@@ -112,11 +112,14 @@ fn compare(t: &mut Tally, (ea, fa): &(Y3, F3), (eb, fb): &(Y3, F3), eps: f64, op
     }
 }
 
+/// Generated pairs: `FLOAT3_CASES` or 16, at most `YINSET_CASES`.
 fn cases() -> u32 {
-    std::env::var("FLOAT3_CASES")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(16)
+    yinset_testkit::cases(
+        std::env::var("FLOAT3_CASES")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(16),
+    )
 }
 
 /// Generated pairs rounded to f64, the second also shifted by (δ, 2δ, 3δ), δ ∈ {0, ε/8, 3ε}
@@ -493,7 +496,8 @@ fn locate_on_a_slanted_face_at_every_magnitude() {
     // Both orientations (a bounded set and its complement), so that one of them has a
     // normal whose x is negative, which an underflowed normal (0, 0, 0) takes as positive.
     let flipped = tris.map(|[a, b, c]| [a, c, b]);
-    let scales = [-1070, -1000, 0, 1000].map(|k| 2f64.powi(k));
+    // 2^k as the product of two halves: unoptimised, `powi` gives 0 for a subnormal power.
+    let scales = [-1070, -1000, 0, 1000].map(|k: i32| 2f64.powi(k / 2) * 2f64.powi(k - k / 2));
     for (s, tris) in scales.iter().flat_map(|&s| [(s, tris), (s, flipped)]) {
         let v = [
             [0.0, 0.0, 0.0],

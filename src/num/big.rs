@@ -149,6 +149,7 @@ mod tests {
     use num_integer::Integer;
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// `gcd` equals num-integer's gcd on big operands of every shape its paths take: a power
         /// of two against anything (the dyadic path), two values with common factors of two and
         /// odd parts (Lehmer's), and zeros.

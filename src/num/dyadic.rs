@@ -239,6 +239,7 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         #[test]
         fn det_sum_2d_is_the_rational_sum((points, simplices) in case::<2>()) {
             let got = det_sum(&points, simplices.iter().copied());

@@ -672,7 +672,7 @@ mod tests {
     }
 
     proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(2000)))]
 
         /// The filtered orientations equal the exact ones of the values read as rationals, on
         /// points of small-integer lines and planes (degenerate or nudged by ulps off them) scaled

@@ -137,7 +137,7 @@ mod tests {
     }
 
     proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(2000)))]
 
         /// On points of a plane with full-width mantissas, each axis stretched by its own
         /// 2^0 … 2^8 (which keeps them coplanar) so that the grid integers reach and pass

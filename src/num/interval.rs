@@ -159,6 +159,7 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The interval of `a ∘ b` for point intervals `a`, `b` encloses the exact rational
         /// result, for values of any magnitude (including subnormal products and overflow to
         /// infinity): the outward widening alone covers the rounding.

@@ -157,6 +157,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The leading 128 bits of integers of 1 to 640 bits are the integer shifted to 128
         /// bits exactly.
         #[test]

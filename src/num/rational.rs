@@ -724,6 +724,7 @@ mod tests {
     use super::*;
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The section point of a line through integer points equals each coordinate's
         /// quotient reduced by a full gcd, for u and v with common factors, equal coordinates
         /// (V − U = 0), coordinates past 128 bits and scales both ways.
@@ -779,6 +780,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// `to_f64` is num-rational's correctly rounded value, both signs, for small fractions
         /// with more than 53 significant bits and for big ones of up to 300 bits a side.
         #[test]
@@ -796,6 +798,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// `from_lowest_words` is the value `Rational::new` makes of the same terms, in the same
         /// representation (small for terms below 2⁶², big otherwise), with the approximation it
         /// is given signed: on coprime terms of one to four words, either sign.
@@ -828,6 +831,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The exact value of an `f64` (small when it fits) is num-rational's, canonical form
         /// included, and converts back to the same `f64`: on every bit pattern (subnormals and
         /// huge exponents), on numbers of moderate size and fractions with denominators up to
@@ -850,6 +854,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The filtered order is `num-rational`'s order: on random fractions, on fractions
         /// a few ulps apart, and on equal values written with different denominators.
         #[test]
@@ -924,6 +929,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// Arithmetic, order, sign, halving and conversions of the inline representation equal
         /// `num-rational`'s on values across the small/big boundary and on big values with
         /// shared factors, and the representation stays canonical (equal values compare and
@@ -966,6 +972,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// `orient3d` (f64 filter, i128, dyadic and rational fallbacks) agrees with plain
         /// rational arithmetic when d is on the plane through a, b, c as rounded to f64 and
         /// then moved a few ulps (the filter defers; the dyadic path decides).
@@ -996,6 +1003,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The homogeneous crossing construction equals the plain rational formula
         /// a + t (b − a), t = ((c − a) × (d − c)) / ((b − a) × (d − c)), on coordinates from
         /// small integers to ~400-bit fractions, including lines through a common point (whose
@@ -1038,6 +1046,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The filtered `orient2d` (f64 filter, i128 and rational fallbacks) agrees with plain
         /// rational arithmetic on near-degenerate inputs: c on the line through a and b as
         /// rounded to f64 and then moved a few ulps, and the exact crossing point of two nearly

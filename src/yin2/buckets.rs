@@ -51,6 +51,7 @@ mod tests {
     use proptest::prelude::*;
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// Each group holds exactly the values of its key, in the order they came (a stable
         /// sort by key), against filtering the items key by key.
         #[test]

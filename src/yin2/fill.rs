@@ -480,7 +480,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 300, failure_persistence: None, ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: yinset_testkit::cases(300), failure_persistence: None, ..ProptestConfig::default() })]
 
         /// Float mode: the fill is valid and its area within 4 ε (ring length) of the exact
         /// fill of the same numbers.

@@ -285,7 +285,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: yinset_testkit::cases(2000), failure_persistence: None, ..ProptestConfig::default() })]
 
         /// The grid sweep reports a crossing exactly when two segments cross away from every
         /// segment end (the exact kernel's classification of every pair), and otherwise
@@ -345,7 +345,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: yinset_testkit::cases(3000), failure_persistence: None, ..ProptestConfig::default() })]
 
         /// The pixel of a crossing is its exact rational crossing point rounded to the nearest
         /// grid point, ties up. The second segment is drawn anywhere, near the first (so that

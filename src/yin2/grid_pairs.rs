@@ -216,6 +216,7 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// Both ways of finding crossing pairs — boxes, and the exact sweep past the budget —
         /// give every pair whose interiors cross and no other, and the boxes every such pair
         /// but those of one family: segments on a 9×9 lattice, many collinear, touching or

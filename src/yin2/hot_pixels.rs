@@ -286,6 +286,7 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The `f64` filter never decides against the exact side tests: segments between grid
         /// points up to 2⁵¹ (small ones too), pixels at and around points of the segment, so
         /// that lines through corners and along sides occur.

@@ -519,7 +519,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 600, failure_persistence: None, ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: yinset_testkit::cases(600), failure_persistence: None, ..ProptestConfig::default() })]
 
         #[test]
         fn sweep_equals_brute_force(s in segs(false)) {

@@ -314,6 +314,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The crossing parity locates every point of a half-unit grid as the sweep does,
         /// inside each curve of joins of up to four random triangles and boxes on a 5×5
         /// lattice: curves with horizontal and vertical edges, vertices where curves touch,

@@ -552,7 +552,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 300, failure_persistence: None, ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: yinset_testkit::cases(300), failure_persistence: None, ..ProptestConfig::default() })]
 
         /// Grid points sort as the standard sort orders them, on each of the three ways:
         /// points on a lattice coarser than the grid (packed in a 32-bit word once the shared

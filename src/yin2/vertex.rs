@@ -228,6 +228,7 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The filtered predicates on an implicit crossing equal the exact predicates on its
         /// exact point, for crossings of nearly parallel segments (directions a few ulps apart)
         /// tested against points a few ulps from the crossing, lines through points a few ulps

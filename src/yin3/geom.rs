@@ -235,7 +235,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(2000))]
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(2000)))]
 
         /// The chart of an `f64` triangle keeps it counterclockwise, checked on its exact
         /// values, and exists iff the triangle is not degenerate (exactly collinear corners,

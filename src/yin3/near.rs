@@ -300,7 +300,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(600))]
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(600)))]
 
         /// Points near a face, an edge or a corner of a random triangle (the oracle confirms
         /// which), at every scale and far from the origin: [`within`] agrees with the exact

@@ -174,6 +174,7 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// Every pair of meeting boxes is asked exactly once and no other pair, by the sweep
         /// and, for boxes all spanning the x-range, by the tree; on one thread and on many.
         #[test]

@@ -845,7 +845,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(256))]
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
 
         /// The broad phase finds every pair of boxes that meet: the near triangles of each
         /// side include every one whose box meets a box of the other side, and the walk of an
@@ -899,7 +899,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(64))]
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(64)))]
 
         /// Jittered cubes that cross, nest or miss (the second operand also as its complement,
         /// unbounded, the first also with a second cube far away, and both scaled by 2^80):
@@ -1015,7 +1015,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(64))]
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(64)))]
 
         /// Cubes that touch the unit cube in a shared corner from outside or from inside, or
         /// in a shared edge from outside (outside, where a jitter is 0: faces coplanar at the

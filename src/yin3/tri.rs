@@ -554,6 +554,7 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// Devillers and Guigue's construction-free test equals an independent one: triangles
         /// in general position meet iff an edge of one crosses the other.
         #[test]

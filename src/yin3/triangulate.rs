@@ -957,7 +957,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(300))]
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(300)))]
         #[test]
         fn random_grid_points_and_constraints(
             pick in proptest::sample::subsequence(grid(), 0..=45),

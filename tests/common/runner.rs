@@ -7,7 +7,8 @@ use proptest::test_runner::{Config, TestCaseError, TestRunner};
 use quickcheck::{Arbitrary, Gen, TestResult};
 use std::sync::Mutex;
 
-/// Cases per property (override with the environment variable `AXIOM_CASES`).
+/// Cases per property (override with the environment variable `AXIOM_CASES`; at most
+/// `YINSET_CASES`).
 pub fn cases(default: u32) -> u32 {
     env_cases("AXIOM_CASES", default)
 }
@@ -18,11 +19,14 @@ pub fn cases3(default: u32) -> u32 {
     env_cases("AXIOM3_CASES", default)
 }
 
+/// `default`, or the value of `var` when set; at most `YINSET_CASES` either way.
 fn env_cases(var: &str, default: u32) -> u32 {
-    std::env::var(var)
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(default)
+    yinset_testkit::cases(
+        std::env::var(var)
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(default),
+    )
 }
 
 /// Turn a law check into a quickcheck result, counting into `tally`.

@@ -206,7 +206,7 @@ fn piece_sets() -> impl Strategy<Value = Vec<Piece>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+    #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
 
     /// S2R-c by first repetition ([`Segmented::loops`]) equals the seed's grow-then-divide,
     /// and every grown loop has the nesting property the equality rests on.

@@ -33,6 +33,15 @@ use yinset::num::Rational;
 use yinset::yin2::YinSet2;
 use yinset::yin3::YinSet3;
 
+/// The case count of a property test: `default`, or at most `YINSET_CASES` when that
+/// environment variable is set (the mutation run's reduced counts, mutants/run.py).
+pub fn cases(default: u32) -> u32 {
+    std::env::var("YINSET_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .map_or(default, |cap: u32| default.min(cap))
+}
+
 /// An exact 2D Yin set.
 pub type Y = YinSet2<Rational>;
 /// An exact 3D Yin set.

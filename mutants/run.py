@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""Test the sampled mutants (mutants/sample.txt) on the sample's commit, resumably.
+
+    nice -n 19 python3 mutants/run.py [--limit N]
+
+Each mutant is applied (its cargo-mutants diff) to a worktree checked out at the sample's
+commit (target/mutants/wt), built once, and tested only by what can catch it: the unit tests
+of its module (`cargo test --lib -- <module>::`), then the module's integration tests
+(plan.INTEGRATION), with property tests capped at plan.CASES cases (YINSET_CASES). One line per
+mutant is appended to mutants/results.txt (name, outcome, seconds); mutants already there are
+skipped, so an interrupted run resumes where it stopped. Test logs are kept in
+target/mutants/logs.
+"""
+
+import argparse
+import hashlib
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+import plan
+
+LOGS = plan.BUILD.parent / "logs"
+
+
+def run(cmd, cwd, timeout, log):
+    """Run `cmd`, appending its output to `log`: 'ok', 'fail' or 'timeout', and seconds."""
+    env = dict(os.environ, CARGO_TARGET_DIR=str(plan.BUILD), **plan.ENV)
+    t0 = time.monotonic()
+    with open(log, "a") as out:
+        out.write("$ " + " ".join(cmd) + "\n")
+        out.flush()
+        p = subprocess.Popen(
+            cmd, cwd=cwd, env=env, stdout=out, stderr=subprocess.STDOUT, start_new_session=True
+        )
+        try:
+            rc = p.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+            rc = None
+    status = "timeout" if rc is None else ("ok" if rc == 0 else "fail")
+    secs = time.monotonic() - t0
+    with open(log, "a") as out:
+        out.write(f"# {status} in {secs:.1f} s\n")
+    return status, secs
+
+
+def cargo(module, what):
+    """The cargo command that builds (`what` = 'build') or runs one of a module's test sets."""
+    config = [a for c in plan.CARGO_CONFIG for a in ("--config", c)]
+    tests = [a for t in plan.INTEGRATION[module] for a in ("--test", t)]
+    if what == "build":
+        return ["cargo", "test", "--no-run", "--lib", *tests, *config]
+    if what == "unit":
+        return ["cargo", "test", "--lib", *config, "--", f"{module}::"]
+    return ["cargo", "test", *tests, *config]
+
+
+def git(*args):
+    return subprocess.check_output(["git", *args], cwd=plan.ROOT, text=True).strip()
+
+
+def restore():
+    """The worktree as committed: the mutation reverted, and the failures proptest persisted
+    (proptest-regressions/) dropped, so that no mutant's tests replay another's."""
+    subprocess.check_call(["git", "checkout", "--", "."], cwd=plan.WORKTREE)
+    subprocess.check_call(["git", "clean", "-fdq"], cwd=plan.WORKTREE)
+
+
+def prepare(commit):
+    """The worktree at `commit` (any mutation an interrupted run left reverted), its build
+    folder (seeded with this checkout's build of the dependencies) and the mutants' diffs."""
+    wt = plan.WORKTREE
+    if not wt.exists():
+        git("worktree", "add", "--detach", str(wt), commit)
+    restore()
+    subprocess.check_call(["git", "checkout", "--quiet", "--detach", commit], cwd=wt)
+    if not plan.BUILD.exists() and (plan.ROOT / "target" / "debug").exists():
+        plan.BUILD.mkdir(parents=True)
+        subprocess.check_call(
+            ["cp", "-a", "--reflink=auto", str(plan.ROOT / "target" / "debug"), str(plan.BUILD)]
+        )
+    listing = plan.BUILD.parent / f"list-{commit}.json"
+    if not listing.exists():
+        mutants = plan.list_mutants(wt, diffs=True)
+        listing.write_text(json.dumps(mutants))
+    return {m["name"]: m for m in json.loads(listing.read_text())}
+
+
+def baseline(modules, commit):
+    """Seconds of each module's unit and integration tests on the unmutated tree (they must
+    pass), measured once per commit."""
+    path = plan.BUILD.parent / f"baseline-{commit}.json"
+    secs = json.loads(path.read_text()) if path.exists() else {}
+    for m in modules:
+        if m in secs:
+            continue
+        log = LOGS / f"baseline-{m}.log"
+        log.unlink(missing_ok=True)
+        for what in ("build", "unit", "integration"):
+            status, t = run(cargo(m, what), plan.WORKTREE, None, log)
+            if status != "ok":
+                sys.exit(f"baseline {what} of {m} failed: see {log}")
+            secs.setdefault(m, {})[what] = round(t, 1)
+        path.write_text(json.dumps(secs, indent=1))
+        print(f"baseline {m}: {secs[m]}", flush=True)
+    return secs
+
+
+def test(mutant, base):
+    """Apply `mutant`, build, run its module's tests, revert: the outcome and the seconds."""
+    module = plan.module_of(mutant["name"])
+    log = LOGS / (hashlib.sha1(mutant["name"].encode()).hexdigest()[:12] + ".log")
+    log.write_text(mutant["name"] + "\n" + mutant["diff"] + "\n")
+    subprocess.run(
+        ["patch", "--quiet", "--forward", mutant["file"]],
+        cwd=plan.WORKTREE,
+        input=mutant["diff"],
+        text=True,
+        check=True,
+    )
+    t0 = time.monotonic()
+    try:
+        status, _ = run(cargo(module, "build"), plan.WORKTREE, 3600, log)
+        if status != "ok":
+            return "unviable", time.monotonic() - t0
+        for what in ("unit", "integration"):
+            limit = 3 * base[module][what] + 30
+            status, _ = run(cargo(module, what), plan.WORKTREE, limit, log)
+            if status == "fail":
+                return "caught", time.monotonic() - t0
+            if status == "timeout":
+                return "timeout", time.monotonic() - t0
+        return "missed", time.monotonic() - t0
+    finally:
+        restore()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--limit", type=int, help="test at most this many mutants in this run")
+    ap.add_argument(
+        "--mutant", action="append", help="test this sampled mutant first (repeatable)"
+    )
+    args = ap.parse_args()
+    if shutil.which("cargo-mutants") is None:
+        sys.exit("cargo-mutants is needed for the mutants' diffs: cargo install cargo-mutants --locked")
+    commit, names = plan.read_sample()
+    done = plan.read_results()
+    first = args.mutant or []
+    unknown = [n for n in first if n not in names]
+    if unknown:
+        sys.exit(f"not in the sample: {unknown}")
+    todo = [n for n in first + [n for n in names if n not in first] if n not in done]
+    todo = todo[: args.limit]
+    LOGS.mkdir(parents=True, exist_ok=True)
+    by_name = prepare(commit)
+    missing = [n for n in names if n not in by_name]
+    if missing:
+        sys.exit(f"{len(missing)} sampled mutants are not cargo-mutants' at {commit}: {missing[:3]}")
+    base = baseline(sorted({plan.module_of(n) for n in todo}), commit)
+    for k, name in enumerate(todo, 1):
+        outcome, secs = test(by_name[name], base)
+        with open(plan.RESULTS, "a") as f:
+            f.write(f"{name}\t{outcome}\t{secs:.0f}\n")
+        print(f"[{len(done) + k}/{len(names)}] {outcome:8} {secs:5.0f} s  {name}", flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,55 @@
+#!/usr/bin/env python3
+"""The mutation score of the sample so far, per module and overall, with its 95 % Wilson
+score interval, as a Markdown table.
+
+    python3 mutants/score.py
+
+The score is the share of viable mutants detected: caught or timed out, over caught, timed
+out and missed (unviable mutants do not build and are left out). The interval treats the
+viable mutants tested as a uniform sample of the module's viable mutants.
+"""
+
+import math
+
+import plan
+
+Z = 1.959963984540054  # the 97.5 % quantile of the standard normal distribution
+
+
+def wilson(k, n):
+    """The 95 % Wilson score interval of a proportion with k successes in n trials."""
+    if n == 0:
+        return (0.0, 1.0)
+    p = k / n
+    centre = p + Z * Z / (2 * n)
+    half = Z * math.sqrt(p * (1 - p) / n + Z * Z / (4 * n * n))
+    return ((centre - half) / (1 + Z * Z / n), (centre + half) / (1 + Z * Z / n))
+
+
+def row(label, outcomes, sampled):
+    count = {o: sum(x == o for x in outcomes) for o in plan.OUTCOMES}
+    detected = count["caught"] + count["timeout"]
+    viable = detected + count["missed"]
+    lo, hi = wilson(detected, viable)
+    score = f"{100 * detected / viable:.1f} %" if viable else "–"
+    interval = f"{100 * lo:.1f} – {100 * hi:.1f} %" if viable else "–"
+    return (
+        f"| {label} | {len(outcomes)} of {sampled} | {count['unviable']} | {count['caught']} "
+        f"| {count['timeout']} | {count['missed']} | {score} | {interval} |"
+    )
+
+
+def main():
+    commit, names = plan.read_sample()
+    results = plan.read_results()
+    print(f"Sample at commit {commit[:12]}: {len(results)} of {len(names)} mutants tested.\n")
+    print("| module | tested | unviable | caught | timeout | missed | score | 95 % Wilson |")
+    print("|---|---|---|---|---|---|---|---|")
+    for m in plan.MODULES:
+        mine = [n for n in names if plan.module_of(n) == m]
+        print(row(f"`{m}`", [results[n][0] for n in mine if n in results], len(mine)))
+    print(row("all", [results[n][0] for n in names if n in results], len(names)))
+
+
+if __name__ == "__main__":
+    main()
