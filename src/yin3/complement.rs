@@ -84,13 +84,13 @@ mod tests {
     use yinset_testkit::cells3::Grid3;
     use yinset_testkit::rotation::{Rot, GENERAL};
 
-    /// Each edge's fins as (triangle, apex, forward) in counterclockwise order about the edge,
-    /// starting at the smallest triangle, in the vertex numbering `to` (edge endpoints in
-    /// increasing order, the rotation and directions turned where `to` swaps them).
-    fn rotations(
-        table: &FinTable,
-        to: &[usize],
-    ) -> BTreeMap<(usize, usize), Vec<(usize, usize, bool)>> {
+    /// Each edge's fins as (triangle, apex, forward), keyed by the edge's endpoints.
+    type Rotations = BTreeMap<(usize, usize), Vec<(usize, usize, bool)>>;
+
+    /// Each edge's fins in counterclockwise order about the edge, starting at the smallest
+    /// triangle, in the vertex numbering `to` (edge endpoints in increasing order, the rotation
+    /// and directions turned where `to` swaps them).
+    fn rotations(table: &FinTable, to: &[usize]) -> Rotations {
         (table.edges.iter().zip(&table.fins))
             .map(|(&(a, b), fins)| {
                 let (a, b) = (to[a], to[b]);
