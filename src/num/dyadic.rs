@@ -177,15 +177,25 @@ fn big_det<const D: usize>(p: [&[BigInt; D]; D]) -> BigInt {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use proptest::prelude::*;
 
     /// Σ det[p₁ − o, …, p_D − o] on the rationals the `f64`s are, the way exact mode would.
     fn oracle<const D: usize>(points: &[[f64; D]], simplices: &[[usize; D]]) -> Rational {
         let r = |v: f64| Rational::from_float(v).unwrap();
+        let exact: Vec<[Rational; D]> = points.iter().map(|p| p.map(r)).collect();
+        rational_det_sum(&exact, simplices)
+    }
+
+    /// Σ det[p₁ − o, …, p_D − o] over `simplices` in reduced rational arithmetic: the oracle
+    /// of the exact sums here and in `num::lattice`.
+    pub(in crate::num) fn rational_det_sum<const D: usize>(
+        points: &[[Rational; D]],
+        simplices: &[[usize; D]],
+    ) -> Rational {
         let rel = |i: usize| -> [Rational; D] {
-            std::array::from_fn(|k| r(points[i][k]) - r(points[0][k]))
+            std::array::from_fn(|k| points[i][k].clone() - points[0][k].clone())
         };
         let mut sum = Rational::from_i64(0);
         for s in simplices {

@@ -48,29 +48,7 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    /// Σ det[p₁ − o, …] in reduced rational arithmetic: the oracle.
-    fn oracle<const D: usize>(points: &[[Rational; D]], simplices: &[[usize; D]]) -> Rational {
-        let rel = |i: usize| -> [Rational; D] {
-            std::array::from_fn(|k| points[i][k].clone() - points[0][k].clone())
-        };
-        let mut sum = Rational::from_i64(0);
-        for s in simplices {
-            let p: [[Rational; D]; D] = s.map(rel);
-            let term = match D {
-                2 => p[0][0].clone() * p[1][1].clone() - p[0][1].clone() * p[1][0].clone(),
-                _ => {
-                    let minor = |i: usize, j: usize| {
-                        p[1][i].clone() * p[2][j].clone() - p[1][j].clone() * p[2][i].clone()
-                    };
-                    p[0][0].clone() * minor(1, 2) - p[0][1].clone() * minor(0, 2)
-                        + p[0][2].clone() * minor(0, 1)
-                }
-            };
-            sum = sum + term;
-        }
-        sum
-    }
-
+    use crate::num::dyadic::tests::rational_det_sum;
     use crate::num::Num;
 
     /// Points with decimal coordinates of up to 18 places (the narrow `i128` path for few
@@ -109,7 +87,7 @@ mod tests {
         // Decimals of at most 18 places share the lattice of 10⁻¹⁸ (60 bits).
         assert!(!decimal || got.is_some(), "decimals are on a lattice");
         if let Some(sum) = got {
-            assert_eq!(sum, oracle(points, simplices));
+            assert_eq!(sum, rational_det_sum(points, simplices));
         }
     }
 
