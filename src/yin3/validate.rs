@@ -257,32 +257,30 @@ fn build<N: Num>(
     } else {
         conforming_after_moves(&soup.points, &soup.tris, &everything)
     };
-    if conforming {
-        let tris = soup.tris;
-        let brep =
-            Brep::assemble(soup.points, tris).map_err(|e| e.renumber_faces(&face_of, rounded))?;
-        check_windings(&brep, &exact).map_err(|e| e.renumber_faces(&face_of, rounded))?;
-        return Ok(brep);
-    }
-    let arrangement = arrange(&mut soup, Pairs::All, &exact).map_err(|e| match e {
-        ArrangeError::Clash {
-            a,
-            b,
-            coplanar,
-            point,
-        } => {
-            let (a, b, point) = (face_of[a], face_of[b], Spot::new(&point).shown(rounded));
-            if coplanar {
-                Yin3Error::Overlap { a, b, point }
-            } else {
-                Yin3Error::Crossing { a, b, point }
+    // The triangles of the boundary, and the input face of each.
+    let (tris, origin) = if conforming {
+        (std::mem::take(&mut soup.tris), face_of)
+    } else {
+        let arrangement = arrange(&mut soup, Pairs::All, &exact).map_err(|e| match e {
+            ArrangeError::Clash {
+                a,
+                b,
+                coplanar,
+                point,
+            } => {
+                let (a, b, point) = (face_of[a], face_of[b], Spot::new(&point).shown(rounded));
+                if coplanar {
+                    Yin3Error::Overlap { a, b, point }
+                } else {
+                    Yin3Error::Crossing { a, b, point }
+                }
             }
-        }
-        ArrangeError::Internal(m) => Yin3Error::Internal(m),
-    })?;
-    let pieces = arrangement.pieces;
-    let origin: Vec<usize> = pieces.iter().map(|(_, t)| face_of[*t]).collect();
-    let tris: Vec<[usize; 3]> = pieces.into_iter().map(|(t, _)| t).collect();
+            ArrangeError::Internal(m) => Yin3Error::Internal(m),
+        })?;
+        let pieces = arrangement.pieces;
+        let origin: Vec<usize> = pieces.iter().map(|(_, t)| face_of[*t]).collect();
+        (pieces.into_iter().map(|(t, _)| t).collect(), origin)
+    };
     let brep = Brep::assemble(soup.points, tris).map_err(|e| e.renumber_faces(&origin, rounded))?;
     check_windings(&brep, &exact).map_err(|e| e.renumber_faces(&origin, rounded))?;
     Ok(brep)
