@@ -10,9 +10,14 @@ import tomllib
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 SAMPLE = ROOT / "mutants" / "sample.txt"
 RESULTS = ROOT / "mutants" / "results.txt"
+# The survivors' triage: each missed mutant rerun on a later commit that has tests for it, or
+# argued equivalent.
+TRIAGE = ROOT / "mutants" / "triage.txt"
 # The worktree at the sample's commit and its build folder (ignored by git: under target/).
 WORKTREE = ROOT / "target" / "mutants" / "wt"
 BUILD = ROOT / "target" / "mutants" / "build"
+# The worktree of the triage's rerun, at the checkout's HEAD.
+RETEST_TREE = ROOT / "target" / "mutants" / "head"
 
 # cargo-mutants' configuration: the examined files (src/<module>/**/*.rs), the excluded ones
 # and the build settings (its `--config` arguments), shared with a plain `cargo mutants`.
@@ -83,4 +88,16 @@ def read_results(path=RESULTS):
             if line.strip() and not line.startswith("#"):
                 name, outcome, secs = line.rstrip("\n").split("\t")
                 out[name] = (outcome, float(secs))
+    return out
+
+
+def read_triage(path=TRIAGE):
+    """Triaged survivors: name -> (verdict, note); lines are `name<TAB>verdict<TAB>note`, the
+    verdict an outcome of the rerun (caught, missed, ...) or `equivalent` with its argument."""
+    out = {}
+    if path.exists():
+        for line in open(path):
+            if line.strip() and not line.startswith("#"):
+                name, verdict, note = line.rstrip("\n").split("\t")
+                out[name] = (verdict, note)
     return out

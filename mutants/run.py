@@ -10,6 +10,13 @@ of its module (`cargo test --lib -- <module>::`), then the module's integration 
 mutant is appended to mutants/results.txt (name, outcome, seconds); mutants already there are
 skipped, so an interrupted run resumes where it stopped. Test logs are kept in
 target/mutants/logs.
+
+    nice -n 19 python3 mutants/run.py --retest [--mutant NAME ...]
+
+The triage's rerun: the missed mutants not yet in mutants/triage.txt (or the named ones), each
+its diff from the sample's commit patched onto a worktree at this checkout's HEAD
+(target/mutants/head), where the tests written for the survivors are, and tested the same
+way; the outcome and the commit go to mutants/triage.txt. Commit the tests first.
 """
 
 import argparse
@@ -65,34 +72,37 @@ def git(*args):
     return subprocess.check_output(["git", *args], cwd=plan.ROOT, text=True).strip()
 
 
-def restore():
-    """The worktree as committed: the mutation reverted, and the failures proptest persisted
-    (proptest-regressions/) dropped, so that no mutant's tests replay another's."""
-    subprocess.check_call(["git", "checkout", "--", "."], cwd=plan.WORKTREE)
-    subprocess.check_call(["git", "clean", "-fdq"], cwd=plan.WORKTREE)
+def restore(wt):
+    """The worktree `wt` as committed: the mutation reverted, and the failures proptest
+    persisted (proptest-regressions/) dropped, so that no mutant's tests replay another's."""
+    subprocess.check_call(["git", "checkout", "--", "."], cwd=wt)
+    subprocess.check_call(["git", "clean", "-fdq"], cwd=wt)
 
 
-def prepare(commit):
-    """The worktree at `commit` (any mutation an interrupted run left reverted), its build
-    folder (seeded with this checkout's build of the dependencies) and the mutants' diffs."""
-    wt = plan.WORKTREE
+def prepare(commit, wt):
+    """The worktree `wt` at `commit` (any mutation an interrupted run left reverted) and the
+    build folder (seeded with this checkout's build of the dependencies)."""
     if not wt.exists():
         git("worktree", "add", "--detach", str(wt), commit)
-    restore()
+    restore(wt)
     subprocess.check_call(["git", "checkout", "--quiet", "--detach", commit], cwd=wt)
     if not plan.BUILD.exists() and (plan.ROOT / "target" / "debug").exists():
         plan.BUILD.mkdir(parents=True)
         subprocess.check_call(
             ["cp", "-a", "--reflink=auto", str(plan.ROOT / "target" / "debug"), str(plan.BUILD)]
         )
+
+
+def diffs(commit):
+    """The mutants cargo-mutants lists in the worktree at the sample's `commit`, by name, with
+    their diffs (listed once, then read from the build folder)."""
     listing = plan.BUILD.parent / f"list-{commit}.json"
     if not listing.exists():
-        mutants = plan.list_mutants(wt, diffs=True)
-        listing.write_text(json.dumps(mutants))
+        listing.write_text(json.dumps(plan.list_mutants(plan.WORKTREE, diffs=True)))
     return {m["name"]: m for m in json.loads(listing.read_text())}
 
 
-def baseline(modules, commit):
+def baseline(modules, commit, wt):
     """Seconds of each module's unit and integration tests on the unmutated tree (they must
     pass), measured once per commit."""
     path = plan.BUILD.parent / f"baseline-{commit}.json"
@@ -103,7 +113,7 @@ def baseline(modules, commit):
         log = LOGS / f"baseline-{m}.log"
         log.unlink(missing_ok=True)
         for what in ("build", "unit", "integration"):
-            status, t = run(cargo(m, what), plan.WORKTREE, None, log)
+            status, t = run(cargo(m, what), wt, None, log)
             if status != "ok":
                 sys.exit(f"baseline {what} of {m} failed: see {log}")
             secs.setdefault(m, {})[what] = round(t, 1)
@@ -112,33 +122,48 @@ def baseline(modules, commit):
     return secs
 
 
-def test(mutant, base):
-    """Apply `mutant`, build, run its module's tests, revert: the outcome and the seconds."""
+def test(mutant, base, wt):
+    """Apply `mutant` to `wt`, build, run its module's tests, revert: the outcome and the
+    seconds."""
     module = plan.module_of(mutant["name"])
     log = LOGS / (hashlib.sha1(mutant["name"].encode()).hexdigest()[:12] + ".log")
     log.write_text(mutant["name"] + "\n" + mutant["diff"] + "\n")
     subprocess.run(
         ["patch", "--quiet", "--forward", mutant["file"]],
-        cwd=plan.WORKTREE,
+        cwd=wt,
         input=mutant["diff"],
         text=True,
         check=True,
     )
     t0 = time.monotonic()
     try:
-        status, _ = run(cargo(module, "build"), plan.WORKTREE, 3600, log)
+        status, _ = run(cargo(module, "build"), wt, 3600, log)
         if status != "ok":
             return "unviable", time.monotonic() - t0
         for what in ("unit", "integration"):
             limit = 3 * base[module][what] + 30
-            status, _ = run(cargo(module, what), plan.WORKTREE, limit, log)
+            status, _ = run(cargo(module, what), wt, limit, log)
             if status == "fail":
                 return "caught", time.monotonic() - t0
             if status == "timeout":
                 return "timeout", time.monotonic() - t0
         return "missed", time.monotonic() - t0
     finally:
-        restore()
+        restore(wt)
+
+
+def retest(names, by_name):
+    """The triage's rerun: each named mutant (its diff at the sample's commit, patched with
+    context) on this checkout's HEAD in plan.RETEST_TREE, where the tests added for the
+    survivors are; one line per mutant appended to plan.TRIAGE."""
+    head = git("rev-parse", "HEAD")
+    prepare(head, plan.RETEST_TREE)
+    base = baseline(sorted({plan.module_of(n) for n in names}), head, plan.RETEST_TREE)
+    for name in names:
+        outcome, secs = test(by_name[name], base, plan.RETEST_TREE)
+        with open(plan.TRIAGE, "a") as f:
+            f.write(f"{name}\t{outcome}\tat {head[:12]}, {secs:.0f} s\n")
+        print(f"retest {outcome:8} {secs:5.0f} s  {name}", flush=True)
 
 
 def main():
@@ -146,6 +171,11 @@ def main():
     ap.add_argument("--limit", type=int, help="test at most this many mutants in this run")
     ap.add_argument(
         "--mutant", action="append", help="test this sampled mutant first (repeatable)"
+    )
+    ap.add_argument(
+        "--retest",
+        action="store_true",
+        help="rerun the missed mutants not yet triaged (or those of --mutant) on HEAD",
     )
     args = ap.parse_args()
     if shutil.which("cargo-mutants") is None:
@@ -156,16 +186,22 @@ def main():
     unknown = [n for n in first if n not in names]
     if unknown:
         sys.exit(f"not in the sample: {unknown}")
-    todo = [n for n in first + [n for n in names if n not in first] if n not in done]
-    todo = todo[: args.limit]
     LOGS.mkdir(parents=True, exist_ok=True)
-    by_name = prepare(commit)
+    prepare(commit, plan.WORKTREE)
+    by_name = diffs(commit)
     missing = [n for n in names if n not in by_name]
     if missing:
         sys.exit(f"{len(missing)} sampled mutants are not cargo-mutants' at {commit}: {missing[:3]}")
-    base = baseline(sorted({plan.module_of(n) for n in todo}), commit)
+    if args.retest:
+        triaged = plan.read_triage()
+        todo = first or [n for n in names if done.get(n, ("",))[0] == "missed" and n not in triaged]
+        retest(todo, by_name)
+        return
+    todo = [n for n in first + [n for n in names if n not in first] if n not in done]
+    todo = todo[: args.limit]
+    base = baseline(sorted({plan.module_of(n) for n in todo}), commit, plan.WORKTREE)
     for k, name in enumerate(todo, 1):
-        outcome, secs = test(by_name[name], base)
+        outcome, secs = test(by_name[name], base, plan.WORKTREE)
         with open(plan.RESULTS, "a") as f:
             f.write(f"{name}\t{outcome}\t{secs:.0f}\n")
         print(f"[{len(done) + k}/{len(names)}] {outcome:8} {secs:5.0f} s  {name}", flush=True)

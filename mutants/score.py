@@ -7,6 +7,9 @@ score interval, as a Markdown table.
 The score is the share of viable mutants detected: caught or timed out, over caught, timed
 out and missed (unviable mutants do not build and are left out). The interval treats the
 viable mutants tested as a uniform sample of the module's viable mutants.
+
+The second table is the score after triage (mutants/triage.txt): a missed mutant that the
+rerun on a later commit caught counts as caught, one argued equivalent is left out.
 """
 
 import math
@@ -39,16 +42,35 @@ def row(label, outcomes, sampled):
     )
 
 
+def triaged(outcome, verdict):
+    """The outcome after triage: the rerun's for a missed mutant, None for an equivalent one."""
+    if outcome != "missed" or verdict is None:
+        return outcome
+    return None if verdict == "equivalent" else verdict
+
+
+def table(names, outcome):
+    """The score table of the sampled `names` whose outcome (None: left out) is known."""
+    print("| module | tested | unviable | caught | timeout | missed | score | 95 % Wilson |")
+    print("|---|---|---|---|---|---|---|---|")
+    for m in plan.MODULES + [None]:
+        mine = [n for n in names if m is None or plan.module_of(n) == m]
+        got = [outcome(n) for n in mine]
+        print(row(f"`{m}`" if m else "all", [o for o in got if o is not None], len(mine)))
+
+
 def main():
     commit, names = plan.read_sample()
     results = plan.read_results()
+    triage = plan.read_triage()
     print(f"Sample at commit {commit[:12]}: {len(results)} of {len(names)} mutants tested.\n")
-    print("| module | tested | unviable | caught | timeout | missed | score | 95 % Wilson |")
-    print("|---|---|---|---|---|---|---|---|")
-    for m in plan.MODULES:
-        mine = [n for n in names if plan.module_of(n) == m]
-        print(row(f"`{m}`", [results[n][0] for n in mine if n in results], len(mine)))
-    print(row("all", [results[n][0] for n in names if n in results], len(names)))
+    table(names, lambda n: results[n][0] if n in results else None)
+    equivalent = sum(v == "equivalent" for v, _ in triage.values())
+    print(f"\nAfter triage ({len(triage)} survivors: {equivalent} equivalent, the rest rerun):\n")
+    table(
+        names,
+        lambda n: triaged(results[n][0], triage.get(n, (None,))[0]) if n in results else None,
+    )
 
 
 if __name__ == "__main__":

@@ -138,3 +138,24 @@ impl<N: Num> BBox<N> {
             .fold(0.0, f64::max)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n.into(), d.into())
+    }
+
+    /// `midpoint` and `lerp` against the definitions worked by hand: a + t (b − a) at t = 1/3
+    /// of (1, 2)–(4, −5) is (2, −1/3), with both ends at t = 0 and t = 1.
+    #[test]
+    fn midpoint_and_lerp_by_hand() {
+        let (a, b) = (Point::<Rational>::int(1, 2), Point::int(4, -5));
+        assert_eq!(a.midpoint(&b), Point::new(q(5, 2), q(-3, 2)));
+        assert_eq!(a.lerp(&b, &q(1, 3)), Point::new(q(2, 1), q(-1, 3)));
+        assert_eq!(a.lerp(&b, &q(0, 1)), a);
+        assert_eq!(a.lerp(&b, &q(1, 1)), b);
+    }
+}

@@ -779,6 +779,20 @@ mod tests {
         assert_eq!(Num::to_f64(&x), 3002399751580331.0);
     }
 
+    /// Negating a big value negates its approximation too, which the comparison filter reads:
+    /// −(10⁴⁰ + 1)/(3·10³⁹) lies below −10/3, and its approximation is negative.
+    #[test]
+    fn negation_of_a_big_value_compares_below() {
+        let ten = |k: u32| BigInt::from(10).pow(k);
+        let x = Rational::new(ten(40) + 1, BigInt::from(3) * ten(39));
+        assert!(matches!(x.0, Repr::Big(_)));
+        let y = Rational::new((-10).into(), 3.into());
+        assert!(Num::approx(&-x.clone()) < 0.0);
+        assert!(-x.clone() < y);
+        assert_eq!((-x.clone()).cmp(&y), Ordering::Less);
+        assert_eq!(-(-x.clone()), x);
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// `to_f64` is num-rational's correctly rounded value, both signs, for small fractions
