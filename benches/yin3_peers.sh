@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The 3D table of BENCHMARKS.md in one go: builds the peers if missing (Manifold's PyPI wheel in a
 # venv at target/m3venv, CGAL's harness at target/cgal3d/cgal3d, boolmesh at
-# target/mesh_peers), runs benches/yin3_table.rs (ours and every peer on the same OBJ files in
+# target/mesh_peers, kigumi's harness at target/kigumi3d/kigumi3d, built by its own build.sh),
+# runs benches/yin3_table.rs (ours and every peer on the same OBJ files in
 # target/yin3_workloads), then the peak memory of one V1 meet at the largest size, ours and the
 # peers', under /usr/bin/time -v. The table goes to stdout and target/yin3_table.md.
 #
@@ -31,6 +32,10 @@ if [ ! -x target/cgal3d/cgal3d ]; then
   g++ -std=c++17 -O2 -DNDEBUG -DCGAL_USE_GMPXX=1 -frounding-math "$tools/cgal3d/cgal3d.cpp" \
     -o target/cgal3d/cgal3d -lgmpxx -lgmp -lmpfr -pthread
 fi
+if [ ! -x target/kigumi3d/kigumi3d ]; then
+  bash "$tools/kigumi3d/build.sh"
+  mkdir -p target/kigumi3d && cp "$tools/kigumi3d/kigumi3d" target/kigumi3d/
+fi
 CARGO_TARGET_DIR=target/mesh_peers cargo build -q --release --manifest-path benches/mesh_peers/Cargo.toml
 echo "== machine"; uname -srm; grep -m1 'model name' /proc/cpuinfo; nproc; free -g | sed -n 2p
 echo "== code"; git rev-parse --short HEAD; git status --short | head
@@ -51,4 +56,5 @@ a=target/yin3_workloads/v1_a_$peak_m.obj; b=target/yin3_workloads/v1_b_$peak_m.o
 peak Manifold target/m3venv/bin/python "$tools/manifold3d/m3.py" meet "$a" "$b" --reps 1
 peak "CGAL corefine" target/cgal3d/cgal3d meet "$a" "$b" --engine corefine --reps 1
 peak boolmesh target/mesh_peers/release/mesh_peers boolmesh meet "$a" "$b" --reps 1
+peak kigumi target/kigumi3d/kigumi3d meet "$a" "$b" --reps 1
 echo "== end"; date -u; uptime

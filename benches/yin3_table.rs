@@ -1,6 +1,7 @@
 //! The 3D table of BENCHMARKS.md: our exact and float meet against Manifold, CGAL (corefinement and
-//! Nef polyhedra) and boolmesh on the same OBJ files (benches/yin3_work), in one run, printed
-//! as a Markdown table and written to target/yin3_table.md. Run by benches/yin3_peers.sh,
+//! Nef polyhedra), boolmesh and kigumi on the same OBJ files (benches/yin3_work, and kigumi's
+//! checker ∧ text from `$KIGUMI_MESHES` when set), in one run, printed as a Markdown table and
+//! written to target/yin3_table.md. Run by benches/yin3_peers.sh,
 //! which builds the peers; a peer that is missing shows as "n/a".
 //!
 //! ```sh
@@ -250,12 +251,13 @@ struct Row {
 
 /// Every contender on one pair; `run[k]` says whether contender k (the table's order) runs
 /// (V1 drops a contender past its limit at a smaller n).
-fn row(label: &str, a: &Path, b: &Path, o: &Opts, run: [bool; 6]) -> Row {
+fn row(label: &str, a: &Path, b: &Path, o: &Opts, run: [bool; CONTENDERS]) -> Row {
     let reps = o.reps.to_string();
     let py = target("m3venv/bin/python");
     let m3 = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/tools/manifold3d/m3.py");
     let cgal = target("cgal3d/cgal3d");
     let bm = target("mesh_peers/release/mesh_peers");
+    let kigumi = target("kigumi3d/kigumi3d");
     let skipped = || Cell::Status("skipped (over its limit at a smaller n)".into());
     let e = if run[0] {
         ours::<Rational>(a, b, o.reps, true)
@@ -272,7 +274,7 @@ fn row(label: &str, a: &Path, b: &Path, o: &Opts, run: [bool; 6]) -> Row {
         (_, Cell::Time(_, v)) => Some(*v),
         _ => None,
     };
-    let peers: [(Vec<&str>, Vec<&str>); 4] = [
+    let peers: [(Vec<&str>, Vec<&str>); CONTENDERS - 2] = [
         (
             vec![py.to_str().unwrap(), m3.to_str().unwrap()],
             vec!["--reps", &reps],
@@ -289,6 +291,7 @@ fn row(label: &str, a: &Path, b: &Path, o: &Opts, run: [bool; 6]) -> Row {
             vec![bm.to_str().unwrap(), "boolmesh"],
             vec!["--reps", &reps],
         ),
+        (vec![kigumi.to_str().unwrap()], vec!["--reps", &reps]),
     ];
     let mut cells = vec![e, f];
     cells.extend(peers.iter().zip(&run[2..]).map(|((cmd, extra), &go)| {
@@ -306,10 +309,14 @@ fn row(label: &str, a: &Path, b: &Path, o: &Opts, run: [bool; 6]) -> Row {
     }
 }
 
+/// Ours exact and float, Manifold, CGAL corefine, CGAL Nef, boolmesh, kigumi: the table's
+/// columns.
+const CONTENDERS: usize = 7;
+
 /// A peer's time limit per call, seconds.
 const PEER_LIMIT_S: u64 = 60;
 
-const HEAD: &str = "| workload | ours exact | ours float | Manifold | CGAL corefine | CGAL Nef | boolmesh | exact/float | exact/corefine | exact/Nef | float/Manifold |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+const HEAD: &str = "| workload | ours exact | ours float | Manifold | CGAL corefine | CGAL Nef | boolmesh | kigumi | float/exact | exact/kigumi | exact/corefine | exact/Nef | float/Manifold |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
 /// Our float volume's difference from our exact one and the float bound ε·A on it, when both
 /// ran.
@@ -356,14 +363,16 @@ fn line(label: &str, r: &Row) -> String {
         })
         .collect();
     format!(
-        "| {label} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+        "| {label} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
         shown[0],
         shown[1],
         shown[2],
         shown[3],
         shown[4],
         shown[5],
-        ratio(cells[0].ms(), cells[1].ms()),
+        shown[6],
+        ratio(cells[1].ms(), cells[0].ms()),
+        ratio(cells[0].ms(), cells[6].ms()),
         ratio(cells[0].ms(), cells[3].ms()),
         ratio(cells[0].ms(), cells[4].ms()),
         ratio(cells[1].ms(), cells[2].ms()),
@@ -432,7 +441,7 @@ fn main() {
     let mut checks = String::from(
         "\n| workload | \\|V float − V exact\\| | bound ε·A | within |\n|---|---|---|---|\n",
     );
-    let mut run = [true; 6];
+    let mut run = [true; CONTENDERS];
     for m in v1_sizes(o.max_m) {
         let n = 8 * m * m;
         let (a, b) = work::v1(n);
@@ -460,21 +469,29 @@ fn main() {
         for (name, m) in [("shift", shifted), ("turn", turned)] {
             let label = format!("V2 {name} k={k}");
             let pm = work::write(&format!("v2_{name}_{k}"), &m);
-            let r = row(&label, &pg, &pm, &o, [true; 6]);
+            let r = row(&label, &pg, &pm, &o, [true; CONTENDERS]);
             table += &say(line(&label, &r));
             checks += &check(&label, &r);
         }
     }
     for (label, a, b) in work::v3_files() {
         let label = format!("V3 {label}");
-        let r = row(&label, &a, &b, &o, [true; 6]);
+        let r = row(&label, &a, &b, &o, [true; CONTENDERS]);
         table += &say(line(&label, &r));
         checks += &check(&label, &r);
     }
+    // kigumi's own non-manifold benchmark (meshes/checker.obj and text.obj of its repository).
+    if let Some(dir) = std::env::var_os("KIGUMI_MESHES").map(PathBuf::from) {
+        let label = "V5 kigumi's checker ∧ text";
+        let (a, b) = (dir.join("checker.obj"), dir.join("text.obj"));
+        let r = row(label, &a, &b, &o, [true; CONTENDERS]);
+        table += &say(line(label, &r));
+        checks += &check(label, &r);
+    }
     let n4 = 4;
     let sphere = work::write("v4_sphere_968", &work::v4_sphere(1000));
-    let mut sums: Vec<Option<f64>> = vec![Some(0.0); 6];
-    let mut statuses: Vec<Option<String>> = vec![None; 6];
+    let mut sums: Vec<Option<f64>> = vec![Some(0.0); CONTENDERS];
+    let mut statuses: Vec<Option<String>> = vec![None; CONTENDERS];
     let mut v4_gap = (0.0, 0.0);
     for (i, cell) in work::v4_cells(n4).iter().enumerate() {
         let pc = work::write(&format!("v4_cell_{n4}_{i}"), cell);
@@ -483,7 +500,7 @@ fn main() {
             &sphere,
             &pc,
             &Opts { reps: 1, ..o },
-            [true; 6],
+            [true; CONTENDERS],
         );
         if let Some((d, b)) = float_gap(&r) {
             v4_gap = (v4_gap.0 + d, v4_gap.1 + b);
