@@ -3,7 +3,7 @@
 # the file names): 2D against the peers, 3D against the peers (with peak memory), 3D input and
 # output before and after BEFORE_REV, the parallel speedups, the 2D peak memory and the Python
 # call's overhead. Each family's log goes to target/bench-all/FAMILY.log; nothing else should
-# run on the machine meanwhile (about two hours on two cores).
+# run on the machine meanwhile (about 40 minutes on two cores).
 #
 #   KIGUMI_MESHES=DIR bash benches/all.sh BEFORE_REV
 #
@@ -39,7 +39,7 @@ family() { # NAME COMMAND...: run it, its output to the terminal and to $out/NAM
 cargo build -q --release
 
 family 2d bash benches/peers2d_cgal.sh W2 W4/ W3/ W1/meet W6/
-family 3d bash benches/yin3_peers.sh --max-exact-s 30 --max-m 32 --reps 3 --peak-m 32 --peak-exact-m 32
+family 3d bash benches/yin3_peers.sh --max-exact-s 30 --max-m 128 --reps 3 --peak-m 128 --peak-exact-m 128
 family 3d-io bash benches/yin3_io.sh "$before" --reps 3
 family parallel-1 env RAYON_NUM_THREADS=1 cargo bench --bench parallel
 family parallel-2 env RAYON_NUM_THREADS=2 cargo bench --bench parallel

@@ -2,9 +2,9 @@
 # Before/after of benches/yin3_io.rs in one run: checks REV out in a temporary git worktree
 # (target/yin3_io/rev, removed at the end), copies this tree's harness into it (benches/yin3_io.rs,
 # benches/yin3_work/mod.rs, benches/peers/cpu_time.rs, and the [[bench]] entry if REV lacks it),
-# builds both in release (one target folder: dependencies compile once), runs the harness of
-# each against its own `yinset` binary, REV first, and prints one before/after table, also
-# written to target/yin3_io.md. Each run's own table and measurements stay in target/yin3_io/.
+# builds both in release (REV in a target folder of its own, seeded with this tree's build of
+# the dependencies), runs the harness of each against its own `yinset` binary, REV first, and
+# prints one before/after table, also written to target/yin3_io.md. Each run's own table and measurements stay in target/yin3_io/.
 # Options after REV go to both harnesses; kigumi's meshes come from --kigumi DIR or
 # $KIGUMI_MESHES.
 #
@@ -34,16 +34,27 @@ export CARGO_TARGET_DIR=$root/target
 # The shared meshes, which the worktree does not have beside it.
 YINSET_DATA=${YINSET_DATA:-$(cd "$root/../shared/data" && pwd)}
 export YINSET_DATA
-build() { # DIR NAME: DIR's yinset and harness, copied to target/yin3_io/NAME-{yinset,bench}
-  (cd "$1" && nice cargo build -q --release --bin yinset)
-  cp "$CARGO_TARGET_DIR/release/yinset" "$out/$2-yinset"
+build() { # DIR NAME TARGET: DIR's yinset and harness, built in the target folder TARGET and
+  # copied to target/yin3_io/NAME-{yinset,bench}
+  (cd "$1" && CARGO_TARGET_DIR=$3 nice cargo build -q --release --bin yinset)
+  cp "$3/release/yinset" "$out/$2-yinset"
   local exe
-  exe=$(cd "$1" && nice cargo bench -q --bench yin3_io --no-run --message-format=json |
+  exe=$(cd "$1" && CARGO_TARGET_DIR=$3 nice cargo bench -q --bench yin3_io --no-run --message-format=json |
     grep -o '"executable":"[^"]*/yin3_io-[0-9a-f]*"' | cut -d'"' -f4)
   cp "$exe" "$out/$2-bench"
 }
-build "$wt" before
-build "$root" after
+# REV builds in a target folder of its own: cargo names a workspace's own packages' builds by
+# package, not by path, so in this tree's folder REV would be handed this tree's build as up
+# to date. The folder starts as a copy of this tree's release build less yinset's own units
+# (the dependencies are not built again).
+rev_target=$out/rev-target
+build "$root" after "$CARGO_TARGET_DIR"
+rm -rf "$rev_target"
+mkdir -p "$rev_target"
+cp -a --reflink=auto "$CARGO_TARGET_DIR/release" "$rev_target/"
+rm -rf "$rev_target"/release/.fingerprint/yinset-* "$rev_target"/release/deps/*yinset* \
+  "$rev_target"/release/deps/yin3_io-*
+build "$wt" before "$rev_target"
 echo "== machine"; uname -srm; grep -m1 'model name' /proc/cpuinfo || true; nproc; free -g | sed -n 2p
 echo "== code"; echo "before: $(git rev-parse --short "$rev")"
 echo "after: $(git rev-parse --short HEAD)"; git status --short | head
