@@ -16,8 +16,11 @@ TRIAGE = ROOT / "mutants" / "triage.txt"
 # The worktree at the sample's commit and its build folder (ignored by git: under target/).
 WORKTREE = ROOT / "target" / "mutants" / "wt"
 BUILD = ROOT / "target" / "mutants" / "build"
-# The worktree of the triage's rerun, at the checkout's HEAD.
+# The worktree of the triage's rerun, at the checkout's HEAD, and its build folder.
 RETEST_TREE = ROOT / "target" / "mutants" / "head"
+RETEST_BUILD = ROOT / "target" / "mutants" / "build-head"
+# Each worktree's build folder (one each: see run.py, prepare).
+BUILDS = {WORKTREE: BUILD, RETEST_TREE: RETEST_BUILD}
 
 # cargo-mutants' configuration: the examined files (src/<module>/**/*.rs), the excluded ones
 # and the build settings (its `--config` arguments), shared with a plain `cargo mutants`.

@@ -36,7 +36,7 @@ LOGS = plan.BUILD.parent / "logs"
 
 def run(cmd, cwd, timeout, log):
     """Run `cmd`, appending its output to `log`: 'ok', 'fail' or 'timeout', and seconds."""
-    env = dict(os.environ, CARGO_TARGET_DIR=str(plan.BUILD), **plan.ENV)
+    env = dict(os.environ, CARGO_TARGET_DIR=str(plan.BUILDS[cwd]), **plan.ENV)
     t0 = time.monotonic()
     with open(log, "a") as out:
         out.write("$ " + " ".join(cmd) + "\n")
@@ -80,17 +80,21 @@ def restore(wt):
 
 
 def prepare(commit, wt):
-    """The worktree `wt` at `commit` (any mutation an interrupted run left reverted) and the
-    build folder (seeded with this checkout's build of the dependencies)."""
+    """The worktree `wt` at `commit` (any mutation an interrupted run left reverted) and its
+    build folder, seeded with a build of the dependencies (this checkout's, or the sample's
+    folder for the rerun) less the units of the workspace's own crates: cargo names those by
+    package, not by path, and would take another tree's build of them as up to date."""
     if not wt.exists():
         git("worktree", "add", "--detach", str(wt), commit)
     restore(wt)
     subprocess.check_call(["git", "checkout", "--quiet", "--detach", commit], cwd=wt)
-    if not plan.BUILD.exists() and (plan.ROOT / "target" / "debug").exists():
-        plan.BUILD.mkdir(parents=True)
-        subprocess.check_call(
-            ["cp", "-a", "--reflink=auto", str(plan.ROOT / "target" / "debug"), str(plan.BUILD)]
-        )
+    build = plan.BUILDS[wt]
+    seed = plan.ROOT / "target" / "debug" if wt == plan.WORKTREE else plan.BUILD / "debug"
+    if not build.exists() and seed.exists():
+        build.mkdir(parents=True)
+        subprocess.check_call(["cp", "-a", "--reflink=auto", str(seed), str(build)])
+        for own in (build / "debug" / ".fingerprint").glob("yinset-*"):
+            shutil.rmtree(own)
 
 
 def diffs(commit):

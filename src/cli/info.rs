@@ -56,8 +56,8 @@ pub fn report<N: Num>(set: &YinSet2<N>) -> Value {
 
 /// The one-line summary `validate` gives of `set`: curves, Betti numbers, boundedness. Not its
 /// exact area, which `info` reports: an exact result's area can have far more digits than its
-/// coordinates (320 576 characters for the meet of two 10⁴-vertex stars) and summing it took
-/// 80% of the time of reading such a result back (benches/BENCHMARKS.md).
+/// coordinates (320 576 characters for the meet of two 10⁴-vertex stars), and summing it took
+/// 80% of the time of reading such a result back.
 pub fn summary<N: Num>(set: &YinSet2<N>) -> String {
     let b = set.betti();
     let extent = if set.is_bounded() {

@@ -139,9 +139,9 @@
 //!   power-of-two grid, then Shewchuk's adaptive `orient3d` after an exact power-of-two scaling,
 //!   rationals where even that under- or overflows).
 //! * **Speed.** On operands that cross, touch only in shared corners and edges, or do not
-//!   meet, float mode takes 0.02–0.20× exact mode's time (benches/BENCHMARKS.md); where they
+//!   meet, float mode takes 0.03–0.17× exact mode's time (benches/BENCHMARKS.md); where they
 //!   share faces or meet otherwise degenerately it takes the general path, the exact meet and
-//!   then rounding, at 1.0–1.5× exact mode's time.
+//!   then rounding, at 1.0–2.1× exact mode's time.
 
 mod arrange;
 mod betti;
