@@ -47,8 +47,15 @@ CARGO_CONFIG = [
     a for k, a in zip(CONFIG["additional_cargo_args"], CONFIG["additional_cargo_args"][1:])
     if k == "--config"
 ]
-# Incremental compilation of the workspace's crates (the test profile's default, made sure).
-ENV = {"CARGO_INCREMENTAL": "1", "YINSET_CASES": CASES}
+# Incremental compilation of the workspace's crates (the test profile's default, made sure),
+# and the shared data at its place beside this checkout (the worktrees are not beside it),
+# with CI set so that a test missing it fails instead of passing as skipped.
+ENV = {
+    "CARGO_INCREMENTAL": "1",
+    "YINSET_CASES": CASES,
+    "YINSET_DATA": str(ROOT.parent / "shared" / "data"),
+    "CI": "1",
+}
 
 # The outcomes a mutant can have (timeout: the tests ran past their limit).
 OUTCOMES = ["caught", "missed", "unviable", "timeout"]
