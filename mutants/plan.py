@@ -31,9 +31,9 @@ MODULES = [g.split("/")[1] for g in CONFIG["examine_globs"]]
 # The integration tests (tests/<name>.rs) that exercise each module, run after the module's
 # own unit tests (`cargo test --lib -- <module>::`). The kernel's points serve both
 # dimensions; the numbers serve everything, and the suites below are the ones that check
-# them directly (exact values, float against exact, the readers' numbers).
+# them directly (exact values, float against exact in 2D and 3D, the readers' numbers).
 INTEGRATION = {
-    "num": ["degenerate", "oracles", "float_mode", "fuzz_regressions"],
+    "num": ["degenerate", "oracles", "float_mode", "fuzz_regressions", "float_mode3"],
     "kernel": ["degenerate", "oracles", "yin3_degenerate"],
     "yin2": ["degenerate", "oracles", "axioms_proptest", "float_mode"],
     "yin3": ["yin3_degenerate", "oracles3", "axioms3_proptest", "float_mode3"],

@@ -17,6 +17,7 @@ The triage's rerun: the missed mutants not yet in mutants/triage.txt (or the nam
 its diff from the sample's commit patched onto a worktree at this checkout's HEAD
 (target/mutants/head), where the tests written for the survivors are, and tested the same
 way; the outcome and the commit go to mutants/triage.txt. Commit the tests first.
+`--all-cases` runs the property tests at their own case counts, as `cargo test` does.
 """
 
 import argparse
@@ -109,7 +110,8 @@ def diffs(commit):
 def baseline(modules, commit, wt):
     """Seconds of each module's unit and integration tests on the unmutated tree (they must
     pass), measured once per commit."""
-    path = plan.BUILD.parent / f"baseline-{commit}.json"
+    cases = plan.ENV.get("YINSET_CASES", "all")
+    path = plan.BUILD.parent / f"baseline-{commit}-{cases}-cases.json"
     secs = json.loads(path.read_text()) if path.exists() else {}
     for m in modules:
         if m in secs:
@@ -166,7 +168,8 @@ def retest(names, by_name):
     for name in names:
         outcome, secs = test(by_name[name], base, plan.RETEST_TREE)
         with open(plan.TRIAGE, "a") as f:
-            f.write(f"{name}\t{outcome}\tat {head[:12]}, {secs:.0f} s\n")
+            cases = "capped" if "YINSET_CASES" in plan.ENV else "all"
+            f.write(f"{name}\t{outcome}\tat {head[:12]}, {cases} cases, {secs:.0f} s\n")
         print(f"retest {outcome:8} {secs:5.0f} s  {name}", flush=True)
 
 
@@ -181,7 +184,14 @@ def main():
         action="store_true",
         help="rerun the missed mutants not yet triaged (or those of --mutant) on HEAD",
     )
+    ap.add_argument(
+        "--all-cases",
+        action="store_true",
+        help="property tests at their own case counts, as `cargo test` runs them (no cap)",
+    )
     args = ap.parse_args()
+    if args.all_cases:
+        del plan.ENV["YINSET_CASES"]
     if shutil.which("cargo-mutants") is None:
         sys.exit("cargo-mutants is needed for the mutants' diffs: cargo install cargo-mutants --locked")
     commit, names = plan.read_sample()
