@@ -109,7 +109,7 @@ def diffs(commit):
 
 def baseline(modules, commit, wt):
     """Seconds of each module's unit and integration tests on the unmutated tree (they must
-    pass), measured once per commit."""
+    pass), measured once per commit and case count."""
     cases = plan.ENV.get("YINSET_CASES", "all")
     path = plan.BUILD.parent / f"baseline-{commit}-{cases}-cases.json"
     secs = json.loads(path.read_text()) if path.exists() else {}

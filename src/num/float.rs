@@ -675,13 +675,24 @@ mod tests {
     /// and (5, 5, 5) is x + y + z = 15, and (4, 6, 8) lies √3 ≈ 1.732 off it.
     #[test]
     fn within_plane_is_the_distance_to_the_plane() {
-        let (a, b, c, d) = ([3.0, 5.0, 7.0], [5.0, 3.0, 7.0], [5.0, 5.0, 5.0], [4.0, 6.0, 8.0]);
+        let (a, b, c, d) = (
+            [3.0, 5.0, 7.0],
+            [5.0, 3.0, 7.0],
+            [5.0, 5.0, 5.0],
+            [4.0, 6.0, 8.0],
+        );
         assert!(within_plane(a, b, c, d, 1.74));
         assert!(!within_plane(a, b, c, d, 1.72));
         // A point of the plane, and one 0.5 off the plane z = 7 through a, b and (3, 9, 7).
         assert!(within_plane(a, b, c, [4.0, 4.0, 7.0], 1e-12));
         assert!(within_plane(a, b, [3.0, 9.0, 7.0], [10.0, -4.0, 7.5], 0.51));
-        assert!(!within_plane(a, b, [3.0, 9.0, 7.0], [10.0, -4.0, 7.5], 0.49));
+        assert!(!within_plane(
+            a,
+            b,
+            [3.0, 9.0, 7.0],
+            [10.0, -4.0, 7.5],
+            0.49
+        ));
     }
 
     /// `segment_distance` against distances worked by hand: to the inside of a segment, to an
@@ -692,6 +703,12 @@ mod tests {
         assert_eq!(segment_distance([1.0, 1.0], [5.0, 1.0], [8.0, 5.0]), 5.0);
         assert_eq!(segment_distance([1.0, 1.0], [1.0, 1.0], [4.0, 5.0]), 5.0);
         assert_eq!(segment_distance([1.0, 1.0], [1.0, 1.0], [1.0, 1.0]), 0.0);
+        // Subnormal differences, scaled up by 2^1069 and back down in steps (`ldexp`).
+        let u = f64::from_bits(16); // 2^-1070
+        assert_eq!(
+            segment_distance([0.0, 0.0], [4.0 * u, 0.0], [2.0 * u, 3.0 * u]),
+            3.0 * u
+        );
     }
 
     proptest::proptest! {
