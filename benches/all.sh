@@ -22,11 +22,12 @@ if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
 fi
 out=target/bench-all
 mkdir -p "$out"
+stamp() { echo "$(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg)"; }
 family() { # NAME COMMAND...: run it, its output to the terminal and to $out/NAME.log; a
   # family that fails is reported and the run goes on to the next
   local name=$1
   shift
-  echo "== $name ($(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg)): $*"
+  echo "== $name ($(stamp)): $*"
   "$@" 2>&1 | tee "$out/$name.log" || echo "!! $name failed: see $out/$name.log"
 }
 {
@@ -57,4 +58,4 @@ data=$(cd ../shared/data/2d && pwd)
 family python-py "$venv/bin/python" python/bench/overhead.py "$data" "$out/spheres" 31
 family python-rs cargo run -q --release --manifest-path python/Cargo.toml --example overhead -- \
   "$data/panda" "$data/mickey" "$out/spheres/sphere_a.obj" "$out/spheres/sphere_b.obj" 31
-echo "== end ($(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg))"
+echo "== end ($(stamp))"

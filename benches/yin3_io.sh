@@ -4,7 +4,8 @@
 # benches/yin3_work/mod.rs, benches/peers/cpu_time.rs, and the [[bench]] entry if REV lacks it),
 # builds both in release (REV in a target folder of its own, seeded with this tree's build of
 # the dependencies), runs the harness of each against its own `yinset` binary, REV first, and
-# prints one before/after table, also written to target/yin3_io.md. Each run's own table and measurements stay in target/yin3_io/.
+# prints one before/after table, also written to target/yin3_io.md. Each run's own table and
+# measurements stay in target/yin3_io/.
 # Options after REV go to both harnesses; kigumi's meshes come from --kigumi DIR or
 # $KIGUMI_MESHES.
 #

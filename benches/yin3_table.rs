@@ -1,8 +1,8 @@
 //! The 3D table of BENCHMARKS.md: our exact and float meet against Manifold, CGAL (corefinement and
 //! Nef polyhedra), boolmesh and kigumi on the same OBJ files (benches/yin3_work, and kigumi's
 //! checker ∧ text from `$KIGUMI_MESHES` when set), in one run, printed as a Markdown table and
-//! written to target/yin3_table.md. Run by benches/yin3_peers.sh,
-//! which builds the peers; a peer that is missing shows as "n/a".
+//! written to target/yin3_table.md. Run by benches/yin3_peers.sh, which builds the peers; a
+//! peer that is missing shows as "n/a".
 //!
 //! ```sh
 //! cargo bench --bench yin3_table -- [--max-exact-s S] [--max-float-s F] [--max-m M] [--reps R]
