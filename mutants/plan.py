@@ -39,6 +39,10 @@ INTEGRATION = {
     "yin3": ["yin3_degenerate", "oracles3", "axioms3_proptest", "float_mode3"],
 }
 
+# Files compiled only under a cargo feature, and that feature: their mutants are built and
+# tested with it (the other mutants without, as `cargo test` runs by default).
+FEATURES = {"src/num/gmp.rs": "gmp"}
+
 # Property tests run at most this many cases per property (tests/kit: `cases`).
 CASES = "32"
 

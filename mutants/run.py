@@ -58,9 +58,12 @@ def run(cmd, cwd, timeout, log):
     return status, secs
 
 
-def cargo(module, what):
-    """The cargo command that builds (`what` = 'build') or runs one of a module's test sets."""
+def cargo(module, what, file=None):
+    """The cargo command that builds (`what` = 'build') or runs one of a module's test sets,
+    with the feature that compiles `file` where it needs one (plan.FEATURES)."""
     config = [a for c in plan.CARGO_CONFIG for a in ("--config", c)]
+    if file in plan.FEATURES:
+        config += ["--features", plan.FEATURES[file]]
     tests = [a for t in plan.INTEGRATION[module] for a in ("--test", t)]
     if what == "build":
         return ["cargo", "test", "--no-run", "--lib", *tests, *config]
@@ -143,12 +146,12 @@ def test(mutant, base, wt):
     )
     t0 = time.monotonic()
     try:
-        status, _ = run(cargo(module, "build"), wt, 3600, log)
+        status, _ = run(cargo(module, "build", mutant["file"]), wt, 3600, log)
         if status != "ok":
             return "unviable", time.monotonic() - t0
         for what in ("unit", "integration"):
             limit = 3 * base[module][what] + 30
-            status, _ = run(cargo(module, what), wt, limit, log)
+            status, _ = run(cargo(module, what, mutant["file"]), wt, limit, log)
             if status == "fail":
                 return "caught", time.monotonic() - t0
             if status == "timeout":
