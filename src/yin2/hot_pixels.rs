@@ -285,6 +285,31 @@ mod tests {
         assert!(!meets_pixel((3, 1), (7, 3), (5, 4)));
     }
 
+    /// A segment whose line runs through the middle of a pixel's square, but which ends before
+    /// the square in x or in y, does not meet the pixel: the squares of pixels (5, 0) and
+    /// (−3, 0) span x in [4.5, 5.5) and [−3.5, −2.5), beyond the segment's x-range [0, 2];
+    /// likewise in y for the vertical segment.
+    #[test]
+    fn a_segment_ending_before_a_pixel_on_its_line_misses_it() {
+        assert!(!meets_pixel((0, 0), (2, 0), (5, 0)));
+        assert!(!meets_pixel((0, 0), (2, 0), (-3, 0)));
+        assert!(!meets_pixel((0, 0), (0, 2), (0, 5)));
+        assert!(!meets_pixel((0, 0), (0, 2), (0, -3)));
+    }
+
+    /// `gallop` returns the least k in 1..n with `past(k)` wherever it lies (at a doubling
+    /// step or between two), and `None` where no k below n is past: `past` true from `first`
+    /// on, so the answer is `first` when `first < n`.
+    #[test]
+    fn gallop_finds_the_least_index_past() {
+        for n in 1..20 {
+            for first in 1..=n {
+                let want = (first < n).then_some(first);
+                assert_eq!(gallop(n, |k| k >= first), want, "n = {n}, first = {first}");
+            }
+        }
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
         /// The `f64` filter never decides against the exact side tests: segments between grid

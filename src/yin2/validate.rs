@@ -370,9 +370,27 @@ mod tests {
     use crate::num::Rational;
     use crate::yin2::{YinError, YinSet2};
 
+    /// The vertex cycle of the integer points `c`.
+    fn ring(c: &[(i64, i64)]) -> Vec<Point<Rational>> {
+        c.iter().map(|&(x, y)| Point::int(x, y)).collect()
+    }
+
+    /// A curve that passes through its first vertex again, along an edge next to neither its
+    /// first nor its last edge (which meet that edge there), is not simple: the figure eight
+    /// (1, 0), (2, 1), (2, −1), (0, 1), (0, −1), whose third edge, from (2, −1) to (0, 1),
+    /// has (1, 0) as its midpoint.
+    #[test]
+    fn a_curve_through_its_first_vertex_twice_is_not_simple() {
+        let eight = ring(&[(1, 0), (2, 1), (2, -1), (0, 1), (0, -1)]);
+        let got = YinSet2::<Rational>::from_curves(vec![eight]);
+        assert!(
+            matches!(got, Err(YinError::NotSimple { curve: 0, .. })),
+            "{got:?}"
+        );
+    }
+
     #[test]
     fn a_repeated_vertex_is_named_by_its_second_occurrence() {
-        let ring = |c: &[(i64, i64)]| c.iter().map(|&(x, y)| Point::int(x, y)).collect();
         let square = ring(&[(5, 5), (6, 5), (6, 6), (5, 6)]);
         let doubled = ring(&[(0, 0), (2, 0), (2, 0), (2, 2), (0, 2)]);
         assert_eq!(
