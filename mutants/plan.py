@@ -32,11 +32,13 @@ MODULES = [g.split("/")[1] for g in CONFIG["examine_globs"]]
 # own unit tests (`cargo test --lib -- <module>::`). The kernel's points serve both
 # dimensions; the numbers serve everything, and the suites below are the ones that check
 # them directly (exact values, float against exact in 2D and 3D, the readers' numbers).
+# float_measures, the exact areas and volumes of float sets, joined the sets' lists after the
+# sample's run: the triage's rerun runs it.
 INTEGRATION = {
     "num": ["degenerate", "oracles", "float_mode", "fuzz_regressions", "float_mode3"],
     "kernel": ["degenerate", "oracles", "yin3_degenerate"],
-    "yin2": ["degenerate", "oracles", "axioms_proptest", "float_mode"],
-    "yin3": ["yin3_degenerate", "oracles3", "axioms3_proptest", "float_mode3"],
+    "yin2": ["degenerate", "oracles", "axioms_proptest", "float_mode", "float_measures"],
+    "yin3": ["yin3_degenerate", "oracles3", "axioms3_proptest", "float_mode3", "float_measures"],
 }
 
 # Files compiled only under a cargo feature, and that feature: their mutants are built and
