@@ -671,6 +671,26 @@ mod tests {
         assert_eq!(PlaneF64::new(a, b, c).side(d), exact);
     }
 
+    /// The orientation is exact where both products of `exact_orient_f64`'s filter round in
+    /// the subnormal range: with c = (2⁻⁵³, 0), a = (1.5, −(1.5 − 2⁻⁵²)·2⁻¹⁰²¹) and
+    /// b = (−2⁻¹⁰⁶, 2⁻¹⁰⁷⁴), the rounded differences 1.5 and −2⁻⁵³ make the products
+    /// 1.5·2⁻¹⁰⁷⁴ (a tie, rounded to 2·2⁻¹⁰⁷⁴) and (1.5 − 2⁻⁵²)·2⁻¹⁰⁷⁴ (rounded to 2⁻¹⁰⁷⁴), a
+    /// positive difference; the exact determinant is 2⁻¹⁰⁷⁴·(2⁻¹⁰⁵ − 2⁻⁵⁴) < 0 (by hand).
+    #[test]
+    fn orientation_with_subnormal_products_is_exact() {
+        let (a, b, c) = (
+            [1.5, -ldexp(1.5 - f64::EPSILON, -1021)],
+            [-ldexp(1.0, -106), f64::from_bits(1)],
+            [ldexp(1.0, -53), 0.0],
+        );
+        let r = |p: [f64; 2]| p.map(|x| Rational::from_f64(x).expect("finite"));
+        let (ra, rb, rc) = (r(a), r(b), r(c));
+        let exact =
+            super::super::exact_orient([&ra[0], &ra[1]], [&rb[0], &rb[1]], [&rc[0], &rc[1]]);
+        assert_eq!(exact, Ordering::Less);
+        assert_eq!(exact_orient_f64(a, b, c), Ordering::Less);
+    }
+
     /// `within_plane` against distances worked by hand: the plane through (3, 5, 7), (5, 3, 7)
     /// and (5, 5, 5) is x + y + z = 15, and (4, 6, 8) lies √3 ≈ 1.732 off it.
     #[test]

@@ -117,6 +117,26 @@ mod tests {
         assert_eq!(GmpRational::parse("1/3").unwrap().0, Rational::from((1, 3)));
     }
 
+    /// Negation, the nearest `f64` and the orientation on values worked by hand.
+    #[test]
+    fn arithmetic_by_hand() {
+        let q = |n: i64, d: i64| GmpRational(Rational::from((n, d)));
+        assert_eq!(-q(1, 3), q(-1, 3));
+        assert_eq!(-q(-5, 2), q(5, 2));
+        assert_eq!(q(1, 4).to_f64(), 0.25);
+        assert_eq!(q(-3, 2).to_f64(), -1.5);
+        let (o, x, y) = ([q(0, 1), q(0, 1)], [q(1, 1), q(0, 1)], [q(0, 1), q(1, 1)]);
+        // (1, 0) × (0, 1) = 1: y lies left of o → x, and x right of o → y.
+        assert_eq!(
+            GmpRational::orient2d(o.each_ref(), x.each_ref(), y.each_ref(), &()),
+            Ordering::Greater
+        );
+        assert_eq!(
+            GmpRational::orient2d(o.each_ref(), y.each_ref(), x.each_ref(), &()),
+            Ordering::Less
+        );
+    }
+
     /// The fraction in lowest terms, sign on the numerator, beyond 64 bits.
     #[test]
     fn fraction_is_the_exact_value() {

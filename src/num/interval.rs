@@ -179,6 +179,25 @@ mod tests {
         }
     }
 
+    /// Intervals wider than a point: the product of [1, 2] and [3, 4] encloses [3, 8], the
+    /// quotient of [1, 2] by [4, 4] encloses [1/4, 1/2], and an interval below zero is negative.
+    #[test]
+    fn wide_intervals_by_hand() {
+        let r = |n: i64| Rational::from_i64(n);
+        let (x, y) = (Interval { lo: 1.0, hi: 2.0 }, Interval { lo: 3.0, hi: 4.0 });
+        let p = x * y;
+        assert!(encloses(p, &r(3)) && encloses(p, &r(8)));
+        assert!(p.lo > 2.9 && p.hi < 8.1);
+        let q = x
+            .div(Interval { lo: 4.0, hi: 4.0 })
+            .expect("4 excludes zero");
+        let quarter = Rational::new(1.into(), 4.into());
+        assert!(encloses(q, &quarter) && encloses(q, &(quarter.clone() + quarter)));
+        assert!(q.lo > 0.24 && q.hi < 0.51);
+        assert_eq!(Interval { lo: -2.0, hi: -1.0 }.sign(), Some(Ordering::Less));
+        assert_eq!(Interval { lo: -2.0, hi: 0.0 }.sign(), None);
+    }
+
     #[test]
     fn signs_are_decided_only_when_certain() {
         let one = Interval::around(1.0);

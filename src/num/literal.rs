@@ -133,6 +133,18 @@ mod tests {
         );
     }
 
+    /// An exponent of six digits is in range when the fraction's digits bring the power of
+    /// ten back within `MAX_EXPONENT`: 10⁻¹⁰⁰⁰⁰⁰ · 10¹⁰⁰⁰⁰⁰ is 1.
+    #[test]
+    fn six_digit_exponent_balanced_by_fraction_digits() {
+        let text = format!("0.{}1e100000", "0".repeat(99_999));
+        let l = Literal::parse(&text).unwrap();
+        assert_eq!(
+            (l.negative, l.digits.as_str(), l.exp10, l.den.as_str()),
+            (false, "1", 0, "1")
+        );
+    }
+
     #[test]
     fn rejects_garbage() {
         for bad in [

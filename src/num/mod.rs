@@ -344,6 +344,22 @@ mod tests {
         );
     }
 
+    /// The default `crossing` (float mode's) on small integers, exact in `f64`: the line
+    /// through (1, 2) and (5, 4) meets the line through (2, 5) and (4, 1) at (3, 3), the
+    /// midpoint of both segments (t = (−10) / (−20) = 1/2 by hand).
+    #[test]
+    fn default_crossing_by_hand() {
+        let f = Float::new;
+        let (a, b, c, d) = (
+            [f(1.0), f(2.0)],
+            [f(5.0), f(4.0)],
+            [f(2.0), f(5.0)],
+            [f(4.0), f(1.0)],
+        );
+        let x = Float::crossing(a.each_ref(), b.each_ref(), c.each_ref(), d.each_ref());
+        assert_eq!(x, [f(3.0), f(3.0)]);
+    }
+
     #[test]
     fn filtered_orientation_agrees_with_exact_on_near_collinear_rationals() {
         // c is 1e-30 above the line through a and b: the filter must defer to exact arithmetic.

@@ -779,6 +779,44 @@ mod tests {
         assert_eq!(Num::to_f64(&x), 3002399751580331.0);
     }
 
+    /// `Debug` writes the value as `Display` does: lowest terms, the integer alone when the
+    /// denominator is 1.
+    #[test]
+    fn debug_is_the_fraction() {
+        let x = Rational::new(14.into(), (-4).into());
+        assert_eq!(format!("{x:?}"), "-7/2");
+        assert_eq!(format!("{:?}", Rational::from_i64(5)), "5");
+    }
+
+    /// `integers` takes a point only if every coordinate is an integer of magnitude below the
+    /// bound: ±(2⁴⁰ − 1) pass the bound 2⁴⁰, ±2⁴⁰, 1/2 and 2⁷⁰ do not.
+    #[test]
+    fn integers_are_bounded() {
+        let n = |v: i64| Rational::from_i64(v);
+        let (top, over) = (n((1 << 40) - 1), n(1 << 40));
+        assert_eq!(
+            integers([&top, &-top.clone()], 1 << 40),
+            Some([(1 << 40) - 1, 1 - (1 << 40)])
+        );
+        assert_eq!(integers([&top, &over], 1 << 40), None);
+        assert_eq!(integers([&-over.clone(), &top], 1 << 40), None);
+        assert_eq!(integers([&n(1).half()], 1 << 40), None);
+        assert_eq!(
+            integers([&Rational::from_integer(BigInt::from(1) << 70)], 1 << 40),
+            None
+        );
+    }
+
+    /// `nearest` of the exact backend is the value itself, small or big.
+    #[test]
+    fn nearest_is_the_value() {
+        let small = Rational::new((-7).into(), 2.into());
+        let big = Rational::new(BigInt::from(10).pow(40) + 1, 3.into());
+        for x in [small, big] {
+            assert_eq!(<Rational as Num>::nearest(&x), x);
+        }
+    }
+
     /// Negating a big value negates its approximation too, which the comparison filter reads:
     /// −(10⁴⁰ + 1)/(3·10³⁹) lies below −10/3, and its approximation is negative.
     #[test]
