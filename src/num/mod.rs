@@ -360,6 +360,25 @@ mod tests {
         assert_eq!(x, [f(3.0), f(3.0)]);
     }
 
+    /// On a nearly flat tetrahedron of coordinates near 10⁶ to 10⁷, where a bound in m²·u
+    /// instead of m³·u decides the wrong sign, the filter either defers or agrees with
+    /// `exact_orient3d` on the same values as rationals (Greater).
+    #[test]
+    fn filtered_orient3d_on_a_nearly_flat_tetrahedron_far_out() {
+        let a = [2097599.677707631, 4095721.8480184656, 1877360.4406349268];
+        let b = [-1669836.9282060806, -3562891.905917269, 601311.7009010501];
+        let c = [-5079842.93925414, -4752655.350767068, 6216525.025966568];
+        let d = [-6350174.638304699, -6398879.3503321735, 6890008.074510893];
+        let q = |p: [f64; 3]| p.map(|v| Rational::from_f64(v).unwrap());
+        let (qa, qb, qc, qd) = (q(a), q(b), q(c), q(d));
+        let exact = exact_orient3d(qa.each_ref(), qb.each_ref(), qc.each_ref(), qd.each_ref());
+        assert_eq!(exact, Ordering::Greater);
+        assert!(matches!(
+            filtered_orient3d(a, b, c, d),
+            None | Some(Ordering::Greater)
+        ));
+    }
+
     #[test]
     fn filtered_orientation_agrees_with_exact_on_near_collinear_rationals() {
         // c is 1e-30 above the line through a and b: the filter must defer to exact arithmetic.

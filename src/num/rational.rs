@@ -521,9 +521,9 @@ fn fraction_free_orient3d(
     exact_orient3d(zero.each_ref(), u.each_ref(), v.each_ref(), w.each_ref())
 }
 
-/// The coordinates of a point as `i128` if they are integers of magnitude below `bound`: the
-/// orientation determinants of such points are computed exactly in `i128` (below 2⁶¹ in 2D,
-/// 2⁴⁰ in 3D, their determinants stay below 2¹²⁷).
+/// The coordinates of a point as `i128` if they are integers of magnitude below `bound`: below
+/// 2⁶¹, the 2D orientation determinant of such points is computed exactly in `i128` (its
+/// differences stay below 2⁶², its products below 2¹²⁴).
 fn integers<const K: usize>(p: [&Rational; K], bound: i64) -> Option<[i128; K]> {
     let mut out = [0i128; K];
     for (o, v) in out.iter_mut().zip(p) {
