@@ -9,7 +9,8 @@ out and missed (unviable mutants do not build and are left out). The interval tr
 viable mutants tested as a uniform sample of the module's viable mutants.
 
 The second table is the score after triage (mutants/triage.txt): a missed mutant that the
-rerun on a later commit caught counts as caught, one argued equivalent is left out.
+rerun on a later commit caught counts as caught, one argued equivalent is left out, one that
+does not build under the feature its file needs counts as unviable.
 """
 
 import math
@@ -65,8 +66,12 @@ def main():
     triage = plan.read_triage()
     print(f"Sample at commit {commit[:12]}: {len(results)} of {len(names)} mutants tested.\n")
     table(names, lambda n: results[n][0] if n in results else None)
-    equivalent = sum(v == "equivalent" for v, _ in triage.values())
-    print(f"\nAfter triage ({len(triage)} survivors: {equivalent} equivalent, the rest rerun):\n")
+    count = {v: sum(x == v for x, _ in triage.values()) for v in ["equivalent", *plan.OUTCOMES]}
+    print(
+        f"\nAfter triage ({len(triage)} survivors: {count['equivalent']} equivalent, "
+        f"{count['unviable']} unviable, {count['caught'] + count['timeout']} caught and "
+        f"{count['missed']} missed on a rerun or since):\n"
+    )
     table(
         names,
         lambda n: triaged(results[n][0], triage.get(n, (None,))[0]) if n in results else None,
