@@ -1278,3 +1278,56 @@ fn reversed_box_is_the_complement() {
         "nested faces = K − [1,2]³",
     );
 }
+
+// ---------------------------------------------------------------------------------------------
+// Order and the Hasse diagram
+
+/// a ≤ b: [1,2]³ lies in [0,3]³ and not the other way; [3,4]×[0,1]² shares only a face with
+/// [0,3]³, so neither lies in the other; every set lies in itself.
+#[test]
+fn boxes_inside_others_are_subsets() {
+    let (small, big, beside) = (
+        boxed(1, 1, 1, 2, 2, 2),
+        boxed(0, 0, 0, 3, 3, 3),
+        boxed(3, 0, 0, 4, 1, 1),
+    );
+    assert!(small.is_subset(&big));
+    assert!(!big.is_subset(&small));
+    assert!(!beside.is_subset(&big) && !big.is_subset(&beside));
+    assert!(big.is_subset(&big));
+}
+
+/// The boxes [k, 9−k]³, k = 0..3, given in several orders, box k reversed for odd k (a box, a
+/// cavity in it, a box in that, a cavity in that): each surface's parent, the smallest surface
+/// whose bounded complement contains it, is the next larger box's, and the outermost has none;
+/// the surfaces of k = 0 and 2 are the positive ones.
+#[test]
+fn nested_boxes_hang_from_the_next_larger() {
+    for order in [[0, 1, 2, 3], [3, 2, 1, 0], [1, 3, 0, 2]] {
+        let parts = order
+            .iter()
+            .map(|&k| (box_mesh([k; 3], [9 - k; 3]), k % 2 == 1));
+        let y = build(combine(parts.collect()));
+        let (surfaces, parents) = (y.surfaces(), y.parents());
+        assert_eq!(parents.len(), 4, "{order:?}");
+        // The surface of box k: the one whose least x is k.
+        let of = |k: i64| {
+            let least = |s: usize| {
+                (surfaces[s].triangles.iter())
+                    .flat_map(|&t| y.triangles()[t])
+                    .map(|v| y.vertices()[v].x.clone())
+                    .min()
+            };
+            (0..surfaces.len())
+                .find(|&s| least(s) == Some(int(k)))
+                .expect("a surface")
+        };
+        assert_eq!(parents[of(0)], None, "{order:?}");
+        for k in 1..4 {
+            assert_eq!(parents[of(k)], Some(of(k - 1)), "box {k}, {order:?}");
+        }
+        for k in 0..4 {
+            assert_eq!(surfaces[of(k)].positive, k % 2 == 0, "box {k}, {order:?}");
+        }
+    }
+}

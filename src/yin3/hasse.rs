@@ -235,3 +235,106 @@ fn det3_sum_f64(tris: impl Iterator<Item = [[f64; 3]; 3]>) -> (f64, f64) {
         (f64::NAN, f64::INFINITY)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    /// A triangle with `f64` corners.
+    type Tri = [[f64; 3]; 3];
+
+    /// The exact value of an `f64`.
+    fn exact(x: f64) -> Rational {
+        Rational::from_float(x).expect("finite")
+    }
+
+    /// The exact point of `f64` coordinates.
+    fn point(c: [f64; 3]) -> Point3<Rational> {
+        Point3::new(exact(c[0]), exact(c[1]), exact(c[2]))
+    }
+
+    /// The triangle (x, 0, 0), (0, 1, 0), (0, 0, 1): det = x, its one nonzero product a₀b₁c₂.
+    fn diagonal(x: f64) -> Tri {
+        [[x, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    }
+
+    /// What the filtered volumes of the surfaces `surfaces` decide: |volume of 0| against
+    /// |volume of 1| (where there are two), and the sign of the total.
+    fn decided(surfaces: &[Vec<Tri>]) -> (Option<Ordering>, Ordering) {
+        let tris: Vec<Tri> = surfaces.concat();
+        let points: Vec<[Point3<Rational>; 3]> = tris.iter().map(|t| t.map(point)).collect();
+        let mut members = Vec::new();
+        for s in surfaces {
+            let first = members.iter().map(Vec::len).sum::<usize>();
+            members.push((first..first + s.len()).collect::<Vec<usize>>());
+        }
+        let corners = |t: usize| {
+            let [a, b, c] = &points[t];
+            [a, b, c]
+        };
+        let volumes = Volumes::new(&members, &corners, |t| tris[t]);
+        let cmp = (surfaces.len() > 1).then(|| volumes.cmp_abs(0, 1));
+        (cmp, volumes.total_sign())
+    }
+
+    /// The bound of [`det3_sum_f64`] covers the distance of its sum from the exact Σ det when
+    /// every term after the first is lost to rounding: after det = 2⁴⁰ (from the product
+    /// a₁b₂c₀, or a₂b₁c₀), 400 terms 3·2⁻¹⁵ are each below half an ulp (2⁻¹³) of the sum, so
+    /// the `f64` sum stays 2⁴⁰ while the exact one is 2⁴⁰ + 1200·2⁻¹⁵.
+    #[test]
+    fn the_det_sums_bound_covers_additions_lost_to_rounding() {
+        let x = 2f64.powi(20);
+        // det = −a₁(b₀c₂ − b₂c₀) = x², and det = a₂(b₀c₁ − b₁c₀) = x².
+        let firsts = [
+            [[0.0, 1.0, 0.0], [0.0, 0.0, x], [x, 0.0, 0.0]],
+            [[0.0, 0.0, 1.0], [0.0, x, 0.0], [-x, 0.0, 0.0]],
+        ];
+        let small = 3.0 * 2f64.powi(-15);
+        for first in firsts {
+            let tris: Vec<Tri> = std::iter::once(first)
+                .chain(std::iter::repeat(diagonal(small)).take(400))
+                .collect();
+            let (sum, err) = det3_sum_f64(tris.iter().copied());
+            assert_eq!(sum, 2f64.powi(40), "{first:?}");
+            let lost = exact(400.0 * small);
+            assert!(lost <= exact(err), "{first:?}: bound {err:e}");
+        }
+    }
+
+    /// |volume| is compared exactly where the `f64` sums are within their bounds of each other:
+    /// 6V = 1 + 2⁻²⁰ against 6V = 1, either one also holding two triangles of det ±2⁴⁰ that
+    /// cancel exactly but widen its bound beyond 2⁻²⁰ (its `f64` sum is 1: 2⁻²⁰ is below half
+    /// an ulp of 2⁴⁰); and 6V = 1 against 6V = 8, apart by far more than either bound.
+    #[test]
+    fn volumes_are_compared_exactly_within_the_bounds() {
+        let big = 2f64.powi(40);
+        let cancelling = |x: f64| vec![diagonal(x), diagonal(big), diagonal(-big)];
+        let larger = 1.0 + 2f64.powi(-20);
+        let cases = [
+            (cancelling(larger), vec![diagonal(1.0)], Ordering::Greater),
+            (vec![diagonal(larger)], cancelling(1.0), Ordering::Greater),
+            (vec![diagonal(1.0)], cancelling(larger), Ordering::Less),
+            (vec![diagonal(1.0)], vec![diagonal(8.0)], Ordering::Less),
+            (vec![diagonal(-8.0)], vec![diagonal(1.0)], Ordering::Greater),
+        ];
+        for (k, l, expected) in cases {
+            let got = decided(&[k.clone(), l.clone()]).0;
+            assert_eq!(got, Some(expected), "{k:?} against {l:?}");
+        }
+    }
+
+    /// The total volume's sign is the exact one where the `f64` sum errs past zero: 2⁶⁰, ten
+    /// terms 100 (each below half an ulp, 128, of 2⁶⁰, so lost) and −(2⁶⁰ + 256) sum to −256 in
+    /// `f64`, exactly to 1000 − 256 = 744 > 0.
+    #[test]
+    fn the_total_sign_is_exact_where_the_sum_errs_past_zero() {
+        let p60 = 2f64.powi(60);
+        let tris: Vec<Tri> = std::iter::once(diagonal(p60))
+            .chain(std::iter::repeat(diagonal(100.0)).take(10))
+            .chain(std::iter::once(diagonal(-(p60 + 256.0))))
+            .collect();
+        assert_eq!(det3_sum_f64(tris.iter().copied()).0, -256.0);
+        assert_eq!(decided(&[tris]).1, Ordering::Greater);
+    }
+}

@@ -375,6 +375,52 @@ mod tests {
         assert!(kept(&hugging(1e-9)));
     }
 
+    /// A cavity within rounding of five walls of [0, 10]³ but half the box away from its top:
+    /// every vertex of the cavity is within rounding of a wall's triangles (x is 2⁻⁴⁸ from 0 or
+    /// 10), while the top vertices of the outer box are far from the cavity. Each of two close
+    /// surfaces must have a vertex off the other, so this is not provable; 10⁻⁶ off is.
+    #[test]
+    fn close_surfaces_must_each_have_a_vertex_off_the_other() {
+        let cavity = |d: f64| ([10.0 - d, d, d], [d, 10.0 - d, 5.0]);
+        assert!(!kept(&boxes(&[
+            ([0.0; 3], [10.0; 3]),
+            cavity(2f64.powi(-48))
+        ])));
+        assert!(kept(&boxes(&[([0.0; 3], [10.0; 3]), cavity(1e-6)])));
+    }
+
+    /// [`volume_sign_kept`] of the cube [0, s]³ (its box's low corner the origin) under moves up
+    /// to `moved`.
+    fn cube_sign_kept(s: f64, moved: f64) -> bool {
+        let b = boxes(&[([0.0; 3], [s; 3])]);
+        let p: Vec<[f64; 3]> = b.points.iter().map(Point3::to_f64).collect();
+        let tris = b.surfaces[0].triangles.iter().map(|&t| b.tris[t]);
+        volume_sign_kept(&p, tris, &[[0.0; 3], [s; 3]], moved)
+    }
+
+    /// Moves of up to 1 can flatten the cube [0, 1.5]³ (its top and bottom each moved 0.75 to
+    /// the middle), so its volume's sign is not kept; they cannot flatten [0, 100]³.
+    #[test]
+    fn a_volume_sign_is_not_kept_where_moves_can_flatten_the_surface() {
+        assert!(!cube_sign_kept(1.5, 1.0));
+        assert!(cube_sign_kept(100.0, 1.0));
+    }
+
+    /// The inside-out regular tetrahedron on (0,0,0), (0,1,1), (1,0,1), (1,1,0) (6V = −2: the
+    /// normal of its first triangle, (1, 1, −1), points to the fourth corner) keeps its
+    /// volume's sign under moves up to 10⁻⁶.
+    #[test]
+    fn an_inside_out_tetrahedron_keeps_its_volume_sign() {
+        let p = [[0.0; 3], [0.0, 1.0, 1.0], [1.0, 0.0, 1.0], [1.0, 1.0, 0.0]];
+        let tris = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [2, 1, 3]];
+        assert!(volume_sign_kept(
+            &p,
+            tris.into_iter(),
+            &[[0.0; 3], [1.0; 3]],
+            1e-6
+        ));
+    }
+
     /// Two boxes sharing only a corner: that vertex has two corner cycles, whose link is
     /// compared between the exact and the rounded points.
     #[test]

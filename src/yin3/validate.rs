@@ -460,6 +460,23 @@ mod tests {
         assert_eq!(set.betti().b2, 1);
     }
 
+    /// A float-mode input's errors show its points as the `f64`s they are: the open edge of a
+    /// lone triangle with corners 0.1, 0.2 and 0.3 on the axes is between two of
+    /// (0.1, 0, 0), (0, 0.2, 0) and (0, 0, 0.3), not their exact binary fractions.
+    #[test]
+    fn a_float_inputs_error_shows_its_points_as_f64s() {
+        let p = |x, y, z| Point3::new(Float::new(x), Float::new(y), Float::new(z));
+        let corners = vec![p(0.1, 0.0, 0.0), p(0.0, 0.2, 0.0), p(0.0, 0.0, 0.3)];
+        let e = YinSet3::from_triangles(corners, vec![vec![0, 1, 2]]).expect_err("open");
+        let Yin3Error::OpenEdge { from, to, .. } = &e else {
+            panic!("expected OpenEdge, got {e:?}");
+        };
+        let shown = ["(0.1, 0, 0)", "(0, 0.2, 0)", "(0, 0, 0.3)"];
+        for end in [from, to] {
+            assert!(shown.contains(&end.to_string().as_str()), "{e}");
+        }
+    }
+
     /// In both backends: float points take the plane test first.
     #[test]
     fn a_moved_vertex_is_checked_against_its_neighbours() {
