@@ -137,8 +137,10 @@ def test(mutant, base, wt):
     module = plan.module_of(mutant["name"])
     log = LOGS / (hashlib.sha1(mutant["name"].encode()).hexdigest()[:12] + ".log")
     log.write_text(mutant["name"] + "\n" + mutant["diff"] + "\n")
+    # cargo-mutants' diffs carry 8 lines of context; on the rerun's later tree up to 6 of them
+    # may have changed (the mutated line itself must still match).
     subprocess.run(
-        ["patch", "--quiet", "--forward", mutant["file"]],
+        ["patch", "--quiet", "--forward", "--fuzz=6", mutant["file"]],
         cwd=wt,
         input=mutant["diff"],
         text=True,

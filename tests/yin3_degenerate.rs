@@ -1331,3 +1331,33 @@ fn nested_boxes_hang_from_the_next_larger() {
         }
     }
 }
+
+/// A needle tetrahedron, 2¹⁰⁰⁰ long in x and 2⁻⁵⁷⁰ in y and z, holding a box cavity deep
+/// inside (x within 2⁻¹⁰ of the length, y and z within 2⁻⁹ of the width), is a valid bounded
+/// set: its volume is the needle's 2¹⁰⁰⁰·2⁻¹¹⁴⁰/6 less the box's 2⁹⁸⁰·2⁻⁵⁸⁰·2⁻⁵⁸⁰ (by hand),
+/// though the products of its coordinates underflow `f64`.
+#[test]
+fn a_needle_with_a_cavity_across_two_thousand_binades() {
+    let two = |e: i32| Rational::from_f64(2f64.powi(e)).expect("a power of two");
+    let (x, w) = (two(1000), two(-570));
+    let zero = || int(0);
+    let needle = vec![
+        Point3::new(zero(), zero(), zero()),
+        Point3::new(x.clone(), zero(), zero()),
+        Point3::new(zero(), w.clone(), zero()),
+        Point3::new(zero(), zero(), w.clone()),
+    ];
+    let needle_faces = vec![vec![0, 2, 1], vec![0, 1, 3], vec![0, 3, 2], vec![1, 2, 3]];
+    let lo = Point3::new(two(990), two(-580), two(-580));
+    let hi = Point3::new(two(990) + two(980), two(-579), two(-579));
+    let (box_corners, box_faces) = yinset::yin3::shapes::cuboid(&lo, &hi);
+    let cavity = box_faces
+        .into_iter()
+        .map(|f| f.into_iter().rev().collect())
+        .collect();
+    let (pts, faces) =
+        yinset::yin3::shapes::concat(vec![(needle, needle_faces), (box_corners, cavity)]);
+    let set = YinSet3::from_triangles(pts, faces).expect("a valid set");
+    let expected = x * w.clone() * w / int(6) - two(980) * two(-580) * two(-580);
+    assert_eq!(set.volume(), Some(expected));
+}

@@ -214,21 +214,33 @@ impl<'a, N: Num, F: Fn(usize) -> [&'a Point3<N>; 3]> Volumes<'a, N, F> {
     }
 }
 
-/// Σ det[a, b, c] over triangles given by `f64` corners that are each within a relative
-/// 2⁻⁵³ of the exact ones, and a bound on the error: per term 8 roundings of the sum of the
-/// absolute products, plus one rounding per addition; each ×2 for safety, plus an absolute
-/// allowance for underflow. An infinite or NaN sum gets an infinite bound (nothing decided).
+/// Σ det[a, b, c] over triangles given by the nearest `f64`s of their corners, and a bound on
+/// the error. Each coordinate is within a relative 2⁻⁵³ of the exact one plus an absolute
+/// η = 2⁻¹⁰⁷⁴ (a tiny coordinate may round to 0), and each product within a relative 2⁻⁵³
+/// plus η/2 (underflow). The relative part: per term 8 roundings of the sum of the absolute
+/// products, plus one rounding per addition. The absolute part, with S = max(1, |coordinates|):
+/// η·(|bc| + |ac| + |ab|) and higher orders per triple product, 4ηS² for the six, plus the
+/// products' underflows (at most 3Sη + 2η), in all below 29ηS² per triangle. Each part ×2 for
+/// safety. An infinite or NaN sum gets an infinite bound (nothing decided).
 fn det3_sum_f64(tris: impl Iterator<Item = [[f64; 3]; 3]>) -> (f64, f64) {
-    let (mut sum, mut mag, mut count) = (0.0f64, 0.0f64, 0.0f64);
+    // η = 2⁻⁵³⁷ · 2⁻⁵³⁷, so that S·2⁻⁵³⁷ is exact and ηS² is one rounded product of them.
+    let root_eta = 2f64.powi(-537);
+    let (mut sum, mut mag, mut count, mut tiny) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for [a, b, c] in tris {
         sum += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
             + a[2] * (b[0] * c[1] - b[1] * c[0]);
         mag += a[0].abs() * (b[1] * c[2]).abs().max((b[2] * c[1]).abs()) * 2.0
             + a[1].abs() * (b[0] * c[2]).abs().max((b[2] * c[0]).abs()) * 2.0
             + a[2].abs() * (b[0] * c[1]).abs().max((b[1] * c[0]).abs()) * 2.0;
+        let s = [a, b, c]
+            .iter()
+            .flatten()
+            .fold(1.0f64, |m, v| m.max(v.abs()))
+            * root_eta;
+        tiny += 64.0 * (s * s);
         count += 1.0;
     }
-    let err = 2.0 * (count + 8.0) * f64::EPSILON * mag + count * 1e-300;
+    let err = 2.0 * (count + 8.0) * f64::EPSILON * mag + tiny;
     if sum.is_finite() && err.is_finite() {
         (sum, err)
     } else {
@@ -300,6 +312,24 @@ mod tests {
             let lost = exact(400.0 * small);
             assert!(lost <= exact(err), "{first:?}: bound {err:e}");
         }
+    }
+
+    /// Products that underflow do not escape the bound: the needle (2¹⁰⁰⁰, 0, 0), (0, 2⁻⁵⁷⁰, 0),
+    /// (0, 0, 2⁻⁵⁷⁰) has det = 2¹⁰⁰⁰·2⁻¹¹⁴⁰ = 2⁻¹⁴⁰ by hand, while its product b₁c₂ = 2⁻¹¹⁴⁰
+    /// rounds to 0 in `f64`; against a surface of 6V = −10⁻⁵⁴, the needle is the larger in
+    /// |volume| and the total, 2⁻¹⁴⁰ − 10⁻⁵⁴, is positive.
+    #[test]
+    fn underflowing_products_stay_within_the_bound() {
+        let needle = [
+            [2f64.powi(1000), 0.0, 0.0],
+            [0.0, 2f64.powi(-570), 0.0],
+            [0.0, 0.0, 2f64.powi(-570)],
+        ];
+        let (sum, err) = det3_sum_f64(std::iter::once(needle));
+        assert_eq!(sum, 0.0);
+        assert!(exact(2f64.powi(-140)) <= exact(err), "bound {err:e}");
+        let got = decided(&[vec![needle], vec![diagonal(-1e-54)]]);
+        assert_eq!(got, (Some(Ordering::Greater), Ordering::Greater));
     }
 
     /// |volume| is compared exactly where the `f64` sums are within their bounds of each other:
