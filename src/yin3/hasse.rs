@@ -72,7 +72,8 @@ pub(crate) fn hasse<N: Num>(
         };
         let mut best: Option<usize> = None;
         for (k, member) in members.iter().enumerate() {
-            if k == l || volumes.cmp_abs(k, l) != Ordering::Greater || !inside(l, k) {
+            // The boxes first: comparing volumes may need their exact sums.
+            if k == l || !inside(l, k) || volumes.cmp_abs(k, l) != Ordering::Greater {
                 continue;
             }
             if best.is_some_and(|b| volumes.cmp_abs(b, k) != Ordering::Greater) {
