@@ -131,21 +131,33 @@ def baseline(modules, commit, wt):
     return secs
 
 
+def mutate(mutant, wt):
+    """Apply `mutant`'s one-hunk diff to `wt`: its removed lines, found verbatim (the match
+    nearest the hunk's line, since the rerun's later tree may have moved them or changed the
+    context around them), replaced by its added lines. Exits if they are not there."""
+    body = mutant["diff"].split("\n@@ ", 1)[1].split("\n")
+    start = int(body[0].split()[0].split(",")[0].lstrip("-"))
+    hunk = body[1:]
+    first = next(i for i, l in enumerate(hunk) if l[:1] in "-+")
+    removed = [l[1:] for l in hunk if l.startswith("-")]
+    added = [l[1:] for l in hunk if l.startswith("+")]
+    path = wt / mutant["file"]
+    lines = path.read_text().split("\n")
+    at = [i for i in range(len(lines)) if lines[i : i + len(removed)] == removed]
+    if not removed or not at:
+        sys.exit(f"{mutant['name']}: its lines are not in {path}")
+    i = min(at, key=lambda i: abs(i - (start - 1 + first)))
+    lines[i : i + len(removed)] = added
+    path.write_text("\n".join(lines))
+
+
 def test(mutant, base, wt):
     """Apply `mutant` to `wt`, build, run its module's tests, revert: the outcome and the
     seconds."""
     module = plan.module_of(mutant["name"])
     log = LOGS / (hashlib.sha1(mutant["name"].encode()).hexdigest()[:12] + ".log")
     log.write_text(mutant["name"] + "\n" + mutant["diff"] + "\n")
-    # cargo-mutants' diffs carry 8 lines of context; on the rerun's later tree up to 6 of them
-    # may have changed (the mutated line itself must still match).
-    subprocess.run(
-        ["patch", "--quiet", "--forward", "--fuzz=6", mutant["file"]],
-        cwd=wt,
-        input=mutant["diff"],
-        text=True,
-        check=True,
-    )
+    mutate(mutant, wt)
     t0 = time.monotonic()
     try:
         status, _ = run(cargo(module, "build", mutant["file"]), wt, 3600, log)
