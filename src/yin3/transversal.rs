@@ -1267,4 +1267,76 @@ mod tests {
         let same_bottom = solid::<Float>(&bipyramid(2.0, 1.0));
         assert!(transversal(&fa, &same_bottom).is_none());
     }
+
+    /// A tetrahedron sharing the unit cube's edge from (0, 0, 0) to (0, 0, 1), its dihedral
+    /// wedge there straddling the cube's face y = 0 (one face of each inside the other,
+    /// one outside), and crossing that face elsewhere: the transversal meet is taken and is the
+    /// tetrahedron's part y ≥ 0.
+    #[test]
+    fn wedges_interleaved_at_a_shared_edge() {
+        let cube = jittered_cube([0.0; 3], 1.0, &[[0.0; 3]; 8]);
+        // Corner 2 inside the cube, corner 3 beyond y = 0, the edge between them through the
+        // face y = 0 at q = (7/12, 0, 1/2).
+        let tet = (
+            vec![
+                [0.0; 3],
+                [0.0, 0.0, 1.0],
+                [0.5, 0.25, 0.5],
+                [0.75, -0.5, 0.5],
+            ],
+            vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
+        );
+        let (fa, fb) = (solid::<Float>(&cube), solid::<Float>(&tet));
+        // The meet is the tetrahedron (0, 0, 0), (0, 0, 1), (1/2, 1/4, 1/2), q: by the
+        // triple product, a sixth of |(0, 0, 1) · ((1/2, 1/4, 1/2) × q)| = 7/48.
+        let volume = Rational::from_i64(7) / Rational::from_i64(288);
+        for (x, y) in [(&fa, &fb), (&fb, &fa)] {
+            let meet = transversal(x, y).expect("the transversal meet");
+            assert_eq!(meet.volume(), Some(volume.clone()));
+        }
+    }
+
+    /// A tetrahedron touching two tetrahedra from outside, one along its edge uv, the other
+    /// at its corner w: its face uvw has every corner touching but two edges that do not, so
+    /// it is joined to the rest of its surface, whose corner off the others decides it. The
+    /// touching meet is taken: empty with the two, the tetrahedron itself with their
+    /// complement.
+    #[test]
+    fn a_face_with_every_corner_touching() {
+        // Corners u, v, w, x; outward faces, the volume being positive.
+        let faces = vec![vec![0, 2, 1], vec![0, 1, 3], vec![0, 3, 2], vec![1, 2, 3]];
+        let a = (
+            vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            faces.clone(),
+        );
+        // Along uv, its other corners at y < 0, where the first has none (positive volume).
+        let edge = (
+            vec![
+                [0.0; 3],
+                [1.0, 0.0, 0.0],
+                [0.5, -1.0, 0.5],
+                [0.5, -0.5, -1.0],
+            ],
+            faces,
+        );
+        // At w, its other corners at y > 1, where the first has none (negative volume).
+        let corner = (
+            vec![
+                [0.0, 1.0, 0.0],
+                [0.5, 2.0, 0.25],
+                [-0.5, 2.0, 0.5],
+                [0.125, 1.5, -0.5],
+            ],
+            vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
+        );
+        let b = both(edge, corner);
+        let (fa, fb) = (solid::<Float>(&a), solid::<Float>(&b));
+        for (x, y) in [(&fa, &fb), (&fb, &fa)] {
+            assert!(transversal(x, y).expect("touching").is_empty());
+        }
+        let not_b = fb.complement();
+        for (x, y) in [(&fa, &not_b), (&not_b, &fa)] {
+            assert_eq!(transversal(x, y).expect("touching"), solid::<Rational>(&a));
+        }
+    }
 }

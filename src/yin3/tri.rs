@@ -534,6 +534,15 @@ mod tests {
         assert!(intersect([&a, &b, &c], [&p(5, 0, -1), &p(5, 0, 1), &p(6, 1, 0)], &()).is_none());
     }
 
+    /// The corners after each corner of a triangle are the next two in its cyclic order.
+    #[test]
+    fn corners_after_follow_the_corner_cyclically() {
+        let tri = [4, 7, 9];
+        assert_eq!(corners_after(tri, 4), [7, 9]);
+        assert_eq!(corners_after(tri, 7), [9, 4]);
+        assert_eq!(corners_after(tri, 9), [4, 7]);
+    }
+
     /// A point of the small lattice the properties draw from (many contacts and coplanarities).
     fn lattice() -> impl proptest::strategy::Strategy<Value = Point3<Rational>> {
         use proptest::prelude::*;

@@ -627,8 +627,8 @@ mod tests {
     }
 
     /// One constraint from inside one side to inside another, or to a corner, with no other
-    /// point (what [`one_cut`] answers without predicates), for every pair of sides or corner,
-    /// both directions and every rotation of the corners: the independent check passes.
+    /// point, for every pair of sides or corner, both directions and every rotation of the
+    /// corners: [`one_cut`] answers each without predicates, and the independent check passes.
     #[test]
     fn one_cut_cuts_off_a_corner_or_halves_the_triangle() {
         // A point inside each side i, from corner i to corner i + 1.
@@ -648,6 +648,7 @@ mod tests {
                 (sides[side_of(i)], sides[side_of(j)]) = (&[3], &[4]);
                 let tris = triangulate(&points, corners, sides, &[(3, 4)], &()).expect("valid");
                 check(&points, corners, &[(3, 4)], &tris, &());
+                assert_eq!(one_cut(5, corners, sides, &[(3, 4)]), Some(tris));
             }
             for i in 0..3 {
                 let points =
@@ -657,6 +658,7 @@ mod tests {
                 for cut in [0, 1, 2].into_iter().flat_map(|c| [(3, c), (c, 3)]) {
                     let tris = triangulate(&points, corners, sides, &[cut], &()).expect("valid");
                     check(&points, corners, &[cut], &tris, &());
+                    assert_eq!(one_cut(4, corners, sides, &[cut]), Some(tris));
                 }
             }
         }

@@ -442,6 +442,27 @@ mod tests {
         )
     }
 
+    /// Revalidation compares the stored glued surfaces and Hasse diagram with the rebuilt
+    /// ones: two disjoint cubes pass as stored, and fail with their surfaces listed the other
+    /// way round, or with one cube recorded inside the other.
+    #[test]
+    fn revalidation_finds_a_wrong_surface_list_or_hasse_diagram() {
+        let p = |v: i64| Point3::<Rational>::int(v, v, v);
+        let (v, f) = concat(vec![cuboid(&p(0), &p(10)), cuboid(&p(15), &p(25))]);
+        let set = YinSet3::from_triangles(v, f).expect("two cubes");
+        let b = set.brep().expect("bounded");
+        assert!(revalidate(b.points.clone(), b, ()).is_ok());
+        assert_eq!(b.parent, [None, None]);
+        let mut swapped = b.clone();
+        swapped.surfaces.swap(0, 1);
+        let mut nested = b.clone();
+        nested.parent[1] = Some(0);
+        for wrong in [swapped, nested] {
+            let result = revalidate(wrong.points.clone(), &wrong, ());
+            assert!(matches!(result, Err(Yin3Error::Internal(_))), "{result:?}");
+        }
+    }
+
     /// A cube of side 2·10³⁰⁹ around a unit cavity is valid: its faces lie past `f64`'s range,
     /// and the winding check's ray from the cavity still meets them (their boxes start at
     /// `f64::MAX`, not at infinity).
