@@ -1287,8 +1287,8 @@ mod tests {
             vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
         );
         let (fa, fb) = (solid::<Float>(&cube), solid::<Float>(&tet));
-        // The meet is the tetrahedron (0, 0, 0), (0, 0, 1), (1/2, 1/4, 1/2), q: by the
-        // triple product, a sixth of |(0, 0, 1) · ((1/2, 1/4, 1/2) × q)| = 7/48.
+        // The meet is the tetrahedron (0, 0, 0), (0, 0, 1), (1/2, 1/4, 1/2), q, of volume a
+        // sixth of the triple product |(0, 0, 1) · ((1/2, 1/4, 1/2) × q)| = 7/48.
         let volume = Rational::from_i64(7) / Rational::from_i64(288);
         for (x, y) in [(&fa, &fb), (&fb, &fa)] {
             let meet = transversal(x, y).expect("the transversal meet");
