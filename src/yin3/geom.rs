@@ -18,6 +18,19 @@ pub(crate) fn normal<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Poi
     b.sub(a).cross(&c.sub(a))
 }
 
+/// The magnitudes of the coordinates of the normal of the triangle `t`, computed in `f64`.
+fn normal_sizes(t: [[f64; 3]; 3]) -> [f64; 3] {
+    let [a, b, c] = t;
+    let (u, v) = (
+        [0, 1, 2].map(|k| b[k] - a[k]),
+        [0, 1, 2].map(|k| c[k] - a[k]),
+    );
+    [0, 1, 2].map(|k| {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        (u[i] * v[j] - u[j] * v[i]).abs()
+    })
+}
+
 /// True if `a`, `b`, `c` lie on one line, decided exactly: the normal (b − a) × (c − a) is
 /// zero iff its three coordinates, the orientations of the three coordinate projections, are.
 pub(crate) fn collinear<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> bool {
@@ -101,24 +114,22 @@ impl Chart {
         }
     }
 
-    /// The chart of the triangle `t` of `f64` points, in which it is counterclockwise: the
-    /// axis where the normal, computed in `f64`, is largest among those where its exact sign
-    /// (the orientation of the triangle's projection) is nonzero; `None` if the triangle is
-    /// degenerate.
+    /// The chart of the triangle `t` of `f64` points, in which it is counterclockwise
+    /// ([`Chart::of_signed_axes`], the normal's sizes computed in `f64`); `None` if the
+    /// triangle is degenerate.
     pub(crate) fn of_f64_triangle(t: [[f64; 3]; 3]) -> Option<Chart> {
         let [a, b, c] = t;
-        let (u, v) = (
-            [0, 1, 2].map(|k| b[k] - a[k]),
-            [0, 1, 2].map(|k| c[k] - a[k]),
-        );
-        let size = [0, 1, 2].map(|k| {
-            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-            (u[i] * v[j] - u[j] * v[i]).abs()
-        });
-        let sign = |k: usize| {
+        Chart::of_signed_axes(normal_sizes(t), |k| {
             let (i, j) = ((k + 1) % 3, (k + 2) % 3);
             exact_orient_f64([a[i], a[j]], [b[i], b[j]], [c[i], c[j]])
-        };
+        })
+    }
+
+    /// The chart of a triangle in which it is counterclockwise, given estimates `size` of its
+    /// normal's coordinates' magnitudes and their exact signs `sign(k)` (the orientation of
+    /// its projection dropping coordinate k): the axis of the largest estimate among those
+    /// whose sign is nonzero; `None` if every sign is zero (a degenerate triangle).
+    fn of_signed_axes(size: [f64; 3], sign: impl Fn(usize) -> Ordering) -> Option<Chart> {
         // The first of the largest among `axes` (a later one only where strictly larger). The
         // largest of all, where its sign is nonzero, is also the largest of those signed so.
         let largest = |axes: &mut dyn Iterator<Item = usize>| {
@@ -136,15 +147,19 @@ impl Chart {
     }
 
     /// The chart of the plane of the (non-degenerate) triangle `abc`, in which it is
-    /// counterclockwise: from its exact normal, or in float mode from the exact orientations
-    /// of its projections ([`Chart::of_f64_triangle`]), where the normal's `f64` products can
-    /// underflow or overflow to a wrong axis or sign.
+    /// counterclockwise ([`Chart::of_signed_axes`]): the normal's sizes estimated on the
+    /// points rounded to `f64`, its signs the exact orientations of the projections, so that
+    /// no coordinate is constructed.
     pub(crate) fn of_triangle<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Chart {
-        if N::EXACT {
-            return Chart::of_normal(&normal(a, b, c));
-        }
-        Chart::of_f64_triangle([a, b, c].map(|p| p.to_f64()))
-            .unwrap_or_else(|| Chart::of_normal(&normal(a, b, c)))
+        let exact = N::exact_ctx();
+        let sign = |k: usize| {
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            let pr = |p: &Point3<N>| Point::new(p.coord(i).clone(), p.coord(j).clone());
+            orient(&pr(a), &pr(b), &pr(c), &exact)
+        };
+        // A degenerate triangle, which callers exclude, gets the chart of a zero normal.
+        Chart::of_signed_axes(normal_sizes([a, b, c].map(|p| p.to_f64())), sign)
+            .unwrap_or(Chart::of_axis(0, Ordering::Equal))
     }
 
     /// The image of `p`.
