@@ -306,7 +306,7 @@ mod tests {
         let small = 3.0 * 2f64.powi(-15);
         for first in firsts {
             let tris: Vec<Tri> = std::iter::once(first)
-                .chain(std::iter::repeat(diagonal(small)).take(400))
+                .chain(std::iter::repeat_n(diagonal(small), 400))
                 .collect();
             let (sum, err) = det3_sum_f64(tris.iter().copied());
             assert_eq!(sum, 2f64.powi(40), "{first:?}");
@@ -362,7 +362,7 @@ mod tests {
     fn the_total_sign_is_exact_where_the_sum_errs_past_zero() {
         let p60 = 2f64.powi(60);
         let tris: Vec<Tri> = std::iter::once(diagonal(p60))
-            .chain(std::iter::repeat(diagonal(100.0)).take(10))
+            .chain(std::iter::repeat_n(diagonal(100.0), 10))
             .chain(std::iter::once(diagonal(-(p60 + 256.0))))
             .collect();
         assert_eq!(det3_sum_f64(tris.iter().copied()).0, -256.0);
