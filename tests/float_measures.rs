@@ -134,3 +134,23 @@ fn float_measures_far_out_huge_and_tiny() {
     assert_eq!(square(1e300).area(), Some(Float::new(f64::INFINITY)));
     assert_eq!(square(1e-300).area(), Some(Float::new(0.0)));
 }
+
+/// `volume_exact` is `None` for an unbounded set in either mode, and in exact mode the exact
+/// volume whatever the coordinates: the box [0, 1/3]³ holds 1/27 (by hand), a value that no
+/// sum over `f64`s gives.
+#[test]
+fn volume_exact_of_unbounded_and_of_thirds() {
+    let third = Rational::new(1.into(), 3.into());
+    let p = |v: &Rational| Point3::new(v.clone(), v.clone(), v.clone());
+    let exact = YinSet3::<Rational>::cuboid(&p(&Rational::from_i64(0)), &p(&third)).unwrap();
+    assert_eq!(
+        exact.volume_exact(),
+        Some(Rational::new(1.into(), 27.into()))
+    );
+    assert_eq!(exact.complement().volume_exact(), None);
+    let f = |v: f64| Point3::new(Float::new(v), Float::new(v), Float::new(v));
+    let (corners, faces) = cuboid(&f(0.0), &f(2.0));
+    let float = YinSet3::from_triangles_with(corners, faces, Tolerance::new(1e-9)).unwrap();
+    assert_eq!(float.volume_exact(), Some(Rational::from_i64(8)));
+    assert_eq!(float.complement().volume_exact(), None);
+}
