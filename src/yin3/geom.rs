@@ -34,11 +34,15 @@ fn normal_sizes(t: [[f64; 3]; 3]) -> [f64; 3] {
 /// True if `a`, `b`, `c` lie on one line, decided exactly: the normal (b − a) × (c − a) is
 /// zero iff its three coordinates, the orientations of the three coordinate projections, are.
 pub(crate) fn collinear<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> bool {
-    let exact = N::exact_ctx();
-    [(1, 2), (2, 0), (0, 1)].iter().all(|&(i, j)| {
-        let pr = |p: &Point3<N>| Point::new(p.coord(i).clone(), p.coord(j).clone());
-        orient(&pr(a), &pr(b), &pr(c), &exact) == Ordering::Equal
-    })
+    (0..3).all(|k| projected_orient(a, b, c, k) == Ordering::Equal)
+}
+
+/// The exact orientation of the triangle `abc` projected by dropping coordinate `k`: the sign
+/// of its normal's coordinate `k`.
+fn projected_orient<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>, k: usize) -> Ordering {
+    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+    let pr = |p: &Point3<N>| Point::new(p.coord(i).clone(), p.coord(j).clone());
+    orient(&pr(a), &pr(b), &pr(c), &N::exact_ctx())
 }
 
 /// det[a, b, c] = a · (b × c): six times the signed volume of the tetrahedron (0, a, b, c).
@@ -151,12 +155,7 @@ impl Chart {
     /// points rounded to `f64`, its signs the exact orientations of the projections, so that
     /// no coordinate is constructed.
     pub(crate) fn of_triangle<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Chart {
-        let exact = N::exact_ctx();
-        let sign = |k: usize| {
-            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-            let pr = |p: &Point3<N>| Point::new(p.coord(i).clone(), p.coord(j).clone());
-            orient(&pr(a), &pr(b), &pr(c), &exact)
-        };
+        let sign = |k: usize| projected_orient(a, b, c, k);
         // A degenerate triangle, which callers exclude, gets the chart of a zero normal.
         Chart::of_signed_axes(normal_sizes([a, b, c].map(|p| p.to_f64())), sign)
             .unwrap_or(Chart::of_axis(0, Ordering::Equal))
