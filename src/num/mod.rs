@@ -219,6 +219,23 @@ pub trait Num:
     fn nearest(r: &Rational) -> Self;
 }
 
+/// The sum of `terms`, added pairwise in a balanced tree: exact sums of many fractions with
+/// unrelated denominators then cost O(M(s) log n) for a result of size s, not O(n · s).
+pub(crate) fn balanced_sum<N: Num>(mut terms: Vec<N>) -> N {
+    while terms.len() > 1 {
+        let mut next = Vec::with_capacity(terms.len().div_ceil(2));
+        let mut it = terms.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => a + b,
+                None => a,
+            });
+        }
+        terms = next;
+    }
+    terms.pop().unwrap_or_else(N::zero)
+}
+
 /// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within 3 ulps of
 /// the exact ones, if the error bound proves it; `None` if it cannot decide.
 ///

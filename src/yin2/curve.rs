@@ -1,7 +1,7 @@
 //! Oriented Jordan polygons (seed 000 Def. 3.5–3.6; seed 002 J^pl) and their canonical form.
 
 use crate::kernel::{on_closed_segment, orient, BBox, Point};
-use crate::num::Num;
+use crate::num::{balanced_sum, Num};
 use foldhash::HashSet;
 use std::cmp::Ordering;
 
@@ -95,23 +95,6 @@ pub(crate) fn twice_signed_area<N: Num>(v: &[Point<N>]) -> N {
             })
             .collect(),
     )
-}
-
-/// The sum of `terms`, added pairwise in a balanced tree: exact sums of many fractions with
-/// unrelated denominators then cost O(M(s) log n) for a result of size s, not O(n · s).
-pub(crate) fn balanced_sum<N: Num>(mut terms: Vec<N>) -> N {
-    while terms.len() > 1 {
-        let mut next = Vec::with_capacity(terms.len().div_ceil(2));
-        let mut it = terms.into_iter();
-        while let Some(a) = it.next() {
-            next.push(match it.next() {
-                Some(b) => a + b,
-                None => a,
-            });
-        }
-        terms = next;
-    }
-    terms.pop().unwrap_or_else(N::zero)
 }
 
 /// Canonical form of one curve (seed 000 Thm 3.21 up to start vertex and straight runs):

@@ -1,10 +1,10 @@
 //! The Jordan space {0̂, 1̂, realizable spadjors} (seed 000 Def. 3.19) as the type `YinSet2`.
 
-use super::curve::{balanced_sum, canonical_curve, Curve};
+use super::curve::{canonical_curve, Curve};
 use super::hasse::{atoms, parents, Atom, Betti};
 use super::locate::{locate_within, Location};
 use crate::kernel::{BBox, Point};
-use crate::num::{det_sum, Num, Rational};
+use crate::num::{balanced_sum, det_sum, Num, Rational};
 use foldhash::HashSet;
 use std::hash::{Hash, Hasher};
 

@@ -4,7 +4,7 @@
 use super::geom::{det3, widened_box};
 use super::locate::winding;
 use crate::kernel::Point3;
-use crate::num::Num;
+use crate::num::{balanced_sum, Num};
 use rstar::{Envelope, AABB};
 use std::cell::OnceCell;
 use std::cmp::Ordering;
@@ -167,10 +167,13 @@ impl<'a, N: Num, F: Fn(usize) -> [&'a Point3<N>; 3]> Volumes<'a, N, F> {
     /// The exact six-fold volume of surface `s`.
     fn exact(&self, s: usize) -> &N {
         self.exact[s].get_or_init(|| {
-            self.members[s].iter().fold(N::zero(), |sum, &t| {
-                let [a, b, c] = (self.corners)(t);
-                sum + det3(a, b, c)
-            })
+            let dets = (self.members[s].iter())
+                .map(|&t| {
+                    let [a, b, c] = (self.corners)(t);
+                    det3(a, b, c)
+                })
+                .collect();
+            balanced_sum(dets)
         })
     }
 

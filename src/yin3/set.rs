@@ -11,7 +11,7 @@ use super::glue::{corner_cycles, glued_surfaces};
 use super::hasse::{hasse, Atom3};
 use super::locate::{on_triangles, winding, TriBoxes};
 use crate::kernel::{BBox3, Point3};
-use crate::num::{det_sum, lattice_det_sum, Num, Rational};
+use crate::num::{balanced_sum, det_sum, lattice_det_sum, Num, Rational};
 use crate::yin2::Location;
 use num_bigint::BigInt;
 use std::hash::{Hash, Hasher};
@@ -169,7 +169,7 @@ impl<N: Num> Brep<N> {
 
     /// The volume of an exact boundary: a sixth of Σ det[p − o, q − o, r − o] over its
     /// triangles, on the integers of its coordinates' common lattice where it has a modest one
-    /// ([`lattice_det_sum`]), else summed in `N`.
+    /// ([`lattice_det_sum`]), else summed in `N` pairwise ([`balanced_sum`]).
     fn exact_volume(&self) -> N {
         let fractions: Vec<[(BigInt, BigInt); 3]> = (self.points.iter())
             .map(|p| p.coords().map(|c| c.fraction()))
@@ -177,8 +177,8 @@ impl<N: Num> Brep<N> {
         match lattice_det_sum(&fractions, self.tris.iter().copied()) {
             Some(sum) => N::nearest(&(sum / Rational::from_i64(6))),
             None => {
-                let sum = (self.all_corners()).fold(N::zero(), |s, [p, q, r]| s + det3(p, q, r));
-                sum / N::from_i64(6)
+                let dets = self.all_corners().map(|[p, q, r]| det3(p, q, r)).collect();
+                balanced_sum(dets) / N::from_i64(6)
             }
         }
     }

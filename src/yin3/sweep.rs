@@ -1,17 +1,26 @@
 //! The pairs of boxes that meet (the broad phase of triangle–triangle tests), by sweep and
 //! prune: the boxes sorted by their lower x, each scanned against those that start within its
-//! x-range; an R-tree of the boxes where that would scan too many (long boxes side by side).
+//! x-range; where that would scan too many (a surface's boxes, side by side along x), by a
+//! uniform grid of cells about twice the boxes' mean size, each pair tested in the one cell
+//! that holds the lower corner of their common box; an R-tree of the boxes where the grid too
+//! would hold too many (long boxes, infinite coordinates).
 
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
-/// Boxes scanned per box before the sweep gives way to the R-tree: a scan is four comparisons
-/// on boxes stored in sweep order, a query of the tree walks a few dozen nodes.
+/// Boxes scanned per box before the sweep gives way to the grid (and the grid's box pairs per
+/// box before it gives way to the tree): a scan is four comparisons on boxes stored in sweep
+/// order, a query of the tree walks a few dozen nodes.
 const SCANS_PER_BOX: usize = 64;
 
-/// The boxes, ready to give each box's partners: the boxes after it (in sweep order, or by
-/// index in the tree) that meet it.
+/// The most cells of the grid along one axis.
+const GRID_CELLS: usize = 1024;
+
+/// The most cells a box is in, on average, before the grid gives way to the tree.
+const CELLS_PER_BOX: usize = 16;
+
+/// The boxes, ready to give the pairs that meet.
 pub(crate) enum MeetingBoxes {
     /// Sweep order: each box's index, its y- and z-ranges (lower y, lower z, upper y, upper
     /// z, side by side for the scan), and the end of the boxes that start within its x-range.
@@ -20,6 +29,8 @@ pub(crate) enum MeetingBoxes {
         yz: Vec<[f64; 4]>,
         ends: Vec<usize>,
     },
+    /// The boxes in a uniform grid.
+    Grid(Grid),
     /// The boxes and their R-tree.
     Tree(
         Vec<AABB<[f64; 3]>>,
@@ -27,8 +38,144 @@ pub(crate) enum MeetingBoxes {
     ),
 }
 
+/// Boxes in the cells of a uniform grid that they meet.
+pub(crate) struct Grid {
+    /// The boxes.
+    boxes: Vec<AABB<[f64; 3]>>,
+    /// Each box's lowest cell, by its coordinates on the three axes.
+    first: Vec<[u32; 3]>,
+    /// Each cell's number of cells along y and z, to name a cell by one number.
+    cells: [u32; 3],
+    /// The boxes of every cell they meet, as (cell number) · 2³² + box, sorted.
+    entries: Vec<u64>,
+    /// Where each occupied cell's run of entries starts, then the end of the last.
+    runs: Vec<usize>,
+}
+
+impl Grid {
+    /// The grid of `boxes`, or the boxes back if a coordinate is infinite or the boxes are in
+    /// more than [`CELLS_PER_BOX`] cells or have more than [`SCANS_PER_BOX`] pairs in a cell,
+    /// per box on average.
+    fn new(boxes: Vec<AABB<[f64; 3]>>) -> Result<Grid, Vec<AABB<[f64; 3]>>> {
+        let n = boxes.len();
+        if n == 0 || u32::try_from(n).is_err() {
+            return Err(boxes);
+        }
+        let (mut lo, mut hi) = (boxes[0].lower(), boxes[0].upper());
+        let mut sizes = [0.0f64; 3];
+        for b in &boxes {
+            for d in 0..3 {
+                lo[d] = lo[d].min(b.lower()[d]);
+                hi[d] = hi[d].max(b.upper()[d]);
+                sizes[d] += b.upper()[d] - b.lower()[d];
+            }
+        }
+        if !(lo.iter().chain(&hi).chain(&sizes)).all(|v| v.is_finite()) {
+            return Err(boxes);
+        }
+        // Cells twice the mean size along each axis, but not more than GRID_CELLS of them.
+        let mut cells = [1u32; 3];
+        let mut scale = [0.0f64; 3];
+        for d in 0..3 {
+            let side = (2.0 * sizes[d] / n as f64).max((hi[d] - lo[d]) / GRID_CELLS as f64);
+            if side > 0.0 {
+                let count = ((hi[d] - lo[d]) / side)
+                    .ceil()
+                    .clamp(1.0, GRID_CELLS as f64);
+                cells[d] = count as u32;
+                scale[d] = 1.0 / side;
+            }
+        }
+        // A coordinate's cell: monotone in the coordinate, so the cell of the larger of two
+        // lower corners is the larger of their cells.
+        let cell = |d: usize, v: f64| (((v - lo[d]) * scale[d]) as u32).min(cells[d] - 1);
+        let range = |b: &AABB<[f64; 3]>| {
+            let (l, u) = (b.lower(), b.upper());
+            [0, 1, 2].map(|d| (cell(d, l[d]), cell(d, u[d])))
+        };
+        let count: usize = (boxes.iter())
+            .map(|b| {
+                range(b)
+                    .iter()
+                    .map(|&(l, u)| (u - l + 1) as usize)
+                    .product::<usize>()
+            })
+            .sum();
+        if count > CELLS_PER_BOX * n + 4096 {
+            return Err(boxes);
+        }
+        let mut entries = Vec::with_capacity(count);
+        let mut first = Vec::with_capacity(n);
+        for (i, b) in boxes.iter().enumerate() {
+            let [(x0, x1), (y0, y1), (z0, z1)] = range(b);
+            first.push([x0, y0, z0]);
+            for x in x0..=x1 {
+                for y in y0..=y1 {
+                    for z in z0..=z1 {
+                        let c = Grid::number(cells, [x, y, z]);
+                        entries.push(c << 32 | i as u64);
+                    }
+                }
+            }
+        }
+        entries.par_sort_unstable();
+        let mut runs: Vec<usize> = (0..entries.len())
+            .filter(|&k| k == 0 || entries[k] >> 32 != entries[k - 1] >> 32)
+            .collect();
+        runs.push(entries.len());
+        let pairs: usize = (runs.windows(2))
+            .map(|w| (w[1] - w[0]) * (w[1] - w[0] - 1) / 2)
+            .sum();
+        if pairs > SCANS_PER_BOX * n + 4096 {
+            return Err(boxes);
+        }
+        Ok(Grid {
+            boxes,
+            first,
+            cells,
+            entries,
+            runs,
+        })
+    }
+
+    /// The number of the cell with coordinates `c`.
+    fn number(cells: [u32; 3], c: [u32; 3]) -> u64 {
+        (c[0] as u64 * cells[1] as u64 + c[1] as u64) * cells[2] as u64 + c[2] as u64
+    }
+
+    /// True if `f(i, j)` holds for the pairs of distinct boxes that meet and whose common
+    /// box's lower corner lies in the `k`-th occupied cell; stops at the first false.
+    fn pairs_in(&self, k: usize, mut f: impl FnMut(usize, usize) -> bool) -> bool {
+        let run = &self.entries[self.runs[k]..self.runs[k + 1]];
+        let cell = run[0] >> 32;
+        let index = |e: u64| (e & u32::MAX as u64) as usize;
+        (0..run.len()).all(|a| {
+            let i = index(run[a]);
+            let (bi, fi) = (&self.boxes[i], self.first[i]);
+            run[a + 1..].iter().all(|&e| {
+                let j = index(e);
+                let (bj, fj) = (&self.boxes[j], self.first[j]);
+                let owner = [0, 1, 2].map(|d| fi[d].max(fj[d]));
+                !(Grid::number(self.cells, owner) == cell && meet(bi, bj)) || f(i, j)
+            })
+        })
+    }
+}
+
+/// True if the closed boxes meet.
+fn meet(a: &AABB<[f64; 3]>, b: &AABB<[f64; 3]>) -> bool {
+    let (al, au, bl, bu) = (a.lower(), a.upper(), b.lower(), b.upper());
+    (al[0] <= bu[0])
+        & (bl[0] <= au[0])
+        & (al[1] <= bu[1])
+        & (bl[1] <= au[1])
+        & (al[2] <= bu[2])
+        & (bl[2] <= au[2])
+}
+
 impl MeetingBoxes {
-    /// The sweep of `boxes`, or their tree past [`SCANS_PER_BOX`] scans per box.
+    /// The sweep of `boxes`; past [`SCANS_PER_BOX`] scans per box their grid, or failing
+    /// that their tree.
     pub(crate) fn new(boxes: Vec<AABB<[f64; 3]>>) -> MeetingBoxes {
         let n = boxes.len();
         let mut order: Vec<usize> = (0..n).collect();
@@ -51,6 +198,10 @@ impl MeetingBoxes {
                 .collect();
             return MeetingBoxes::Sweep { order, yz, ends };
         }
+        let boxes = match Grid::new(boxes) {
+            Ok(grid) => return MeetingBoxes::Grid(grid),
+            Err(boxes) => boxes,
+        };
         let tree = RTree::bulk_load(
             (boxes.iter().enumerate())
                 .map(|(i, b)| GeomWithData::new(Rectangle::from_aabb(*b), i))
@@ -59,17 +210,19 @@ impl MeetingBoxes {
         MeetingBoxes::Tree(boxes, tree)
     }
 
-    /// The number of boxes.
+    /// The number of parts the pairs come in: boxes, or the grid's occupied cells.
     fn len(&self) -> usize {
         match self {
             MeetingBoxes::Sweep { order, .. } => order.len(),
+            MeetingBoxes::Grid(grid) => grid.runs.len() - 1,
             MeetingBoxes::Tree(boxes, _) => boxes.len(),
         }
     }
 
-    /// True if `f(i, j)` holds for the `k`-th box's partners: `i` is that box's index, `j`
-    /// each partner's; stops at the first false. Over k in 0..len(), each pair of distinct
-    /// boxes that meet (closed boxes) is asked once, in one of its orders.
+    /// True if `f(i, j)` holds for the `k`-th part's pairs, `i` and `j` the boxes' indices:
+    /// a box and its partners, or a cell's pairs; stops at the first false. Over k in
+    /// 0..len(), each pair of distinct boxes that meet (closed boxes) is asked once, in one of
+    /// its orders.
     fn partners(&self, k: usize, mut f: impl FnMut(usize, usize) -> bool) -> bool {
         match self {
             MeetingBoxes::Sweep { order, yz, ends } => {
@@ -82,6 +235,7 @@ impl MeetingBoxes {
                     !meet || f(order[k], order[m])
                 })
             }
+            MeetingBoxes::Grid(grid) => grid.pairs_in(k, f),
             MeetingBoxes::Tree(boxes, tree) => tree
                 .locate_in_envelope_intersecting(&boxes[k])
                 .all(|g| g.data <= k || f(k, g.data)),
@@ -112,8 +266,24 @@ mod tests {
     use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
     use std::sync::Mutex;
 
-    /// The pairs `all_pairs` asks for, as (smaller, larger), and whether the tree asked them.
-    fn asked(boxes: &[AABB<[f64; 3]>], parallel: bool) -> (Vec<(usize, usize)>, bool) {
+    /// How the boxes are paired.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    enum Kind {
+        Sweep,
+        Grid,
+        Tree,
+    }
+
+    fn kind(meeting: &MeetingBoxes) -> Kind {
+        match meeting {
+            MeetingBoxes::Sweep { .. } => Kind::Sweep,
+            MeetingBoxes::Grid(_) => Kind::Grid,
+            MeetingBoxes::Tree(..) => Kind::Tree,
+        }
+    }
+
+    /// The pairs `all_pairs` asks for, as (smaller, larger), and how it paired them.
+    fn asked(boxes: &[AABB<[f64; 3]>], parallel: bool) -> (Vec<(usize, usize)>, Kind) {
         let got = Mutex::new(Vec::new());
         let meeting = MeetingBoxes::new(boxes.to_vec());
         let all = meeting.all_pairs(parallel, |i, j| {
@@ -123,7 +293,7 @@ mod tests {
         assert!(all, "every pair held");
         let mut got = got.into_inner().unwrap();
         got.sort_unstable();
-        (got, matches!(meeting, MeetingBoxes::Tree(..)))
+        (got, kind(&meeting))
     }
 
     /// The pairs whose boxes meet, every pair tested on its own.
@@ -173,38 +343,63 @@ mod tests {
         })
     }
 
+    /// 300 to 400 boxes all spanning x ∈ [0, 1000], past the sweep's budget, with corners on
+    /// the integers from −20 to 20 in y and z (zero as −0.0 or 0.0) and sides of 0 to 3 there:
+    /// many touching in a face, an edge or a corner, on and off the grid's cell walls.
+    fn wide_boxes() -> impl Strategy<Value = Vec<AABB<[f64; 3]>>> {
+        let side = || (-20..20i32, 0..4i32, any::<bool>());
+        proptest::collection::vec((side(), side()), 300..400).prop_map(|drawn| {
+            drawn
+                .into_iter()
+                .map(|((y, dy, ny), (z, dz, nz))| {
+                    let v = |k: i32, negative_zero: bool| match (k, negative_zero) {
+                        (0, true) => -0.0,
+                        _ => k as f64,
+                    };
+                    AABB::from_corners(
+                        [0.0, v(y, ny), v(z, nz)],
+                        [1000.0, v(y + dy, nz), v(z + dz, ny)],
+                    )
+                })
+                .collect()
+        })
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
-        /// Every pair of meeting boxes is asked exactly once and no other pair, by the sweep
-        /// and, for boxes all spanning the x-range, by the tree; on one thread and on many.
+        /// Every pair of meeting boxes is asked exactly once and no other pair, by the sweep,
+        /// by the grid for finite boxes side by side along x, and by the tree for boxes all
+        /// reaching x = −∞; on one thread and on many.
         #[test]
         fn the_pairs_asked_are_the_pairs_that_meet(
-            (boxes, long) in prop_oneof![
-                lattice_boxes(false).prop_map(|b| (b, false)),
-                lattice_boxes(true).prop_map(|b| (b, true)),
+            (boxes, how) in prop_oneof![
+                lattice_boxes(false).prop_map(|b| (b, Kind::Sweep)),
+                wide_boxes().prop_map(|b| (b, Kind::Grid)),
+                lattice_boxes(true).prop_map(|b| (b, Kind::Tree)),
             ],
             parallel in any::<bool>(),
         ) {
             let want = brute(&boxes);
-            let (got, by_tree) = asked(&boxes, parallel);
-            prop_assert_eq!(by_tree, long, "the tree takes exactly the long boxes");
+            let (got, kind) = asked(&boxes, parallel);
+            prop_assert_eq!(kind, how);
             prop_assert_eq!(got.iter().collect::<BTreeSet<_>>().len(), got.len(), "a pair asked twice");
             prop_assert_eq!(got, want);
         }
     }
 
-    /// A false answer is returned, by the sweep and by the tree, on one thread and on many;
-    /// on one thread nothing more is asked after it.
+    /// A false answer is returned, by the sweep, the grid and the tree, on one thread and on
+    /// many; on one thread nothing more is asked after it.
     #[test]
     fn a_false_pair_is_the_answer() {
         let unit = |x: f64| AABB::from_corners([x, 0.0, 0.0], [x + 1.0, 1.0, 1.0]);
         let short: Vec<_> = (0..10).map(|k| unit(k as f64)).collect();
-        let long: Vec<_> = (0..400)
-            .map(|k| AABB::from_corners([0.0, k as f64, 0.0], [1000.0, k as f64 + 1.0, 1.0]))
-            .collect();
-        for (boxes, long) in [(short, false), (long, true)] {
+        let side_by_side =
+            |k: usize, to: f64| AABB::from_corners([0.0, k as f64, 0.0], [to, k as f64 + 1.0, 1.0]);
+        let wide: Vec<_> = (0..400).map(|k| side_by_side(k, 1000.0)).collect();
+        let long: Vec<_> = (0..400).map(|k| side_by_side(k, f64::INFINITY)).collect();
+        for (boxes, how) in [(short, Kind::Sweep), (wide, Kind::Grid), (long, Kind::Tree)] {
             let meeting = MeetingBoxes::new(boxes);
-            assert_eq!(matches!(meeting, MeetingBoxes::Tree(..)), long);
+            assert_eq!(kind(&meeting), how);
             for parallel in [false, true] {
                 let no = |i: usize, j: usize| (i.min(j), i.max(j)) != (3, 4);
                 assert!(!meeting.all_pairs(parallel, no));
@@ -213,6 +408,25 @@ mod tests {
             let asked = AtomicUsize::new(0);
             assert!(!meeting.all_pairs(false, |_, _| asked.fetch_add(1, Relaxed) > 0));
             assert_eq!(asked.into_inner(), 1, "asked past the first false");
+        }
+    }
+
+    /// Boxes that the grid would put in too many cells (unit boxes far apart, with one box
+    /// over all of them) or with too many pairs in a cell (all in one place) go to the tree.
+    #[test]
+    fn crowded_grids_give_way_to_the_tree() {
+        let b = |lo: [f64; 3], hi: [f64; 3]| AABB::from_corners(lo, hi);
+        let mut spanning: Vec<_> = (0..4096)
+            .map(|k| [k % 16, k / 16 % 16, k / 256].map(|c| 250.0 * c as f64))
+            .map(|lo| b(lo, lo.map(|c| c + 1.0)))
+            .collect();
+        spanning.push(b([0.0; 3], [4000.0; 3]));
+        let piled: Vec<_> = (0..2000).map(|_| b([0.0; 3], [1.0; 3])).collect();
+        for boxes in [spanning, piled] {
+            let want = brute(&boxes);
+            let (got, kind) = asked(&boxes, true);
+            assert_eq!(kind, Kind::Tree);
+            assert_eq!(got, want);
         }
     }
 }
