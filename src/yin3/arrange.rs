@@ -52,6 +52,11 @@ impl<N: Num> Soup<N> {
     /// Add the triangle `abc` of operand `operand`.
     pub(crate) fn push(&mut self, t: [&Point3<N>; 3], operand: u8) {
         let t = t.map(|p| self.intern(p));
+        self.push_interned(t, operand);
+    }
+
+    /// Add the triangle of operand `operand` whose corners are the interned points `t`.
+    pub(crate) fn push_interned(&mut self, t: [usize; 3], operand: u8) {
         self.tris.push(t);
         self.operand.push(operand);
     }
@@ -94,6 +99,9 @@ pub(crate) struct Arrangement {
     /// For each of the soup's points, true if two intersected triangles meet there (for
     /// [`Pairs::Across`]: the points of each operand on the other's boundary).
     pub contact: Vec<bool>,
+    /// For each triangle, the triangles it was intersected with that overlap it in an area
+    /// of their common plane.
+    pub coplanar: Vec<Vec<usize>>,
 }
 
 /// The arrangement of the soup's triangles (`soup.points` gains the contact points).
@@ -124,6 +132,7 @@ pub(crate) fn arrange<N: Num>(
         Pairs::All => &trees[0],
     };
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
+    let mut coplanar: Vec<Vec<usize>> = vec![Vec::new(); n];
     let mut contact: BTreeSet<usize> = BTreeSet::new();
     // The contact points each triangle is known to contain: in exact mode those of its own
     // intersections (constructed exactly on both triangles), which the distribution below need
@@ -161,6 +170,10 @@ pub(crate) fn arrange<N: Num>(
                         extra[t].insert(v);
                     }
                 }
+            }
+            if c.coplanar && c.interiors_meet {
+                coplanar[i].push(j);
+                coplanar[j].push(i);
             }
             for (p, q) in &c.cuts_t {
                 let e = (soup.intern(p), soup.intern(q));
@@ -214,6 +227,7 @@ pub(crate) fn arrange<N: Num>(
     Ok(Arrangement {
         pieces,
         contact: on_contact,
+        coplanar,
     })
 }
 

@@ -9,7 +9,7 @@
 
 use super::error::Yin3Error;
 use super::kept::{provably_kept, Topology};
-use super::set::{compact, Brep, YinSet3};
+use super::set::{compact, Brep, Repr3, YinSet3};
 use super::transversal::{transversal_meet, Transversal};
 use super::validate::{check_windings, conforming_after_moves, revalidate};
 use crate::kernel::Point3;
@@ -52,7 +52,7 @@ pub(crate) fn rounded_exact<N: Num>(
     ctx: N::Ctx,
     op: impl Fn(&YinSet3<Rational>, &YinSet3<Rational>) -> YinSet3<Rational>,
 ) -> Result<YinSet3<N>, Yin3Error> {
-    rounded_set(&op(&exact_set(a), &exact_set(b)), ctx)
+    rounded_set(op(&exact_set(a), &exact_set(b)), ctx)
 }
 
 /// The exact value of a float vertex.
@@ -88,15 +88,15 @@ fn unrepresentable(e: &dyn std::fmt::Display) -> Yin3Error {
 
 /// The exact boundary `b` with every vertex rounded to the nearest `f64`. If none moved, the
 /// exact structure is kept as it is; otherwise as [`rounded_complex`].
-pub(crate) fn rounded_brep<N: Num>(b: &Brep<Rational>) -> Result<Brep<N>, Yin3Error> {
+pub(crate) fn rounded_brep<N: Num>(b: Brep<Rational>) -> Result<Brep<N>, Yin3Error> {
     let rounded = rounded_points::<N>(&b.points)?;
     let moved = moved(&rounded, &b.points);
     if moved.iter().all(Option::is_none) {
         // Distinct exact points, each an f64 already: the same boundary, no work to redo.
-        return Ok(b.clone().with_points(rounded));
+        return Ok(b.with_points(rounded));
     }
     rounded_complex(rounded, moved, &b.points, b.tris.clone(), || {
-        Ok(Topology::of(b))
+        Ok(Topology::of(&b))
     })
 }
 
@@ -235,10 +235,10 @@ fn rounded_boundary<N: Num>(
 }
 
 /// The exact set `y` rounded ([`rounded_brep`]), under the context `ctx`.
-fn rounded_set<N: Num>(y: &YinSet3<Rational>, ctx: N::Ctx) -> Result<YinSet3<N>, Yin3Error> {
-    Ok(match y.brep() {
-        Some(b) => YinSet3::from_brep(rounded_brep(b)?, ctx),
-        None if y.is_empty() => YinSet3::empty().with_ctx(ctx),
-        None => YinSet3::full().with_ctx(ctx),
+fn rounded_set<N: Num>(y: YinSet3<Rational>, ctx: N::Ctx) -> Result<YinSet3<N>, Yin3Error> {
+    Ok(match y.repr {
+        Repr3::Brep(b) => YinSet3::from_brep(rounded_brep(*b)?, ctx),
+        Repr3::Empty => YinSet3::empty().with_ctx(ctx),
+        Repr3::Full => YinSet3::full().with_ctx(ctx),
     })
 }

@@ -38,16 +38,6 @@ impl TriBoxes {
             .map(|g| g.data)
     }
 
-    /// The triangles whose box meets the box `b`.
-    pub(crate) fn meeting<'a>(&'a self, b: &'a AABB<[f64; 3]>) -> impl Iterator<Item = usize> + 'a {
-        self.0.locate_in_envelope_intersecting(b).map(|g| g.data)
-    }
-
-    /// True if some triangle's box meets the box `b`.
-    pub(crate) fn meets(&self, b: &AABB<[f64; 3]>) -> bool {
-        self.meeting(b).next().is_some()
-    }
-
     /// The triangles whose box meets the ray from `q` along +x: all that can count in
     /// [`winding`] at `q` (a crossing needs q's y and z in the triangle's closed box and a
     /// corner with x ≥ q's).

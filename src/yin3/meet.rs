@@ -6,15 +6,15 @@
 use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::float_meet;
-use super::geom::{f64_box, in_triangle3, plane_key};
+use super::geom::{in_triangle2, Chart};
 use super::locate::{winding, TriBoxes};
 use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
-use crate::kernel::Point3;
+use crate::kernel::{orient, Point3};
 use crate::num::Num;
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt};
-use std::cell::OnceCell;
+use std::cmp::Ordering;
 
 /// Where a piece of one operand lies relative to the other operand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -129,12 +129,17 @@ fn meet_in<N: Num>(a: &Brep<N>, b: &Brep<N>, ctx: N::Ctx) -> Result<YinSet3<N>, 
     Ok(YinSet3::from_brep(brep, ctx))
 }
 
-/// The side of every piece relative to the other operand. Membership is constant on patches
-/// (pieces of one operand joined across edges off the other's boundary): one ray per patch,
-/// from a vertex of the patch off the other's boundary where it has one (an input vertex,
-/// nothing constructed), else from a piece's centroid. Only a piece whose three vertices are
-/// contact points can lie on the other's boundary, and only an edge between two contact points
-/// can run along it.
+/// The side of every piece relative to the other operand, decided without constructing a
+/// point where a patch has a vertex off the other's boundary. Membership is constant on
+/// patches: pieces of one operand joined across edges that are no edge of the other's pieces.
+/// (Every contact point goes to every triangle containing it, so an edge of one operand's
+/// pieces on the other's boundary is an edge of the other's pieces too, but for edges inside
+/// a coplanar overlap, which join only pieces on the other's boundary.) A piece lies on the
+/// other's boundary iff its corners lie in a closed triangle that overlaps its parent in their
+/// plane (the overlap's sides are cuts, so no piece straddles them), on the same or the
+/// opposite side as that triangle's orientation in the parent's chart tells. Every other patch
+/// is decided by one ray, from a vertex off the other's boundary where it has one (an input
+/// vertex), else from a piece's centroid.
 fn classify<N: Num>(
     soup: &Soup<N>,
     arrangement: &Arrangement,
@@ -150,17 +155,7 @@ fn classify<N: Num>(
                 .map(|t| (t, soup.corners(t))),
         )
     });
-    let on_operand = |o: usize, q: &Point3<N>| {
-        trees[o]
-            .at(q, N::tolerance(ctx))
-            .find(|&t| in_triangle3(soup.corners(t), q, ctx))
-    };
-    // True if triangle t's normal points along its plane key's normal.
-    let along = |t: usize| {
-        let [a, b, c] = soup.corners(t);
-        plane_key(a, b, c).1
-    };
-    // Patches across edges whose midpoints are off the other operand's boundary.
+    // Patches across edges off the other operand's boundary.
     let mut edges: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
     for (i, (t, _)) in pieces.iter().enumerate() {
         for k in 0..3 {
@@ -169,21 +164,11 @@ fn classify<N: Num>(
         }
     }
     let mut uf = UnionFind::new(pieces.len());
-    for ((u, v), at) in &edges {
-        let (pu, pv) = (&soup.points[*u], &soup.points[*v]);
-        // The midpoint is constructed only if both ends are contact points and the edge's box
-        // meets one of the other's.
-        let mid = OnceCell::new();
-        let off = |o: usize| {
-            !(contact[*u] && contact[*v] && trees[o].meets(&f64_box([pu, pv])))
-                || on_operand(o, mid.get_or_init(|| pu.midpoint(pv))).is_none()
-        };
-        for o in 0..2 {
-            let mine: Vec<usize> = at.iter().copied().filter(|&i| op(i) == o).collect();
-            if mine.len() > 1 && off(1 - o) {
-                for w in &mine[1..] {
-                    uf.union(mine[0], *w);
-                }
+    for at in edges.values() {
+        let o = op(at[0]);
+        if at.len() > 1 && at.iter().all(|&i| op(i) == o) {
+            for w in &at[1..] {
+                uf.union(at[0], *w);
             }
         }
     }
@@ -194,28 +179,43 @@ fn classify<N: Num>(
             off_vertex.entry(uf.find(i)).or_insert(v);
         }
     }
+    // The side of piece `t` of `parent` if it lies in a triangle overlapping its parent.
+    let on_overlap = |t: &[usize; 3], parent: usize| -> Option<Side> {
+        let overlaps = &arrangement.coplanar[parent];
+        if overlaps.is_empty() || !t.iter().all(|&v| contact[v]) {
+            return None;
+        }
+        let [a, b, c] = soup.corners(parent);
+        let ch = Chart::of_triangle(a, b, c);
+        let image = t.map(|v| ch.project(&soup.points[v]));
+        overlaps.iter().find_map(|&s| {
+            let mut other = soup.tris[s].map(|v| ch.project(&soup.points[v]));
+            let turn = orient(&other[0], &other[1], &other[2], ctx);
+            if turn == Ordering::Less {
+                other.swap(1, 2);
+            }
+            let [a, b, c] = &other;
+            (image.iter().all(|p| in_triangle2(a, b, c, p, ctx))).then_some(match turn {
+                Ordering::Greater => Side::Same,
+                _ => Side::Opposite,
+            })
+        })
+    };
     let mut memo: HashMap<usize, Side> = HashMap::new();
     (0..pieces.len())
         .map(|i| {
             let (t, parent) = &pieces[i];
-            let o = op(i);
-            let [a, b, c] = t.map(|v| &soup.points[v]);
-            let all_contact = t.iter().all(|&v| contact[v]);
-            if all_contact && trees[1 - o].meets(&f64_box([a, b, c])) {
-                if let Some(s) = on_operand(1 - o, &Point3::centroid(a, b, c)) {
-                    return if along(*parent) == along(s) {
-                        Side::Same
-                    } else {
-                        Side::Opposite
-                    };
-                }
+            if let Some(side) = on_overlap(t, *parent) {
+                return side;
             }
+            let o = op(i);
             let root = uf.find(i);
             *memo.entry(root).or_insert_with(|| {
                 let centroid;
                 let q = match off_vertex.get(&root) {
                     Some(&v) => &soup.points[v],
                     None => {
+                        let [a, b, c] = t.map(|v| &soup.points[v]);
                         centroid = Point3::centroid(a, b, c);
                         &centroid
                     }

@@ -48,9 +48,13 @@
 //!   operands get identical pieces.
 //! * **Selection** (seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8, MRS-b..d in 3D): a piece of A
 //!   coincident with a piece of B of the same orientation is kept once, of opposite orientation
-//!   dropped with it; any other piece is kept iff it lies in the other operand. Membership is
-//!   constant on patches (pieces joined across edges not on the other boundary), so one locate
-//!   per patch decides it.
+//!   dropped with it; any other piece is kept iff it lies in the other operand. A piece lies on
+//!   the other boundary iff its corners lie in a triangle overlapping its parent in their plane
+//!   (orientations in the parent's chart, nothing constructed). Membership is constant on
+//!   patches: pieces joined across edges that are no edge of the other operand's pieces (every
+//!   contact point goes to every triangle containing it, so an edge on the other boundary is
+//!   one of its pieces' edges too), so one ray per patch, from an input vertex where the patch
+//!   has one, decides it.
 //! * **Rotation order around an edge** (seed 004 "pasting"; seed 003 Def. 5.12, Lemma 5.13):
 //!   the fins of an edge (a, b) are sorted by the exact orientation of (b − a, u_f, u_g), u_f
 //!   the fin's apex minus a, ties broken by the dot product of the parts orthogonal to b − a;

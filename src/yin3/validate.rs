@@ -75,7 +75,7 @@ impl<N: Num> YinSet3<N> {
         } else {
             // Float mode: validity is decided on the exact values; a vertex that the
             // conforming boundary adds (edges crossing on a face) is rounded like a result's.
-            rounded_brep(&build(&exact_points(&vertices), &faces, true)?)?
+            rounded_brep(build(&exact_points(&vertices), &faces, true)?)?
         };
         Ok(YinSet3::from_brep(brep, ctx))
     }
@@ -235,9 +235,12 @@ fn build<N: Num>(
     let exact = N::exact_ctx();
     let mut soup = Soup::new();
     let mut face_of = Vec::new();
+    // Each vertex interned once, where a triangle first uses it (not once per corner).
+    let mut interned: Vec<Option<usize>> = vec![None; vertices.len()];
     for (f, face) in faces.iter().enumerate() {
         for tri in face_triangles(vertices, face, f, &exact)? {
-            soup.push(tri.map(|v| &vertices[v]), 0);
+            let t = tri.map(|v| *interned[v].get_or_insert_with(|| soup.intern(&vertices[v])));
+            soup.push_interned(t, 0);
             face_of.push(f);
         }
     }
