@@ -121,6 +121,13 @@ pub trait Num:
     /// `f64` value; panics if it is not finite).
     fn fraction(&self) -> (BigInt, BigInt);
 
+    /// The exact value as a numerator and a positive denominator in lowest terms when both fit
+    /// in an `i64`, else `None`. Default: from [`Num::fraction`].
+    fn small_fraction(&self) -> Option<(i64, i64)> {
+        let (n, d) = self.fraction();
+        Some((i64::try_from(n).ok()?, i64::try_from(d).ok()?))
+    }
+
     /// An `f64` within 4 ulps of the value (relative; within 2⁻¹⁰⁶² absolute below the normal
     /// range), or NaN or an infinity when out of range: the input of floating-point filters,
     /// never of a decision by itself. Default: [`Num::to_f64`].

@@ -628,6 +628,17 @@ impl Num for Rational {
         approx(self)
     }
 
+    fn small_fraction(&self) -> Option<(i64, i64)> {
+        // A value with terms below 2⁶² is always stored small (the choice is canonical).
+        match &self.0 {
+            Repr::Small(n, d) => Some((*n, *d)),
+            Repr::Big(_) => {
+                let (n, d) = self.fraction();
+                Some((i64::try_from(n).ok()?, i64::try_from(d).ok()?))
+            }
+        }
+    }
+
     fn fraction(&self) -> (BigInt, BigInt) {
         (self.numer(), self.denom())
     }

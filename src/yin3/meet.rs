@@ -7,6 +7,7 @@ use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::float_meet;
 use super::geom::{in_triangle2, Chart};
+use super::grid::grid_meet;
 use super::locate::{winding, TriBoxes};
 use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
@@ -82,10 +83,20 @@ impl<N: Num> YinSet3<N> {
             return Ok(YinSet3::empty().with_ctx(ctx));
         }
         if N::EXACT {
-            meet_in(a, b, ctx)
+            grid_meet([self, other], [a, b], ctx).unwrap_or_else(|| meet_in(a, b, ctx))
         } else {
             float_meet(self, other, ctx)
         }
+    }
+}
+
+/// The meet by the general arrangement alone, never by the transversal one (the oracle of the
+/// transversal and grid meets' tests).
+#[cfg(test)]
+pub(crate) fn general_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N> {
+    match (x.brep(), y.brep()) {
+        (Some(a), Some(b)) => meet_in(a, b, N::combine_ctx(x.ctx, y.ctx)).expect("an exact meet"),
+        _ => x.meet(y),
     }
 }
 

@@ -766,6 +766,7 @@ mod tests {
     use super::*;
     use crate::num::Float;
     use crate::yin3::float::exact_set;
+    use crate::yin3::meet::general_meet;
     use crate::yin3::set::compact;
     use crate::yin3::shapes::{concat, cuboid, Mesh};
     use crate::yin3::{Yin3Error, YinSet3};
@@ -927,7 +928,7 @@ mod tests {
                 }
                 let fast = transversal(&fa, &fb);
                 prop_assert!(fast.is_some(), "declined a generic pair");
-                let exact = ea.meet(&eb);
+                let exact = general_meet(&ea, &eb);
                 prop_assert_eq!(fast.unwrap(), exact.clone());
                 if let Some(Transversal::Apart(_) | Transversal::Operand(_)) = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap()) {
                     // Nothing is rounded where the boundaries are apart: the float meet is exact.
@@ -966,7 +967,7 @@ mod tests {
                     Some(Transversal::Apart(_) | Transversal::Operand(_))
                 ));
                 let float = fa.try_meet(&fb).expect("a float meet");
-                assert_eq!(exact_set(&float), ea.meet(&eb));
+                assert_eq!(exact_set(&float), general_meet(&ea, &eb));
             }
         }
     }
@@ -1050,7 +1051,7 @@ mod tests {
                 ] {
                     let fast = transversal(&fa, &fb);
                     prop_assert!(fast.is_some(), "declined a touching pair");
-                    let exact = ea.meet(&eb);
+                    let exact = general_meet(&ea, &eb);
                     prop_assert_eq!(fast.unwrap(), exact.clone());
                     // No point is constructed, so nothing is rounded: the float meet is exact.
                     prop_assert_eq!(exact_set(&fa.try_meet(&fb).expect("a float meet")), exact);
@@ -1160,7 +1161,7 @@ mod tests {
                 let Some(fast) = transversal(&fa, &fb) else {
                     continue;
                 };
-                let exact = ea.meet(&eb);
+                let exact = general_meet(&ea, &eb);
                 assert_eq!(fast, exact, "{:?} ∧ {:?}", a.0, b.0);
                 meets += 1;
                 match fa.try_meet(&fb) {
@@ -1203,7 +1204,7 @@ mod tests {
             "crossing edges and corners: {kinds:?}"
         );
         let fast = transversal(&ball, &torus).expect("the transversal meet");
-        assert_eq!(fast, exact_set(&ball).meet(&exact_set(&torus)));
+        assert_eq!(fast, general_meet(&exact_set(&ball), &exact_set(&torus)));
     }
 
     /// Axis-aligned cubes sharing a corner (their faces at it coplanar) take the touching meet
@@ -1261,7 +1262,7 @@ mod tests {
         let (fa, fb) = (solid::<Float>(&a), solid::<Float>(&b));
         let meet = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap());
         assert!(matches!(meet, Some(Transversal::Crossing(_))));
-        let exact = solid::<Rational>(&a).meet(&solid::<Rational>(&b));
+        let exact = general_meet(&solid::<Rational>(&a), &solid::<Rational>(&b));
         assert_eq!(transversal(&fa, &fb).unwrap(), exact);
         assert_eq!(exact_set(&fa.try_meet(&fb).unwrap()), exact);
         let same_bottom = solid::<Float>(&bipyramid(2.0, 1.0));

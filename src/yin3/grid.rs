@@ -1,0 +1,184 @@
+//! Exact operands on a common integer grid (yin3 docs: *Meet*): where every coordinate of both
+//! operands, times one positive integer L (the lcm of their denominators: decimal input of a
+//! few places, lattices), is an integer below 2⁵³ in magnitude, the scaled operands are float
+//! sets with the same predicates, and the construction-light meet of [`super::transversal`]
+//! decides their meet exactly; its vertices divided by L are the exact meet's. Operands that
+//! meet otherwise (a coplanar overlap, an edge in the other's plane, a vertex on an edge) take
+//! the general arrangement.
+
+use super::error::Yin3Error;
+use super::set::{compact, Brep, YinSet3};
+use super::transversal::{transversal_meet, Transversal};
+use crate::kernel::Point3;
+use crate::num::{Float, Num, Rational};
+
+/// Magnitudes below this are integers that an `f64` holds exactly.
+const EXACT_INTEGERS: i64 = 1 << 53;
+
+/// The least positive L such that every coordinate of `points` times L is an integer, if each
+/// of those integers lies below 2⁵³ in magnitude.
+fn common_grid<N: Num>(points: &[&Point3<N>]) -> Option<i64> {
+    let mut l: i64 = 1;
+    let coordinates = || points.iter().flat_map(|p| [&p.x, &p.y, &p.z]);
+    for v in coordinates() {
+        let (_, d) = v.small_fraction()?;
+        if l % d != 0 {
+            l = (l / gcd::binary_u64(l as u64, d as u64) as i64).checked_mul(d)?;
+            if l >= EXACT_INTEGERS {
+                return None;
+            }
+        }
+    }
+    for v in coordinates() {
+        let (n, d) = v.small_fraction()?;
+        if n.checked_mul(l / d)?.abs() >= EXACT_INTEGERS {
+            return None;
+        }
+    }
+    Some(l)
+}
+
+/// The boundary `b` scaled by `l` (every coordinate times `l` an integer below 2⁵³): a float
+/// boundary with the same structure.
+fn scaled<N: Num>(b: &Brep<N>, l: i64) -> Brep<Float> {
+    let scale = |v: &N| {
+        let (n, d) = v.small_fraction().expect("a coordinate on the common grid");
+        Float::new((n * (l / d)) as f64)
+    };
+    b.clone()
+        .map_points(|p| Point3::new(scale(&p.x), scale(&p.y), scale(&p.z)))
+}
+
+/// The exact meet of the sets `x` and `y` with the boundaries `a` and `b`, by the transversal
+/// meet of the operands scaled to a common integer grid (module docs), under the context
+/// `ctx`; `None` where they are on no such grid or meet degenerately.
+pub(crate) fn grid_meet<N: Num>(
+    [x, y]: [&YinSet3<N>; 2],
+    [a, b]: [&Brep<N>; 2],
+    ctx: N::Ctx,
+) -> Option<Result<YinSet3<N>, Yin3Error>> {
+    debug_assert!(N::EXACT, "float sets take the transversal meet directly");
+    let corners: Vec<&Point3<N>> = a.points.iter().chain(&b.points).collect();
+    let l = common_grid(&corners)?;
+    let (fa, fb) = (scaled(a, l), scaled(b, l));
+    let meet = transversal_meet(&fa, &fb)?;
+    if let Transversal::Operand(o) = meet {
+        return Some(Ok([x, y][o].clone().with_ctx(ctx)));
+    }
+    let (points, kept) = meet.complex(&fa, &fb);
+    if kept.is_empty() {
+        return Some(Ok(YinSet3::empty().with_ctx(ctx)));
+    }
+    let (points, kept) = compact(points, kept);
+    let l = Rational::from_i64(l);
+    let unscale = |v: &Rational| N::nearest(&(v.clone() / l.clone()));
+    let points = (points.iter())
+        .map(|p| Point3::new(unscale(&p.x), unscale(&p.y), unscale(&p.z)))
+        .collect();
+    Some(
+        Brep::assemble(points, kept)
+            .map(|brep| YinSet3::from_brep(brep, ctx))
+            .map_err(|e| {
+                Yin3Error::Internal(format!("the meet on a common grid is not a Yin set: {e}"))
+            }),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::orient3d;
+    use crate::yin3::meet::general_meet;
+    use num_bigint::BigInt;
+    use rand::{RngExt, SeedableRng};
+    use std::cmp::Ordering;
+
+    /// The point (x, y, z) / d.
+    fn point(x: i64, y: i64, z: i64, d: i64) -> Point3<Rational> {
+        let q = |n: i64| Rational::new(BigInt::from(n), BigInt::from(d));
+        Point3::new(q(x), q(y), q(z))
+    }
+
+    #[test]
+    fn common_grid_by_hand() {
+        let grid = |p: &[Point3<Rational>]| common_grid(&p.iter().collect::<Vec<_>>());
+        // Tenths, halves and fifths share the grid of tenths.
+        let decimals = [point(1, 2, 3, 10), point(5, 5, 5, 10), point(2, 4, 6, 10)];
+        assert_eq!(grid(&decimals), Some(10));
+        assert_eq!(grid(&[point(1, 1, 1, 3), point(1, 0, 0, 4)]), Some(12));
+        // 2⁵³ − 1 is the largest integer in range, 2⁵³ is not.
+        let top = (1i64 << 53) - 1;
+        assert_eq!(grid(&[point(top, 0, -top, 1)]), Some(1));
+        assert_eq!(grid(&[point(top + 1, 0, 0, 1)]), None);
+        // In range alone, out of range on the common grid: 2⁵² on the grid of halves.
+        assert_eq!(grid(&[point(1 << 52, 0, 0, 1), point(1, 0, 0, 2)]), None);
+        // Denominators whose lcm passes 2⁵³.
+        let primes = [1_000_003, 1_000_033, 1_000_037];
+        assert_eq!(grid(&primes.map(|p| point(1, 1, 1, p))), None);
+    }
+
+    /// A tetrahedron with corners on the grid of tenths in [0, 2]³, faces outward; `None` if
+    /// flat.
+    fn tetrahedron(rng: &mut rand::rngs::StdRng) -> Option<YinSet3<Rational>> {
+        let v: Vec<Point3<Rational>> = (0..4)
+            .map(|_| {
+                point(
+                    rng.random_range(0..21),
+                    rng.random_range(0..21),
+                    rng.random_range(0..21),
+                    10,
+                )
+            })
+            .collect();
+        let faces = match orient3d(&v[0], &v[1], &v[2], &v[3], &()) {
+            Ordering::Greater => [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+            Ordering::Less => [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]],
+            Ordering::Equal => return None,
+        };
+        YinSet3::from_triangles(v, faces.map(|f| f.to_vec()).to_vec()).ok()
+    }
+
+    /// Tetrahedra on the grid of tenths against each other, against the cube [1/2, 3/2]³ and
+    /// against their complements: wherever the grid meet is taken it equals the general
+    /// arrangement's meet, and it is taken in most cases, the complements' too.
+    #[test]
+    fn grid_meets_are_the_general_meets() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(7);
+        let cube = YinSet3::cuboid(&point(5, 5, 5, 10), &point(15, 15, 15, 10)).expect("a cube");
+        let (mut taken, mut cases) = (0, 0);
+        for _ in 0..600 {
+            let (Some(t), Some(s)) = (tetrahedron(&mut rng), tetrahedron(&mut rng)) else {
+                continue;
+            };
+            for (x, y) in [(&t, s.clone()), (&t, s.complement()), (&cube, s.clone())] {
+                let (a, b) = (x.brep().expect("bounded"), y.brep().expect("a boundary"));
+                cases += 1;
+                if let Some(meet) = grid_meet([x, &y], [a, b], ()) {
+                    assert_eq!(meet.expect("an exact meet"), general_meet(x, &y));
+                    taken += 1;
+                }
+            }
+        }
+        assert!(taken * 10 >= cases * 6, "taken in {taken} of {cases}");
+    }
+
+    /// Operands sharing a face, and operands off every grid of integers below 2⁵³, take the
+    /// general arrangement.
+    #[test]
+    fn degenerate_or_off_grid_operands_are_declined() {
+        let unit =
+            |x: i64| YinSet3::cuboid(&point(x, 0, 0, 1), &point(x + 1, 1, 1, 1)).expect("a cube");
+        let (a, b) = (unit(0), unit(1));
+        let breps = [a.brep().expect("a cube"), b.brep().expect("a cube")];
+        assert!(grid_meet([&a, &b], breps, ()).is_none());
+        let tiny = Rational::new(BigInt::from(1), BigInt::from(1u64 << 60));
+        let far = YinSet3::cuboid(
+            &Point3::new(tiny.clone(), tiny.clone(), tiny),
+            &point(1, 1, 1, 2),
+        )
+        .expect("a box");
+        let breps = [a.brep().expect("a cube"), far.brep().expect("a box")];
+        assert!(grid_meet([&a, &far], breps, ()).is_none());
+        assert_eq!(a.meet(&far), general_meet(&a, &far));
+    }
+}
