@@ -17,9 +17,11 @@ const EXACT_INTEGERS: i64 = 1 << 53;
 
 /// The least positive L such that every coordinate of `points` times L is an integer, if each
 /// of those integers lies below 2⁵³ in magnitude.
-fn common_grid<N: Num>(points: &[&Point3<N>]) -> Option<i64> {
+fn common_grid<'a, N: Num + 'a>(
+    points: impl Iterator<Item = &'a Point3<N>> + Clone,
+) -> Option<i64> {
     let mut l: i64 = 1;
-    let coordinates = || points.iter().flat_map(|p| [&p.x, &p.y, &p.z]);
+    let coordinates = || points.clone().flat_map(|p| [&p.x, &p.y, &p.z]);
     for v in coordinates() {
         let (_, d) = v.small_fraction()?;
         if l % d != 0 {
@@ -38,15 +40,21 @@ fn common_grid<N: Num>(points: &[&Point3<N>]) -> Option<i64> {
     Some(l)
 }
 
-/// The boundary `b` scaled by `l` (every coordinate times `l` an integer below 2⁵³): a float
-/// boundary with the same structure.
-fn scaled<N: Num>(b: &Brep<N>, l: i64) -> Brep<Float> {
+/// The point `p` times `l`, a float point (every coordinate of `p` times `l` an integer below
+/// 2⁵³).
+fn scale<N: Num>(p: &Point3<N>, l: i64) -> Point3<Float> {
     let scale = |v: &N| {
         let (n, d) = v.small_fraction().expect("a coordinate on the common grid");
         Float::new((n * (l / d)) as f64)
     };
-    b.clone()
-        .map_points(|p| Point3::new(scale(&p.x), scale(&p.y), scale(&p.z)))
+    Point3::new(scale(&p.x), scale(&p.y), scale(&p.z))
+}
+
+/// The points scaled to their common integer grid (module docs), as float points with the
+/// same orientations; `None` if they are on no such grid.
+pub(crate) fn on_grid<N: Num>(points: &[Point3<N>]) -> Option<Vec<Point3<Float>>> {
+    let l = common_grid(points.iter())?;
+    Some(points.iter().map(|p| scale(p, l)).collect())
 }
 
 /// The exact meet of the sets `x` and `y` with the boundaries `a` and `b`, by the transversal
@@ -58,9 +66,9 @@ pub(crate) fn grid_meet<N: Num>(
     ctx: N::Ctx,
 ) -> Option<Result<YinSet3<N>, Yin3Error>> {
     debug_assert!(N::EXACT, "float sets take the transversal meet directly");
-    let corners: Vec<&Point3<N>> = a.points.iter().chain(&b.points).collect();
-    let l = common_grid(&corners)?;
-    let (fa, fb) = (scaled(a, l), scaled(b, l));
+    let l = common_grid(a.points.iter().chain(&b.points))?;
+    let scaled = |b: &Brep<N>| b.clone().map_points(|p| scale(p, l));
+    let (fa, fb) = (scaled(a), scaled(b));
     let meet = transversal_meet(&fa, &fb)?;
     if let Transversal::Operand(o) = meet {
         return Some(Ok([x, y][o].clone().with_ctx(ctx)));
@@ -101,7 +109,7 @@ mod tests {
 
     #[test]
     fn common_grid_by_hand() {
-        let grid = |p: &[Point3<Rational>]| common_grid(&p.iter().collect::<Vec<_>>());
+        let grid = |p: &[Point3<Rational>]| common_grid(p.iter());
         // Tenths, halves and fifths share the grid of tenths.
         let decimals = [point(1, 2, 3, 10), point(5, 5, 5, 10), point(2, 4, 6, 10)];
         assert_eq!(grid(&decimals), Some(10));
@@ -160,6 +168,37 @@ mod tests {
             }
         }
         assert!(taken * 10 >= cases * 6, "taken in {taken} of {cases}");
+    }
+
+    /// The triangles of two tetrahedra on the grid of tenths, as one soup (equal corners
+    /// shared): they cross, touch or miss. Whether the soup is conforming is the same on the
+    /// rationals and on their images on the common grid, and both verdicts occur often.
+    #[test]
+    fn conformity_is_decided_alike_on_the_grid() {
+        use crate::yin3::arrange::Soup;
+        use crate::yin3::validate::conforming_after_moves;
+        let mut rng = rand::rngs::StdRng::seed_from_u64(11);
+        let mut verdicts = [0usize; 2];
+        for _ in 0..400 {
+            let (Some(t), Some(s)) = (tetrahedron(&mut rng), tetrahedron(&mut rng)) else {
+                continue;
+            };
+            let mut soup = Soup::new();
+            for b in [t.brep().expect("bounded"), s.brep().expect("bounded")] {
+                for k in 0..b.tris.len() {
+                    soup.push(b.corners(k), 0);
+                }
+            }
+            let everything = vec![true; soup.points.len()];
+            let exact = conforming_after_moves(&soup.points, &soup.tris, &everything);
+            let scaled = on_grid(&soup.points).expect("tenths are on a grid");
+            assert_eq!(
+                conforming_after_moves(&scaled, &soup.tris, &everything),
+                exact
+            );
+            verdicts[usize::from(exact)] += 1;
+        }
+        assert!(verdicts.iter().all(|&n| n >= 40), "verdicts {verdicts:?}");
     }
 
     /// Operands sharing a face, and operands off every grid of integers below 2⁵³, take the

@@ -7,6 +7,7 @@ use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::{Spot, Yin3Error};
 use super::float::{exact_points, rounded_brep};
 use super::geom::{collinear, normal, widened_box, Chart};
+use super::grid::on_grid;
 use super::locate::{ray_box, winding};
 use super::set::{Brep, YinSet3};
 use super::sweep::MeetingBoxes;
@@ -248,17 +249,20 @@ fn build<N: Num>(
     // meshes, and every stored result) is its own arrangement; only others are arranged. The
     // exact values of a float input are told apart as the `f64`s they are, whose planes'
     // filter decides most pairs with a few dot products.
+    // Exact values on a common integer grid are told apart the same way, scaled to it.
     let everything = vec![true; soup.points.len()];
-    let conforming = if rounded {
-        let f64s: Vec<Point3<Float>> = (soup.points.iter())
-            .map(|p| {
-                let [x, y, z] = p.to_f64();
-                Point3::new(Float::new(x), Float::new(y), Float::new(z))
-            })
-            .collect();
-        conforming_after_moves(&f64s, &soup.tris, &everything)
+    let f64s = if rounded {
+        let f64s = (soup.points.iter()).map(|p| {
+            let [x, y, z] = p.to_f64();
+            Point3::new(Float::new(x), Float::new(y), Float::new(z))
+        });
+        Some(f64s.collect())
     } else {
-        conforming_after_moves(&soup.points, &soup.tris, &everything)
+        on_grid(&soup.points)
+    };
+    let conforming = match f64s {
+        Some(f64s) => conforming_after_moves::<Float>(&f64s, &soup.tris, &everything),
+        None => conforming_after_moves(&soup.points, &soup.tris, &everything),
     };
     // The triangles of the boundary, and the input face of each.
     let (tris, origin) = if conforming {
