@@ -149,9 +149,11 @@
 //!   power-of-two grid, then Shewchuk's adaptive `orient3d` after an exact power-of-two scaling,
 //!   rationals where even that under- or overflows).
 //! * **Speed.** On operands that cross, touch only in shared corners and edges, or do not
-//!   meet, float mode takes 0.03–0.17× exact mode's time (benches/BENCHMARKS.md); where they
-//!   share faces or meet otherwise degenerately it takes the general path, the exact meet and
-//!   then rounding, at 1.0–2.1× exact mode's time.
+//!   meet, float mode takes 0.09–0.20× exact mode's time on the crossing spheres and larger
+//!   meshes of benches/BENCHMARKS.md, and 0.33–0.64× on small pairs whose coordinates lie on a
+//!   common integer grid, where exact mode takes the same path (*Meet*); where they share faces
+//!   or meet otherwise degenerately it takes the general path, the exact meet and then
+//!   rounding, at 1.0–2.0× exact mode's time.
 
 mod arrange;
 mod betti;
