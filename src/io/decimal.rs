@@ -40,18 +40,54 @@ pub(crate) fn exact_text<N: Num>(n: &N) -> String {
     text
 }
 
-/// `n` as an exact decimal, or `inexact()` when its expansion does not terminate.
+/// `n` as an exact decimal, or `inexact()` when its expansion does not terminate. A float
+/// backend's `Display` is already its shortest decimal; a fraction of machine integers is
+/// scaled in `i128` where that holds it.
 fn decimal_text<N: Num, E>(
     n: &N,
     inexact: impl FnOnce() -> Result<String, E>,
 ) -> Result<String, E> {
+    if !N::EXACT {
+        return Ok(n.to_string());
+    }
+    if let Some((p, q)) = n.small_fraction() {
+        match small_decimal(p, q) {
+            Some(Some(text)) => return Ok(text),
+            Some(None) => return inexact(),
+            None => {}
+        }
+    }
     let Some((p, q)) = fraction(n) else {
         return Ok(n.to_string());
     };
     match terminating_scale(&q) {
-        Some(k) => Ok(scaled(&(p * ten_pow(k) / q), k)),
+        Some(k) => Ok(scaled(p * ten_pow(k) / q, k)),
         None => inexact(),
     }
+}
+
+/// The decimal text of the reduced fraction `p/q` (`q > 0`): `Some(None)` if its expansion
+/// does not terminate, `None` if `i128` cannot hold the scaled numerator.
+fn small_decimal(p: i64, q: i64) -> Option<Option<String>> {
+    let twos = q.trailing_zeros();
+    let mut rest = q >> twos;
+    let mut fives = 0;
+    while rest % 5 == 0 {
+        rest /= 5;
+        fives += 1;
+    }
+    if rest != 1 {
+        return Some(None);
+    }
+    // p/q = p·2^(k−twos)·5^(k−fives) / 10^k.
+    let k = twos.max(fives);
+    let factor = 2i128
+        .checked_pow(k - twos)?
+        .checked_mul(5i128.checked_pow(k - fives)?)?;
+    Some(Some(scaled(
+        i128::from(p).checked_mul(factor)?,
+        u64::from(k),
+    )))
 }
 
 /// `n` as a reduced fraction `p/q` with `q > 0`, read back from its `Display` text (a decimal
@@ -86,8 +122,9 @@ fn terminating_scale(q: &BigInt) -> Option<u64> {
     rest.is_one().then_some(twos.max(fives))
 }
 
-/// The decimal text of `m / 10^k`, without trailing zeros after the point.
-fn scaled(m: &BigInt, k: u64) -> String {
+/// The decimal text of `m / 10^k` (an integer type's `m`), without trailing zeros after the
+/// point.
+fn scaled<I: Signed + std::fmt::Display>(m: I, k: u64) -> String {
     let sign = if m.is_negative() { "-" } else { "" };
     let digits = m.abs().to_string();
     let k = k as usize;
@@ -140,6 +177,30 @@ mod tests {
         assert_eq!(with.as_deref(), Ok("-1/3"));
         assert!(without.unwrap_err().contains("no finite decimal expansion"));
         assert_eq!(texts(&q("1e400"))[1].as_ref().unwrap().len(), 401);
+    }
+
+    proptest::proptest! {
+        /// Fractions of machine integers (denominators 2^a·5^b·r, up to 2⁶²) read back from
+        /// their exact text as themselves: a plain decimal, without an exponent or trailing
+        /// zeros, where the expansion terminates (r = 1), `p/q` otherwise; on the `i128` path
+        /// and past it (2⁶¹·5¹⁰ overflows it).
+        #[test]
+        fn small_fractions_read_back_from_their_text(
+            p in -(1i64 << 61)..(1i64 << 61), a in 0u32..62, b in 0u32..27, r in 0usize..3,
+        ) {
+            let q = (BigInt::one() << a) * num_traits::pow(BigInt::from(5), b as usize)
+                * BigInt::from([1, 3, 7][r]);
+            let x = Rational::new(BigInt::from(p), q.min(BigInt::from(1i64 << 62)));
+            let text = exact_text(&x);
+            proptest::prop_assert_eq!(Rational::parse(&text).unwrap(), x.clone());
+            let (_, d) = x.fraction();
+            if terminating_scale(&d).is_some() {
+                proptest::prop_assert!(!text.contains(['/', 'e']), "{}", text);
+                proptest::prop_assert!(!text.contains('.') || !text.ends_with('0'), "{}", text);
+            } else {
+                proptest::prop_assert!(text.contains('/'), "{}", text);
+            }
+        }
     }
 
     #[test]
