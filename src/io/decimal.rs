@@ -1,9 +1,8 @@
 //! Number text for the writers of WKT, GeoJSON and OBJ: one rule for all of them
 //! ([`NumberStyle`]; the nearest `f64`s of the default style are `super::nearest`'s).
 
-use crate::num::{Literal, Num};
+use crate::num::Num;
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 /// How the OGC writers (WKT, GeoJSON) spell coordinates: the same rule for both.
@@ -57,9 +56,7 @@ fn decimal_text<N: Num, E>(
             None => {}
         }
     }
-    let Some((p, q)) = fraction(n) else {
-        return Ok(n.to_string());
-    };
+    let (p, q) = n.fraction();
     match terminating_scale(&q) {
         Some(k) => Ok(scaled(p * ten_pow(k) / q, k)),
         None => inexact(),
@@ -88,25 +85,6 @@ fn small_decimal(p: i64, q: i64) -> Option<Option<String>> {
         i128::from(p).checked_mul(factor)?,
         u64::from(k),
     )))
-}
-
-/// `n` as a reduced fraction `p/q` with `q > 0`, read back from its `Display` text (a decimal
-/// or `p/q` in every backend).
-fn fraction<N: Num>(n: &N) -> Option<(BigInt, BigInt)> {
-    let lit = Literal::parse(&n.to_string()).ok()?;
-    let mut p: BigInt = lit.digits.parse().ok()?;
-    let mut q: BigInt = lit.den.parse().ok()?;
-    let scale = ten_pow(lit.exp10.unsigned_abs());
-    if lit.exp10 >= 0 {
-        p *= scale;
-    } else {
-        q *= scale;
-    }
-    if lit.negative {
-        p = -p;
-    }
-    let g = p.gcd(&q);
-    Some((p / &g, q / g))
 }
 
 /// The least `k` with `q | 10^k`, if any (i.e. if `q` has no prime factor but 2 and 5).

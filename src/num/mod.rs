@@ -117,8 +117,8 @@ pub trait Num:
     /// The nearest `f64` (for output and rendering, never for exact decisions).
     fn to_f64(&self) -> f64;
 
-    /// The exact value as a numerator and a positive denominator (float backends: of the
-    /// `f64` value; panics if it is not finite).
+    /// The exact value as a numerator and a positive denominator in lowest terms (float
+    /// backends: of the `f64` value; panics if it is not finite).
     fn fraction(&self) -> (BigInt, BigInt);
 
     /// The exact value as a numerator and a positive denominator in lowest terms when both fit
