@@ -33,7 +33,7 @@ fn common_grid<'a, N: Num + 'a>(
     }
     for v in coordinates() {
         let (n, d) = v.small_fraction()?;
-        if n.checked_mul(l / d)?.abs() >= EXACT_INTEGERS {
+        if n.checked_mul(l / d)?.unsigned_abs() >= EXACT_INTEGERS.unsigned_abs() {
             return None;
         }
     }
@@ -199,6 +199,30 @@ mod tests {
             verdicts[usize::from(exact)] += 1;
         }
         assert!(verdicts.iter().all(|&n| n >= 40), "verdicts {verdicts:?}");
+    }
+
+    /// A corner of one triangle inside an edge of another, at 4/11 of it, the planes
+    /// crossing there: the two meet in that point, which `f64` arithmetic on the grid images
+    /// rounds apart (the constructed ends of the contact miss each other), so conformity must
+    /// be decided on the exact values either way.
+    #[test]
+    fn a_corner_inside_an_edge_is_no_conforming_contact() {
+        use crate::yin3::validate::conforming_after_moves;
+        let corners = [
+            [-57, 35, -165],
+            [88, 231, 187],
+            [209, 286, 297],
+            [-165, 11, -231],
+            [231, 99, 11],
+            [22, -275, -297],
+        ];
+        let points: Vec<Point3<Rational>> =
+            corners.iter().map(|&[x, y, z]| point(x, y, z, 1)).collect();
+        let tris = [[0, 1, 2], [3, 4, 5]];
+        let everything = [true; 6];
+        assert!(!conforming_after_moves(&points, &tris, &everything));
+        let images = on_grid(&points).expect("integers are on a grid");
+        assert!(!conforming_after_moves(&images, &tris, &everything));
     }
 
     /// Operands sharing a face, and operands off every grid of integers below 2⁵³, take the

@@ -166,7 +166,7 @@ fn classify<N: Num>(
                 .map(|t| (t, soup.corners(t))),
         )
     });
-    // Patches across edges off the other operand's boundary.
+    // Patches across edges that are no edge of the other operand's pieces.
     let mut edges: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
     for (i, (t, _)) in pieces.iter().enumerate() {
         for k in 0..3 {

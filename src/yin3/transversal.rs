@@ -1,5 +1,6 @@
 //! The meet of two float sets whose boundaries cross transversally (seed 004 steps 1–5 for the
-//! generic case; yin3 docs: *Float mode*): every pair of triangles of different operands
+//! generic case; yin3 docs: *Float mode*; exact sets on a common integer grid come here
+//! scaled to float sets, [`super::grid`]): every pair of triangles of different operands
 //! misses, crosses along a segment whose inside runs through both triangles' insides, or
 //! touches in a shared corner or edge ([`super::contact`]) — no vertex on an edge of the other,
 //! no edge on the other's plane. Then everything the general arrangement decides with

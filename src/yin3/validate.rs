@@ -5,7 +5,7 @@
 
 use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::{Spot, Yin3Error};
-use super::float::{exact_points, rounded_brep};
+use super::float::{exact_point, exact_points, rounded_brep};
 use super::geom::{collinear, normal, widened_box, Chart};
 use super::grid::on_grid;
 use super::locate::{ray_box, winding};
@@ -141,7 +141,7 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// neighbours across its edges). Decided by exact orientations of the points' values — for
 /// float points first by either triangle's plane ([`off_plane_but_shared`]), then on images
 /// in a coordinate plane; a pair without a shared vertex that they cannot tell apart is
-/// intersected exactly, as the validator would; other pairs they cannot tell make it false,
+/// intersected exactly on its rational values, as the validator would; other pairs they cannot tell make it false,
 /// and then the caller validates in full. Every other pair meets as it did. The pairs come
 /// from [`MeetingBoxes`], on rayon's threads from [`PARALLEL_FROM`] triangles.
 pub(crate) fn conforming_after_moves<N: Num>(
@@ -176,7 +176,15 @@ pub(crate) fn conforming_after_moves<N: Num>(
             shared_only(points, t, s, exact).is_some()
         } else {
             let (t, s) = (t.map(|v| &points[v]), s.map(|v| &points[v]));
-            apart(t, s, exact) || intersect(t, s, exact).is_none()
+            // A float backend's pair is intersected on its exact values: its own arithmetic
+            // would round the constructed ends of a contact, which could then miss each other.
+            apart(t, s, exact)
+                || if N::EXACT {
+                    intersect(t, s, exact).is_none()
+                } else {
+                    let (t, s) = (t.map(exact_point), s.map(exact_point));
+                    intersect(t.each_ref(), s.each_ref(), &()).is_none()
+                }
         }
     };
     let boxes: Vec<AABB<[f64; 3]>> = (tris.iter())
