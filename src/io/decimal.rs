@@ -161,7 +161,7 @@ mod tests {
         /// Fractions of machine integers (denominators 2^a·5^b·r, up to 2⁶²) read back from
         /// their exact text as themselves: a plain decimal, without an exponent or trailing
         /// zeros, where the expansion terminates (r = 1), `p/q` otherwise; on the `i128` path
-        /// and past it (2⁶¹·5¹⁰ overflows it).
+        /// and past it (the denominator 2⁶¹ needs the factor 5⁶¹, which overflows it).
         #[test]
         fn small_fractions_read_back_from_their_text(
             p in -(1i64 << 61)..(1i64 << 61), a in 0u32..62, b in 0u32..27, r in 0usize..3,

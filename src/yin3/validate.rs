@@ -141,8 +141,8 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// neighbours across its edges). Decided by exact orientations of the points' values — for
 /// float points first by either triangle's plane ([`off_plane_but_shared`]), then on images
 /// in a coordinate plane; a pair without a shared vertex that they cannot tell apart is
-/// intersected exactly on its rational values, as the validator would; other pairs they cannot tell make it false,
-/// and then the caller validates in full. Every other pair meets as it did. The pairs come
+/// intersected exactly on its rational values, as the validator would; other pairs they
+/// cannot tell make it false, and then the caller validates in full. Every other pair meets as it did. The pairs come
 /// from [`MeetingBoxes`], on rayon's threads from [`PARALLEL_FROM`] triangles.
 pub(crate) fn conforming_after_moves<N: Num>(
     points: &[Point3<N>],
