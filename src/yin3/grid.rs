@@ -43,11 +43,11 @@ fn common_grid<'a, N: Num + 'a>(
 /// The point `p` times `l`, a float point (every coordinate of `p` times `l` an integer below
 /// 2⁵³).
 fn scale<N: Num>(p: &Point3<N>, l: i64) -> Point3<Float> {
-    let scale = |v: &N| {
+    let times_l = |v: &N| {
         let (n, d) = v.small_fraction().expect("a coordinate on the common grid");
         Float::new((n * (l / d)) as f64)
     };
-    Point3::new(scale(&p.x), scale(&p.y), scale(&p.z))
+    Point3::new(times_l(&p.x), times_l(&p.y), times_l(&p.z))
 }
 
 /// The points scaled to their common integer grid (module docs), as float points with the

@@ -15,6 +15,7 @@ use crate::kernel::{orient, Point3};
 use crate::num::Num;
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt};
+use std::cell::OnceCell;
 use std::cmp::Ordering;
 
 /// Where a piece of one operand lies relative to the other operand.
@@ -190,14 +191,18 @@ fn classify<N: Num>(
             off_vertex.entry(uf.find(i)).or_insert(v);
         }
     }
+    // The chart of each parent with overlaps, made once (counterclockwise for the parent).
+    let charts: Vec<OnceCell<Chart>> = vec![OnceCell::new(); soup.tris.len()];
     // The side of piece `t` of `parent` if it lies in a triangle overlapping its parent.
     let on_overlap = |t: &[usize; 3], parent: usize| -> Option<Side> {
         let overlaps = &arrangement.coplanar[parent];
         if overlaps.is_empty() || !t.iter().all(|&v| contact[v]) {
             return None;
         }
-        let [a, b, c] = soup.corners(parent);
-        let ch = Chart::of_triangle(a, b, c);
+        let ch = charts[parent].get_or_init(|| {
+            let [a, b, c] = soup.corners(parent);
+            Chart::of_triangle(a, b, c)
+        });
         let image = t.map(|v| ch.project(&soup.points[v]));
         overlaps.iter().find_map(|&s| {
             let mut other = soup.tris[s].map(|v| ch.project(&soup.points[v]));
