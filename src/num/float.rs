@@ -525,6 +525,10 @@ impl Num for Float {
             .fraction()
     }
 
+    fn rational(&self) -> Rational {
+        Rational::from_f64(self.0).expect("float sets have finite coordinates")
+    }
+
     fn sign(&self) -> Ordering {
         self.0.total_cmp(&0.0)
     }

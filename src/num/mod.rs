@@ -121,6 +121,13 @@ pub trait Num:
     /// backends: of the `f64` value; panics if it is not finite).
     fn fraction(&self) -> (BigInt, BigInt);
 
+    /// The exact value as a [`Rational`] (float backends: of the `f64` value; panics if it is
+    /// not finite). Default: from [`Num::fraction`].
+    fn rational(&self) -> Rational {
+        let (n, d) = self.fraction();
+        Rational::new(n, d)
+    }
+
     /// The exact value as a numerator and a positive denominator in lowest terms when both fit
     /// in an `i64`, else `None`. Default: from [`Num::fraction`].
     fn small_fraction(&self) -> Option<(i64, i64)> {

@@ -643,6 +643,10 @@ impl Num for Rational {
         (self.numer(), self.denom())
     }
 
+    fn rational(&self) -> Rational {
+        self.clone()
+    }
+
     fn to_f64(&self) -> f64 {
         // At most 53 significant bits: exact as an f64 (every dyadic value read from an f64,
         // whatever its power-of-two denominator, is such a pair).

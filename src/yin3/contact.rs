@@ -1,5 +1,5 @@
-//! How two triangles of different float operands meet, decided from exact orientations of their
-//! `f64` corners (seed 004 step 1 for the cases [`super::transversal`] constructs without the
+//! How two triangles of different operands meet, decided from exact orientations of their
+//! corners ([`super::corners`]; seed 004 step 1 for the cases [`super::transversal`] constructs without the
 //! general arrangement). Where two triangles cross, each meets the line of the two planes in a
 //! segment — from one straddling edge's pierce point to the other's, or from a shared corner
 //! or a vertex on the other's plane to the opposite edge's — and the triangles meet in the
@@ -8,9 +8,10 @@
 //! (an edge of one operand through an edge of the other, or the shared corner), and is named
 //! by what defines it, so that every pair that finds it finds the same point.
 
+use super::corners::Corners;
 use super::tri::{self, apart_across, corners_after, meet_only_at_given};
 use crate::kernel::Point3;
-use crate::num::{exact_orient3d_f64, Num, PlaneF64};
+use crate::num::Num;
 use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering::{self, Equal};
 
@@ -33,7 +34,7 @@ pub(super) enum End {
 }
 
 /// How two triangles of different operands meet.
-#[derive(Debug)]
+#[derive(Debug, PartialEq)]
 pub(super) enum Contact {
     /// Disjoint.
     Apart,
@@ -54,7 +55,7 @@ pub(super) fn key(u: usize, v: usize) -> Edge {
     (u.min(v), u.max(v))
 }
 
-/// How triangles `t` (operand 0) and `s` (operand 1) meet, as indices into `p`, the `f64`
+/// How triangles `t` (operand 0) and `s` (operand 1) meet, as indices into `p`, the exact
 /// values of `corners`, with their global indices `ti`, `si` and their planes (t's, then
 /// s's).
 /// Triangles with a vertex on the other's plane go to [`touch`]. Else each plane must separate
@@ -64,18 +65,18 @@ pub(super) fn key(u: usize, v: usize) -> Edge {
 /// up to the side of f₁, whether f's pierce point lies left of e (inside e's triangle), on it
 /// (the edges cross: [`End::Edges`]) or right of it. The same sign serves with the triangles'
 /// roles swapped (the permutation is even), so four orientations settle the overlap.
-pub(super) fn contact<N: Num>(
-    p: &[[f64; 3]],
-    [t_plane, s_plane]: [&PlaneF64; 2],
+pub(super) fn contact<N: Num, C: Corners>(
+    p: &C,
+    [t_plane, s_plane]: [&C::Plane; 2],
     corners: &[&Point3<N>],
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
 ) -> Contact {
-    let s_sides = s.map(|v| t_plane.side(p[v]));
+    let s_sides = s.map(|v| p.side(t_plane, v));
     if one_side(&s_sides) {
         return Contact::Apart;
     }
-    let t_sides = t.map(|v| s_plane.side(p[v]));
+    let t_sides = t.map(|v| p.side(s_plane, v));
     if one_side(&t_sides) {
         return Contact::Apart;
     }
@@ -83,7 +84,7 @@ pub(super) fn contact<N: Num>(
         return touch(p, corners, (ti, t), (si, s), [&s_sides, &t_sides]);
     }
     let (te, se) = (straddling(t, &t_sides), straddling(s, &s_sides));
-    let sign = te.map(|(e, _)| se.map(|(f, _)| exact_orient3d_f64(p[e.0], p[e.1], p[f.0], p[f.1])));
+    let sign = te.map(|(e, _)| se.map(|(f, _)| p.orient3d([e.0, e.1, f.0, f.1])));
     let mut ends: SmallVec<[End; 4]> = SmallVec::new();
     for (j, &(f, side)) in se.iter().enumerate() {
         if sign.iter().all(|row| row[j] == side) {
@@ -113,8 +114,8 @@ pub(super) fn contact<N: Num>(
 /// where they share no corner, else as [`on_plane`] finds; a touch in one shared corner or one
 /// shared edge; crossing from one shared corner where both triangles' other corners straddle
 /// the other's plane ([`through_corner`]); else degenerate.
-fn touch<N: Num>(
-    p: &[[f64; 3]],
+fn touch<N: Num, C: Corners>(
+    p: &C,
     corners: &[&Point3<N>],
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
@@ -126,7 +127,7 @@ fn touch<N: Num>(
     let mut n = 0;
     for x in t {
         for y in s {
-            if n < 3 && p[x] == p[y] {
+            if n < 3 && p.same(x, y) {
                 shared[n] = Some([x, y]);
                 n += 1;
             }
@@ -181,7 +182,7 @@ fn touch<N: Num>(
 /// and they cross from the corner to the nearer of the two — by the sign of orient3d of the
 /// opposite edges, as in [`contact`]. Else degenerate.
 fn through_corner(
-    p: &[[f64; 3]],
+    p: &impl Corners,
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
     [x, y]: [usize; 2],
@@ -192,7 +193,7 @@ fn through_corner(
         return Contact::Degenerate;
     }
     let ([a, b], [c, d]) = (corners_after(t, x), corners_after(s, y));
-    let far = match exact_orient3d_f64(p[a], p[b], p[c], p[d]) {
+    let far = match p.orient3d([a, b, c, d]) {
         Equal => End::Edges(key(a, b), key(c, d), si),
         o if o == sd => End::Pierce(key(c, d), ti),
         _ => End::Pierce(key(a, b), si),
@@ -210,7 +211,7 @@ fn through_corner(
 /// the overlap are the ends of either strictly inside the other and those crossing edges; a
 /// vertex on an edge of the other, or an edge through a vertex, is degenerate.
 fn on_plane(
-    p: &[[f64; 3]],
+    p: &impl Corners,
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
     [s_sides, t_sides]: [&[Ordering; 3]; 2],
@@ -224,7 +225,7 @@ fn on_plane(
         for &(end, (f0, f1), side) in mine {
             let signs = [0, 1, 2].map(|k| {
                 let (e0, e1) = (host[k], host[(k + 1) % 3]);
-                exact_orient3d_f64(p[e0], p[e1], p[f0], p[f1])
+                p.orient3d([e0, e1, f0, f1])
             });
             let on: SmallVec<[usize; 3]> = (0..3).filter(|&k| signs[k] == Equal).collect();
             if signs.iter().any(|&o| o != Equal && o != side) {
@@ -311,6 +312,8 @@ fn straddling(tri: [usize; 3], sides: &[Ordering; 3]) -> [((usize, usize), Order
 mod tests {
     use super::*;
     use crate::num::Float;
+    use crate::yin3::corners::{F64Corners, RationalCorners};
+    use crate::yin3::float::exact_point;
 
     /// The contact of two triangles given by their corners (points 0–2 and 3–5, triangles 0
     /// and 1).
@@ -322,8 +325,15 @@ mod tests {
             .map(|[x, y, z]| Point3::new(x, y, z))
             .collect();
         let corners: Vec<&Point3<Float>> = points.iter().collect();
-        let [a, b] = [t, s].map(|[u, v, w]| PlaneF64::new(u, v, w));
-        contact(&p, [&a, &b], &corners, (0, [0, 1, 2]), (1, [3, 4, 5]))
+        let (t, s) = ((0, [0, 1, 2]), (1, [3, 4, 5]));
+        let f64s = F64Corners(p);
+        let [a, b] = [t.1, s.1].map(|tri| f64s.plane(tri));
+        let on_f64s = contact(&f64s, [&a, &b], &corners, t, s);
+        // The same contact on the points' exact rationals.
+        let rationals = RationalCorners(points.iter().map(exact_point).collect());
+        let on_rationals = contact(&rationals, [&t.1, &s.1], &corners, t, s);
+        assert_eq!(on_f64s, on_rationals);
+        on_f64s
     }
 
     /// Triangles sharing a corner or an edge touch only where they meet in nothing else:

@@ -55,10 +55,9 @@ pub(crate) fn rounded_exact<N: Num>(
     rounded_set(op(&exact_set(a), &exact_set(b)), ctx)
 }
 
-/// The exact value of a float vertex.
+/// The exact value of a vertex ([`Num::rational`]).
 pub(crate) fn exact_point<N: Num>(p: &Point3<N>) -> Point3<Rational> {
-    let r = |v: &N| Rational::from_f64(v.to_f64()).expect("float sets have finite coordinates");
-    Point3::new(r(&p.x), r(&p.y), r(&p.z))
+    Point3::new(p.x.rational(), p.y.rational(), p.z.rational())
 }
 
 /// The exact values of a float set's vertices.

@@ -155,10 +155,18 @@ impl Chart {
     /// points rounded to `f64`, its signs the exact orientations of the projections, so that
     /// no coordinate is constructed.
     pub(crate) fn of_triangle<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> Chart {
-        let sign = |k: usize| projected_orient(a, b, c, k);
         // A degenerate triangle, which callers exclude, gets the chart of a zero normal.
+        Chart::checked_of_triangle(a, b, c).unwrap_or(Chart::of_axis(0, Ordering::Equal))
+    }
+
+    /// [`Chart::of_triangle`], or `None` if the triangle is degenerate.
+    pub(crate) fn checked_of_triangle<N: Num>(
+        a: &Point3<N>,
+        b: &Point3<N>,
+        c: &Point3<N>,
+    ) -> Option<Chart> {
+        let sign = |k: usize| projected_orient(a, b, c, k);
         Chart::of_signed_axes(normal_sizes([a, b, c].map(|p| p.to_f64())), sign)
-            .unwrap_or(Chart::of_axis(0, Ordering::Equal))
     }
 
     /// The image of `p`.

@@ -75,10 +75,12 @@
 //!   and the surfaces and Hasse diagram are rebuilt, since surfaces regroup.
 //! * **Meet**: triangle–triangle, re-triangulation, selection, glued surfaces and the Hasse
 //!   diagram in turn, with shortcuts for 0̂, 1̂ and disjoint boxes. Join by De Morgan (Def. 4.10).
-//!   Exact operands whose coordinates, times one integer L (the lcm of their denominators), are
-//!   integers below 2⁵³ — decimal files of a few places, lattices — are scaled to that grid and
-//!   met by float mode's construction-light meet (*Float mode*, *How the exact result is
-//!   found*) wherever it applies; its vertices divided by L are the exact meet's.
+//!   Exact operands are met by float mode's construction-light meet (*Float mode*, *How the
+//!   exact result is found*) wherever it applies: where their coordinates, times one integer L
+//!   (the lcm of their denominators), are integers below 2⁵³ — decimal files of a few places,
+//!   lattices — scaled to that grid, its vertices divided by L; otherwise on their rationals,
+//!   with the same tests on filtered rational orientations and each pierce point constructed
+//!   on the integers of its five corners over their common denominator.
 //! * **Locate**: a point is on the boundary iff it lies in a closed triangle; otherwise the ray
 //!   q + t(1, 0, 0), t > 0, symbolically perturbed to q + (0, ε, ε²), counts the signs of the
 //!   normals' x components of the triangles it crosses (a tie on a projected edge a → b takes
@@ -160,6 +162,7 @@ mod betti;
 mod canonical;
 mod complement;
 mod contact;
+mod corners;
 mod error;
 mod fins;
 mod float;

@@ -8,6 +8,7 @@ use super::link::{cross, dot, Scalar, Vector};
 use crate::kernel::Point3;
 use crate::num::{common_grid, from_words, gcd_u128, Num, Rational};
 use num_bigint::{BigInt, Sign};
+use num_integer::Integer;
 use ruint::aliases::U256;
 use ruint::Uint;
 use std::cmp::Ordering;
@@ -117,6 +118,56 @@ pub(super) fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) ->
         }
     };
     Point3::new(x, y, z)
+}
+
+/// [`pierce`] for exact rational corners `[U, V, A, B, C]`: their coordinates as integers
+/// over their least common denominator L (in `i64`s on the stack where L and the integers fit,
+/// big integers otherwise), the section point on those integers, divided by L.
+pub(super) fn pierce_rational(corners: [&Point3<Rational>; 5]) -> Point3<Rational> {
+    let coords: [&Rational; 15] = std::array::from_fn(|k| corners[k / 3].coord(k % 3));
+    let (xyz, l) = match small_grid(coords) {
+        Some((ints, l)) => {
+            let parts = ints.map(|m| (m, 0));
+            let xyz = match width(&parts) {
+                w if w <= narrow(256) => on_stack::<256, 4>(parts, 0),
+                _ => on_stack::<384, 6>(parts, 0),
+            };
+            (xyz, Rational::from_i64(l))
+        }
+        None => {
+            let fractions = coords.map(|v| v.fraction());
+            let l = (fractions.iter()).fold(BigInt::from(1), |l, (_, d)| l.lcm(d));
+            let ints = fractions.map(|(n, d)| n * (&l / d));
+            let [pu, pv, a, b, c] = points(ints);
+            let (du, dv) = plane_values([&pu, &pv], [a, b, c]);
+            (
+                Rational::section_point(&du, &dv, [&pu, &pv], 0),
+                Rational::from_integer(l),
+            )
+        }
+    };
+    let [x, y, z] = xyz.map(|v| v / l.clone());
+    Point3::new(x, y, z)
+}
+
+/// The values as integers over their least common denominator L, with L, if L and every
+/// integer fit an `i64`.
+fn small_grid(values: [&Rational; 15]) -> Option<([i64; 15], i64)> {
+    let mut fractions = [(0i64, 1i64); 15];
+    for (f, v) in fractions.iter_mut().zip(values) {
+        *f = v.small_fraction()?;
+    }
+    let mut l: i64 = 1;
+    for &(_, d) in &fractions {
+        if l % d != 0 {
+            l = (l / gcd::binary_u64(l as u64, d as u64) as i64).checked_mul(d)?;
+        }
+    }
+    let mut ints = [0i64; 15];
+    for (i, &(n, d)) in ints.iter_mut().zip(&fractions) {
+        *i = n.checked_mul(l / d)?;
+    }
+    Some((ints, l))
 }
 
 /// The width in bits of the widest of the grid integers m·2^shift (a zero has m = 0 and shift
@@ -261,7 +312,11 @@ mod tests {
     /// The pierce point by rational arithmetic on the corners' exact values, independent of
     /// the grid and the gcd shortcuts: U + t·(V − U), t = du / (du − dv).
     fn oracle(p: &[[f64; 3]; 5]) -> [Rational; 3] {
-        let q = p.map(|x| x.map(|c| Rational::from_float(c).expect("finite")));
+        rational_oracle(p.map(|x| x.map(|c| Rational::from_float(c).expect("finite"))))
+    }
+
+    /// [`oracle`] on rational corners.
+    fn rational_oracle(q: [[Rational; 3]; 5]) -> [Rational; 3] {
         let sub =
             |x: &[Rational; 3], y: &[Rational; 3]| [0, 1, 2].map(|k| x[k].clone() - y[k].clone());
         let (e, f) = (sub(&q[3], &q[2]), sub(&q[4], &q[2]));
@@ -346,6 +401,44 @@ mod tests {
             near_bounds.iter().all(|&n| n > 30),
             "grids at the bounds: {near_bounds:?}"
         );
+    }
+
+    /// Rational corners whose coordinates share small denominators (integers over a common
+    /// denominator below 2⁶³: the stack path), denominators of about 40 bits whose lcm passes
+    /// 2⁶³, or numerators near 2⁶² (big integers): the pierce point is the rational
+    /// construction's, wherever the edge's ends lie on opposite sides of the plane.
+    #[test]
+    fn rational_pierce_points_are_the_rational_construction() {
+        let mut rng = StdRng::seed_from_u64(17);
+        let mut seen = [0usize; 2];
+        for round in 0..3000 {
+            let (denominators, top): (&[i64], i64) = match round % 3 {
+                0 => (&[1, 3, 10, 1000, 3 << 10], 1 << 20),
+                1 => (&[1_099_511_627_791, 1_099_511_627_689, 7], 1 << 41),
+                _ => (&[1, 5], 1 << 62),
+            };
+            let mut coordinate = || {
+                let d = denominators[rng.random_range(0..denominators.len())];
+                Rational::new(BigInt::from(rng.random_range(-top..top)), BigInt::from(d))
+            };
+            let q: [[Rational; 3]; 5] =
+                std::array::from_fn(|_| std::array::from_fn(|_| coordinate()));
+            let side = |x: &[Rational; 3]| {
+                let [a, b, c] = [&q[2], &q[3], &q[4]].map(|p| p.each_ref());
+                Rational::orient3d(a, b, c, x.each_ref(), &())
+            };
+            let (su, sv) = (side(&q[0]), side(&q[1]));
+            if su == Ordering::Equal || sv == Ordering::Equal || su == sv {
+                continue;
+            }
+            let points = q.clone().map(|[x, y, z]| Point3::new(x, y, z));
+            let coords = std::array::from_fn(|k| points[k / 3].coord(k % 3));
+            seen[usize::from(small_grid(coords).is_none())] += 1;
+            let got = pierce_rational(points.each_ref());
+            let [x, y, z] = rational_oracle(q);
+            assert_eq!(got, Point3::new(x, y, z), "corners {points:?}");
+        }
+        assert!(seen.iter().all(|&n| n > 300), "paths taken: {seen:?}");
     }
 
     /// Corners one bit past each stack path's bound (63 and 95 bits) whose section numerators

@@ -34,14 +34,13 @@
 
 use super::arrange::retriangulate;
 use super::contact::{contact, key, Contact, Edge, End};
+use super::corners::{Corners, F64Corners, RationalCorners};
 use super::fins::Fin;
 use super::float::{exact_point, exact_points};
-use super::geom::Chart;
 use super::locate::{ray_box, winding, TriBoxes};
-use super::pierce::pierce;
 use super::set::{compact, Brep};
 use crate::kernel::Point3;
-use crate::num::{Num, PlaneF64, Rational};
+use crate::num::{Num, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use rayon::prelude::*;
@@ -211,29 +210,27 @@ impl Transversal {
     }
 }
 
-/// The exact meet of the float boundaries `a` and `b` (bounded or not) if they cross
-/// transversally, touch in shared corners and edges only, or do not meet (module docs); `None`
-/// otherwise.
+/// The exact meet of the boundaries `a` and `b` (bounded or not) if they cross transversally,
+/// touch in shared corners and edges only, or do not meet (module docs); `None` otherwise.
+/// Float points are read as `f64`s, exact ones as rationals ([`super::corners`]).
 pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Transversal> {
-    debug_assert!(
-        !N::EXACT,
-        "the f64 boxes and contact tests read float points exactly"
-    );
+    let all = || a.points.iter().chain(&b.points);
+    if N::EXACT {
+        meet_on(a, b, &RationalCorners(all().map(exact_point).collect()))
+    } else {
+        meet_on(a, b, &F64Corners(all().map(|p| p.to_f64()).collect()))
+    }
+}
+
+/// [`transversal_meet`] with the exact predicates and constructions of `p`, the vertices of
+/// `a` then those of `b`.
+fn meet_on<N: Num, C: Corners>(a: &Brep<N>, b: &Brep<N>, p: &C) -> Option<Transversal> {
     let na = a.points.len();
-    let f64s: Vec<[f64; 3]> = a
-        .points
-        .iter()
-        .chain(&b.points)
-        .map(|p| p.to_f64())
-        .collect();
     let mut tris: Vec<[usize; 3]> = a.tris.clone();
     tris.extend(b.tris.iter().map(|t| t.map(|v| v + na)));
     let first_b = a.tris.len();
     let corners: Vec<&Point3<N>> = a.points.iter().chain(&b.points).collect();
-    let boxes: Vec<AABB<[f64; 3]>> = tris
-        .iter()
-        .map(|t| AABB::from_points(t.map(|v| &f64s[v])))
-        .collect();
+    let boxes: Vec<AABB<[f64; 3]>> = tris.iter().map(|&t| p.bbox(t)).collect();
     let (near_a, near_b) = near(&boxes, first_b);
     // The R-tree holds the operand with fewer near triangles (by their place in `indexed`), the
     // other's query it.
@@ -249,8 +246,8 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     );
     // Each indexed triangle's plane (the operand with fewer near triangles), and a querying
     // triangle's once it meets a box.
-    let plane = |t: usize| PlaneF64::of_triangle(&f64s, tris[t]);
-    let planes: Vec<PlaneF64> = indexed.iter().map(|&t| plane(t)).collect();
+    let plane = |t: usize| p.plane(tris[t]);
+    let planes: Vec<C::Plane> = indexed.iter().map(|&t| plane(t)).collect();
     // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
     // ends it.
     // The crossing and the touching pairs found so far, to which `search` adds those of the
@@ -265,7 +262,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
                 true => (g, q, [&planes[k], own]),
                 false => (q, g, [own, &planes[k]]),
             };
-            match contact(&f64s, both, &corners, (t, tris[t]), (s, tris[s])) {
+            match contact(p, both, &corners, (t, tris[t]), (s, tris[s])) {
                 Contact::Apart => {}
                 Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
@@ -352,7 +349,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
     let mut points = Vec::with_capacity(corners.len() + made.len());
     points.resize(corners.len(), Point3::int(0, 0, 0));
     points.extend(map_all(&made, parallel, |&(edge, tri)| {
-        pierce(&f64s, edge, tris[tri])
+        p.pierce(edge, tris[tri])
     }));
     // Every triangle with points on it, re-triangulated: the pierce points of its edges lie
     // inside those sides, the others inside it.
@@ -393,7 +390,7 @@ pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Trans
         make_exact(&mut points, &mut used);
     }
     let parts: Vec<Vec<[usize; 3]>> = map_all(&cut, parallel, |&t| {
-        let chart = Chart::of_f64_triangle(tris[t].map(|v| f64s[v]))?;
+        let chart = p.chart(tris[t])?;
         let extra = extra[t].iter().copied();
         retriangulate(&points, tris[t], chart, sides(t), extra, &cuts[t], &()).ok()
     })
@@ -1067,15 +1064,13 @@ mod tests {
     fn crossing_kinds(a: &YinSet3<Float>, b: &YinSet3<Float>) -> [bool; 5] {
         let (x, y) = (a.brep().unwrap(), b.brep().unwrap());
         let points: Vec<Point3<Float>> = x.points.iter().chain(&y.points).cloned().collect();
-        let p: Vec<[f64; 3]> = points.iter().map(|q| q.to_f64()).collect();
+        let p = F64Corners(points.iter().map(|q| q.to_f64()).collect());
         let corners: Vec<&Point3<Float>> = points.iter().collect();
         let n = x.points.len();
         let tris: Vec<[usize; 3]> = (x.tris.iter().copied())
             .chain(y.tris.iter().map(|t| t.map(|v| v + n)))
             .collect();
-        let planes: Vec<PlaneF64> = (tris.iter())
-            .map(|&t| PlaneF64::of_triangle(&p, t))
-            .collect();
+        let planes: Vec<_> = tris.iter().map(|&t| p.plane(t)).collect();
         let (mut kinds, mut edge_touch, mut cross) = ([false; 5], false, false);
         for t in 0..x.tris.len() {
             for s in x.tris.len()..tris.len() {

@@ -1,0 +1,112 @@
+//! The input vertices of the transversal meet ([`super::transversal`]) with the exact tests and
+//! constructions it makes on them: `f64` values (float sets, and exact sets scaled to a common
+//! integer grid) on static filters and stack integers, or the exact rationals of any other
+//! exact set on their own filtered predicates.
+
+use super::geom::{f64_box, Chart};
+use super::pierce::{pierce, pierce_rational};
+use crate::kernel::{orient3d, Point3};
+use crate::num::{exact_orient3d_f64, PlaneF64, Rational};
+use rstar::AABB;
+use std::cmp::Ordering;
+
+/// Input vertices by index, with exact predicates on them and the exact points they define.
+pub(super) trait Corners: Sync {
+    /// The plane of a triangle, prepared for many side tests.
+    type Plane: Send + Sync;
+
+    /// True if vertices `x` and `y` are the same point.
+    fn same(&self, x: usize, y: usize) -> bool;
+
+    /// The sign of det[b − a, c − a, d − a] for the vertices `[a, b, c, d]`.
+    fn orient3d(&self, v: [usize; 4]) -> Ordering;
+
+    /// The plane of the triangle `t`.
+    fn plane(&self, t: [usize; 3]) -> Self::Plane;
+
+    /// [`Corners::orient3d`] of the plane's triangle and the vertex `d`.
+    fn side(&self, plane: &Self::Plane, d: usize) -> Ordering;
+
+    /// An `f64` box holding the triangle `t`.
+    fn bbox(&self, t: [usize; 3]) -> AABB<[f64; 3]>;
+
+    /// The point where the edge `(u, v)` pierces the plane of the triangle `tri` (u and v
+    /// strictly on either side), the same whichever triangle of the edge asks.
+    fn pierce(&self, edge: (usize, usize), tri: [usize; 3]) -> Point3<Rational>;
+
+    /// The chart in which the triangle `t` is counterclockwise; `None` if it is degenerate.
+    fn chart(&self, t: [usize; 3]) -> Option<Chart>;
+}
+
+/// Vertices that are `f64` points, read exactly.
+pub(super) struct F64Corners(pub Vec<[f64; 3]>);
+
+impl Corners for F64Corners {
+    type Plane = PlaneF64;
+
+    fn same(&self, x: usize, y: usize) -> bool {
+        self.0[x] == self.0[y]
+    }
+
+    fn orient3d(&self, [a, b, c, d]: [usize; 4]) -> Ordering {
+        let p = &self.0;
+        exact_orient3d_f64(p[a], p[b], p[c], p[d])
+    }
+
+    fn plane(&self, t: [usize; 3]) -> PlaneF64 {
+        PlaneF64::of_triangle(&self.0, t)
+    }
+
+    fn side(&self, plane: &PlaneF64, d: usize) -> Ordering {
+        plane.side(self.0[d])
+    }
+
+    fn bbox(&self, t: [usize; 3]) -> AABB<[f64; 3]> {
+        AABB::from_points(t.map(|v| &self.0[v]))
+    }
+
+    fn pierce(&self, edge: (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
+        pierce(&self.0, edge, tri)
+    }
+
+    fn chart(&self, t: [usize; 3]) -> Option<Chart> {
+        Chart::of_f64_triangle(t.map(|v| self.0[v]))
+    }
+}
+
+/// Vertices that are exact rationals.
+pub(super) struct RationalCorners(pub Vec<Point3<Rational>>);
+
+impl Corners for RationalCorners {
+    type Plane = [usize; 3];
+
+    fn same(&self, x: usize, y: usize) -> bool {
+        self.0[x] == self.0[y]
+    }
+
+    fn orient3d(&self, [a, b, c, d]: [usize; 4]) -> Ordering {
+        let p = &self.0;
+        orient3d(&p[a], &p[b], &p[c], &p[d], &())
+    }
+
+    fn plane(&self, t: [usize; 3]) -> [usize; 3] {
+        t
+    }
+
+    fn side(&self, &[a, b, c]: &[usize; 3], d: usize) -> Ordering {
+        self.orient3d([a, b, c, d])
+    }
+
+    fn bbox(&self, t: [usize; 3]) -> AABB<[f64; 3]> {
+        f64_box(t.map(|v| &self.0[v]))
+    }
+
+    fn pierce(&self, (u, v): (usize, usize), [a, b, c]: [usize; 3]) -> Point3<Rational> {
+        pierce_rational([u, v, a, b, c].map(|i| &self.0[i]))
+    }
+
+    fn chart(&self, t: [usize; 3]) -> Option<Chart> {
+        let [a, b, c] = t.map(|v| &self.0[v]);
+        Chart::checked_of_triangle(a, b, c)
+    }
+}
