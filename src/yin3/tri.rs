@@ -4,7 +4,7 @@
 
 use super::geom::{dominant_axis, in_triangle2, normal, Chart};
 use crate::kernel::{classify, orient, orient3d, Contact, Point, Point3};
-use crate::num::{Num, PlaneF64};
+use crate::num::Num;
 use std::cmp::Ordering;
 
 /// How two closed triangles `t` and `s` meet.
@@ -286,25 +286,24 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
     }
 }
 
-/// True if the triangle `s` meets the triangle `t` (corners in `points`, `f64`s exactly)
-/// only in their shared corners because its other corners lie strictly on one side of the
-/// plane of `t` (`plane`), where the static filter is certain of it
-/// ([`PlaneF64::certain_side`]): `s` then meets that plane only in the shared corners.
-/// False where it cannot tell, and for a triangle with all three corners shared.
+/// True if the triangle `s` meets the triangle `t` only in their shared corners because its
+/// other corners lie strictly on one side of the plane of `t`, where `side` (the side of a
+/// vertex, or `None` where a filter cannot tell) is certain of it: `s` then meets that plane
+/// only in the shared corners. False where it cannot tell, and for a triangle with all three
+/// corners shared.
 pub(crate) fn off_plane_but_shared(
-    plane: &PlaneF64,
-    points: &[[f64; 3]],
     t: [usize; 3],
     s: [usize; 3],
+    side: impl Fn(usize) -> Option<Ordering>,
 ) -> bool {
-    let mut side = None;
+    let mut first = None;
     for v in s.into_iter().filter(|v| !t.contains(v)) {
-        match plane.certain_side(points[v]) {
-            Some(x) if side.is_none_or(|y| y == x) => side = Some(x),
+        match side(v) {
+            Some(x) if first.is_none_or(|y| y == x) => first = Some(x),
             _ => return false,
         }
     }
-    side.is_some()
+    first.is_some()
 }
 
 /// True if no ray from `v` through a point of `rays` (points of the plane of the triangle
@@ -472,7 +471,7 @@ fn coplanar<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N::Ctx) -> Opt
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::Rational;
+    use crate::num::{filtered_orient3d, PlaneF64, Rational};
     use crate::yin3::geom::collinear;
 
     fn p(x: i64, y: i64, z: i64) -> Point3<Rational> {
@@ -697,7 +696,10 @@ mod tests {
             proptest::prop_assume!((0..6).all(|i| (0..i).all(|j| q[i] != q[j])));
             let f64s: Vec<[f64; 3]> = q.iter().map(|v| v.to_f64()).collect();
             let plane = PlaneF64::new(f64s[0], f64s[1], f64s[2]);
-            let said = off_plane_but_shared(&plane, &f64s, t, s);
+            let said = off_plane_but_shared(t, s, |v| plane.certain_side(f64s[v]));
+            // The semi-static filter on the same values says the same.
+            let filtered = |v: usize| filtered_orient3d(f64s[0], f64s[1], f64s[2], f64s[v]);
+            proptest::prop_assert_eq!(off_plane_but_shared(t, s, filtered), said);
             let sides: Vec<Ordering> = (3..6)
                 .filter(|v| s.contains(v))
                 .map(|v| orient3d(tp[0], tp[1], tp[2], &q[v], &()))

@@ -15,7 +15,7 @@ use super::transversal::PARALLEL_FROM;
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
 use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
-use crate::num::{Float, Num, PlaneF64};
+use crate::num::{filtered_orient3d, Float, Num, PlaneF64};
 use crate::union_find::UnionFind;
 use rstar::{Envelope, AABB};
 use std::cmp::Ordering;
@@ -138,12 +138,13 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// unchanged (I4 aside), knowing that it did before the vertices `moved` moved, each to a
 /// distinct point (a rounded result): every triangle with a moved vertex meets every other
 /// triangle exactly in their shared vertices and edges (a degenerate one fails against its
-/// neighbours across its edges). Decided by exact orientations of the points' values — for
-/// float points first by either triangle's plane ([`off_plane_but_shared`]), then on images
-/// in a coordinate plane; a pair without a shared vertex that they cannot tell apart is
-/// intersected exactly on its rational values, as the validator would; other pairs they
-/// cannot tell make it false, and then the caller validates in full. Every other pair meets as it did. The pairs come
-/// from [`MeetingBoxes`], on rayon's threads from [`PARALLEL_FROM`] triangles.
+/// neighbours across its edges). Decided by exact orientations of the points' values — first
+/// by either triangle's plane where a filter is certain ([`off_plane_but_shared`]), then on
+/// images in a coordinate plane; a pair without a shared vertex that they cannot tell apart
+/// is intersected exactly on its rational values, as the validator would; other pairs they
+/// cannot tell make it false, and then the caller validates in full. Every other pair meets
+/// as it did. The pairs come from [`MeetingBoxes`], on rayon's threads from
+/// [`PARALLEL_FROM`] triangles.
 pub(crate) fn conforming_after_moves<N: Num>(
     points: &[Point3<N>],
     tris: &[[usize; 3]],
@@ -164,10 +165,15 @@ pub(crate) fn conforming_after_moves<N: Num>(
     // Triangles `ti` and `ui` meet only in their shared corners (each test is symmetric).
     let meet_in_shared = |ti: usize, ui: usize| {
         let (t, s) = (tris[ti], tris[ui]);
-        if !N::EXACT
-            && (off_plane_but_shared(&planes[ti], &f64s, t, s)
-                || off_plane_but_shared(&planes[ui], &f64s, s, t))
-        {
+        // Either triangle's plane, by the static filter of `f64` points or the semi-static
+        // one on exact points' nearest `f64`s.
+        let off = |t: [usize; 3], s: [usize; 3], ti: usize| match N::EXACT {
+            true => off_plane_but_shared(t, s, |v| {
+                filtered_orient3d(f64s[t[0]], f64s[t[1]], f64s[t[2]], f64s[v])
+            }),
+            false => off_plane_but_shared(t, s, |v| planes[ti].certain_side(f64s[v])),
+        };
+        if off(t, s, ti) || off(s, t, ui) {
             return true;
         }
         if images_meet_only_in_shared(points, t, s, exact) {
