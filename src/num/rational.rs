@@ -136,6 +136,42 @@ fn reduce(n: i128, d: i128) -> Rational {
     lowest(n / g, d / g)
 }
 
+/// The orientation of three rational points where the filter could not decide it: kept out
+/// of line, so that the filtered path stays small.
+#[inline(never)]
+fn unfiltered_orient(a: [&Rational; 2], b: [&Rational; 2], c: [&Rational; 2]) -> Ordering {
+    // Two equal points (edges meeting at a vertex, an arrangement's common ends) give 0,
+    // which no filter can certify: settled by comparing terms, not by big products.
+    if a == b || b == c || c == a {
+        return Ordering::Equal;
+    }
+    let all = [a[0], a[1], b[0], b[1], c[0], c[1]];
+    if let Some([ax, ay, bx, by, cx, cy]) = integers(all, 1 << 61) {
+        return exact_orient([&ax, &ay], [&bx, &by], [&cx, &cy]);
+    }
+    if let Some([ax, ay, bx, by, cx, cy]) = dyadic(all) {
+        return exact_orient_f64([ax, ay], [bx, by], [cx, cy]);
+    }
+    fraction_free_orient(a, b, c)
+}
+
+/// The literal as a numerator and a positive denominator in `i128`, where its digits, its
+/// denominator's and the power of ten fit (at most 18 digits each, exponent within ±18).
+fn small_literal(lit: &Literal) -> Option<(i128, i128)> {
+    let int = |s: &str| (s.len() <= 18).then(|| s.parse::<i128>().ok()).flatten();
+    let (n, d) = (int(&lit.digits)?, int(&lit.den)?);
+    let ten = 10i128.checked_pow(
+        u32::try_from(lit.exp10.unsigned_abs())
+            .ok()
+            .filter(|&e| e <= 18)?,
+    )?;
+    let (n, d) = match lit.exp10 >= 0 {
+        true => (n * ten, d),
+        false => (n, d * ten),
+    };
+    Some((if lit.negative { -n } else { n }, d))
+}
+
 /// A big rational in lowest terms, stored small if it fits.
 fn from_big(r: BigRational) -> Rational {
     match (r.numer().to_i128(), r.denom().to_i128()) {
@@ -430,6 +466,7 @@ fn digits(s: &str) -> BigInt {
 
 /// `v` within 3 ulps (numerator and denominator rounded, then divided: cheaper than the
 /// correctly rounded `to_f64`); NaN for a big value out of `f64`'s range ([`Big::boxed`]).
+#[inline]
 fn approx(v: &Rational) -> f64 {
     match &v.0 {
         Repr::Small(n, 1) => *n as f64,
@@ -442,6 +479,7 @@ fn approx(v: &Rational) -> f64 {
 /// (a rational sum would take a gcd at every step): with every coordinate `n / d`, `d > 0`,
 /// each difference is an integer over a positive product of denominators, and the two products
 /// compare as `n₁n₂·d_by·d_cx` against `n₃n₄·d_bx·d_cy` (the factors `d_ax·d_ay` cancel).
+#[inline(never)]
 fn fraction_free_orient(a: [&Rational; 2], b: [&Rational; 2], c: [&Rational; 2]) -> Ordering {
     let [ax, ay, bx, by, cx, cy] = [a[0], a[1], b[0], b[1], c[0], c[1]].map(|v| v.big());
     let diff = |p: &BigRational, q: &BigRational| p.numer() * q.denom() - q.numer() * p.denom();
@@ -620,6 +658,9 @@ impl Num for Rational {
     }
 
     fn from_literal(lit: &Literal) -> Self {
+        if let Some((n, d)) = small_literal(lit) {
+            return reduce(n, d);
+        }
         let (num, den) = lit.fraction();
         Rational::new(digits(&num), digits(&den))
     }
@@ -698,23 +739,7 @@ impl Num for Rational {
 
     fn orient2d(a: [&Self; 2], b: [&Self; 2], c: [&Self; 2], _ctx: &()) -> Ordering {
         let f = |p: [&Self; 2]| [approx(p[0]), approx(p[1])];
-        filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| {
-            // Two equal points (edges meeting at a vertex, an arrangement's common ends) give 0,
-            // which no filter can certify: settled by comparing terms, not by big products.
-            if a == b || b == c || c == a {
-                return Ordering::Equal;
-            }
-            let i = |p: [&Self; 2]| integers(p, 1 << 61);
-            match (i(a), i(b), i(c)) {
-                (Some(a), Some(b), Some(c)) => {
-                    exact_orient(a.each_ref(), b.each_ref(), c.each_ref())
-                }
-                _ => match (dyadic(a), dyadic(b), dyadic(c)) {
-                    (Some(a), Some(b), Some(c)) => exact_orient_f64(a, b, c),
-                    _ => fraction_free_orient(a, b, c),
-                },
-            }
-        })
+        filtered_orient(f(a), f(b), f(c)).unwrap_or_else(|| unfiltered_orient(a, b, c))
     }
 
     fn orient3d(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3], d: [&Self; 3], _ctx: &()) -> Ordering {
@@ -886,6 +911,26 @@ mod tests {
             let want = Rational::new(if negative { -m } else { m }, e);
             proptest::prop_assert_eq!(Num::approx(&got), Num::approx(&want));
             proptest::prop_assert!(got == want);
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
+        /// A literal's value is num-rational's reduced fraction of its numerator and
+        /// denominator, in its canonical form: on decimals and fractions of 1 to 21 digits and
+        /// exponents within ±21, both sides of the `i128` path's bounds (18 digits, ±18).
+        #[test]
+        fn literals_are_their_reduced_fractions(
+            digits in "[0-9]{1,21}", den in "[1-9][0-9]{0,20}", exp10 in -21i64..=21,
+            negative in proptest::bool::ANY, fraction in proptest::bool::ANY,
+        ) {
+            let den = if fraction { den } else { "1".to_string() };
+            let lit = Literal { negative, digits, exp10, den };
+            let (n, d) = lit.fraction();
+            let want = BigRational::new(n.parse().unwrap(), d.parse().unwrap());
+            let got = Rational::from_literal(&lit);
+            proptest::prop_assert!(got == Rational::from(want.clone()));
+            proptest::prop_assert_eq!(got.fraction(), (want.numer().clone(), want.denom().clone()));
         }
     }
 

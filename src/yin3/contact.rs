@@ -330,7 +330,7 @@ mod tests {
         let [a, b] = [t.1, s.1].map(|tri| f64s.plane(tri));
         let on_f64s = contact(&f64s, [&a, &b], &corners, t, s);
         // The same contact on the points' exact rationals.
-        let rationals = RationalCorners(points.iter().map(exact_point).collect());
+        let rationals = RationalCorners::new(points.iter().map(exact_point).collect());
         let on_rationals = contact(&rationals, [&t.1, &s.1], &corners, t, s);
         assert_eq!(on_f64s, on_rationals);
         on_f64s

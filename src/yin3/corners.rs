@@ -3,10 +3,10 @@
 //! integer grid) on static filters and stack integers, or the exact rationals of any other
 //! exact set on their own filtered predicates.
 
-use super::geom::{f64_box, Chart};
+use super::geom::{widened_box, Chart};
 use super::pierce::{pierce, pierce_rational};
 use crate::kernel::{orient3d, Point3};
-use crate::num::{exact_orient3d_f64, PlaneF64, Rational};
+use crate::num::{exact_orient3d_f64, filtered_orient3d, PlaneF64, Rational};
 use rstar::AABB;
 use std::cmp::Ordering;
 
@@ -74,19 +74,34 @@ impl Corners for F64Corners {
     }
 }
 
-/// Vertices that are exact rationals.
-pub(super) struct RationalCorners(pub Vec<Point3<Rational>>);
+/// Vertices that are exact rationals, with their nearest `f64`s: the corners of boxes and the
+/// input of the orientation filter.
+pub(super) struct RationalCorners {
+    points: Vec<Point3<Rational>>,
+    near: Vec<[f64; 3]>,
+}
+
+impl RationalCorners {
+    /// The vertices `points`.
+    pub(super) fn new(points: Vec<Point3<Rational>>) -> RationalCorners {
+        let near = points.iter().map(Point3::to_f64).collect();
+        RationalCorners { points, near }
+    }
+}
 
 impl Corners for RationalCorners {
     type Plane = [usize; 3];
 
     fn same(&self, x: usize, y: usize) -> bool {
-        self.0[x] == self.0[y]
+        self.points[x] == self.points[y]
     }
 
     fn orient3d(&self, [a, b, c, d]: [usize; 4]) -> Ordering {
-        let p = &self.0;
-        orient3d(&p[a], &p[b], &p[c], &p[d], &())
+        let q = &self.near;
+        filtered_orient3d(q[a], q[b], q[c], q[d]).unwrap_or_else(|| {
+            let p = &self.points;
+            orient3d(&p[a], &p[b], &p[c], &p[d], &())
+        })
     }
 
     fn plane(&self, t: [usize; 3]) -> [usize; 3] {
@@ -98,15 +113,15 @@ impl Corners for RationalCorners {
     }
 
     fn bbox(&self, t: [usize; 3]) -> AABB<[f64; 3]> {
-        f64_box(t.map(|v| &self.0[v]))
+        widened_box(t.map(|v| self.near[v]))
     }
 
     fn pierce(&self, (u, v): (usize, usize), [a, b, c]: [usize; 3]) -> Point3<Rational> {
-        pierce_rational([u, v, a, b, c].map(|i| &self.0[i]))
+        pierce_rational([u, v, a, b, c].map(|i| &self.points[i]))
     }
 
     fn chart(&self, t: [usize; 3]) -> Option<Chart> {
-        let [a, b, c] = t.map(|v| &self.0[v]);
+        let [a, b, c] = t.map(|v| &self.points[v]);
         Chart::checked_of_triangle(a, b, c)
     }
 }

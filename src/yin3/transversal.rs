@@ -216,7 +216,11 @@ impl Transversal {
 pub(crate) fn transversal_meet<N: Num>(a: &Brep<N>, b: &Brep<N>) -> Option<Transversal> {
     let all = || a.points.iter().chain(&b.points);
     if N::EXACT {
-        meet_on(a, b, &RationalCorners(all().map(exact_point).collect()))
+        meet_on(
+            a,
+            b,
+            &RationalCorners::new(all().map(exact_point).collect()),
+        )
     } else {
         meet_on(a, b, &F64Corners(all().map(|p| p.to_f64()).collect()))
     }

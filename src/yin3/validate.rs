@@ -17,7 +17,9 @@ use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{filtered_orient3d, Float, Num, PlaneF64};
 use crate::union_find::UnionFind;
-use rstar::{Envelope, AABB};
+use rayon::prelude::*;
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{Envelope, RTree, AABB};
 use std::cmp::Ordering;
 
 impl<N: Num> YinSet3<N> {
@@ -151,12 +153,17 @@ pub(crate) fn conforming_after_moves<N: Num>(
     moved: &[bool],
 ) -> bool {
     let exact = &N::exact_ctx();
-    let touched: Vec<bool> = tris.iter().map(|t| t.iter().any(|&v| moved[v])).collect();
+    let touched: Vec<usize> = (0..tris.len())
+        .filter(|&t| tris[t].iter().any(|&v| moved[v]))
+        .collect();
+    // Few triangles moved (a rounded result): each triangle's box is looked up among theirs,
+    // instead of pairing all boxes.
+    let few = touched.len() * FEW_MOVED < tris.len();
     // Each point's nearest `f64`, once: the corners of the triangles' boxes, and in float
-    // mode the points themselves, whose triangles' planes, prepared once, tell most pairs
-    // apart with a few dot products before anything is projected.
+    // mode the points themselves, whose triangles' planes tell most pairs apart with a few
+    // dot products before anything is projected (prepared once where every pair is tested).
     let f64s: Vec<[f64; 3]> = points.iter().map(|p| p.to_f64()).collect();
-    let planes: Vec<PlaneF64> = match N::EXACT {
+    let planes: Vec<PlaneF64> = match N::EXACT || few {
         true => Vec::new(),
         false => (tris.iter())
             .map(|&t| PlaneF64::of_triangle(&f64s, t))
@@ -167,11 +174,15 @@ pub(crate) fn conforming_after_moves<N: Num>(
         let (t, s) = (tris[ti], tris[ui]);
         // Either triangle's plane, by the static filter of `f64` points or the semi-static
         // one on exact points' nearest `f64`s.
-        let off = |t: [usize; 3], s: [usize; 3], ti: usize| match N::EXACT {
-            true => off_plane_but_shared(t, s, |v| {
+        let off = |t: [usize; 3], s: [usize; 3], ti: usize| match (N::EXACT, planes.get(ti)) {
+            (true, _) => off_plane_but_shared(t, s, |v| {
                 filtered_orient3d(f64s[t[0]], f64s[t[1]], f64s[t[2]], f64s[v])
             }),
-            false => off_plane_but_shared(t, s, |v| planes[ti].certain_side(f64s[v])),
+            (false, Some(plane)) => off_plane_but_shared(t, s, |v| plane.certain_side(f64s[v])),
+            (false, None) => {
+                let plane = PlaneF64::of_triangle(&f64s, t);
+                off_plane_but_shared(t, s, |v| plane.certain_side(f64s[v]))
+            }
         };
         if off(t, s, ti) || off(s, t, ui) {
             return true;
@@ -197,10 +208,33 @@ pub(crate) fn conforming_after_moves<N: Num>(
         .map(|t| widened_box(t.map(|v| f64s[v])))
         .collect();
     let parallel = boxes.len() >= PARALLEL_FROM;
+    if few {
+        let tree = RTree::bulk_load(
+            (touched.iter())
+                .map(|&t| GeomWithData::new(Rectangle::from_aabb(boxes[t]), t))
+                .collect(),
+        );
+        let near_touched = |u: usize| {
+            (tree.locate_in_envelope_intersecting(&boxes[u]))
+                .all(|g| g.data == u || meet_in_shared(g.data, u))
+        };
+        return match parallel {
+            true => (0..tris.len()).into_par_iter().all(near_touched),
+            false => (0..tris.len()).all(near_touched),
+        };
+    }
+    let mut flags = vec![false; tris.len()];
+    for &t in &touched {
+        flags[t] = true;
+    }
     MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| {
-        !(touched[t] || touched[u]) || meet_in_shared(t, u)
+        !(flags[t] || flags[u]) || meet_in_shared(t, u)
     })
 }
+
+/// [`conforming_after_moves`] looks up the triangles near the moved ones where these are fewer
+/// than one in this many.
+const FEW_MOVED: usize = 8;
 
 impl Yin3Error {
     /// The same error with triangle indices replaced by the input faces they came from, and
@@ -434,15 +468,18 @@ mod tests {
     use crate::num::Rational;
     use crate::yin3::shapes::{concat, cuboid};
 
-    /// The cubes [0, 10]³ and [15, 25]³ in backend `N` with the corners `moves` moved: the
-    /// local check and the full validator (on the exact values).
-    fn after_moving<N: Num>(moves: &[([i64; 3], [i64; 3])]) -> (bool, bool) {
+    /// The cubes [0, 10]³ and [15, 25]³ in backend `N`, and `far` unit cubes far from them,
+    /// with the corners `moves` moved: the local check and the full validator (on the exact
+    /// values).
+    fn after_moving<N: Num>(moves: &[([i64; 3], [i64; 3])], far: i64) -> (bool, bool) {
         let p =
             |v: [i64; 3]| Point3::<N>::new(N::from_i64(v[0]), N::from_i64(v[1]), N::from_i64(v[2]));
-        let (v, f) = concat(vec![
+        let mut cubes = vec![
             cuboid(&p([0; 3]), &p([10; 3])),
             cuboid(&p([15; 3]), &p([25; 3])),
-        ]);
+        ];
+        cubes.extend((0..far).map(|k| cuboid(&p([100 + 2 * k, 0, 0]), &p([101 + 2 * k, 1, 1]))));
+        let (v, f) = concat(cubes);
         let b = YinSet3::from_triangles(v, f)
             .expect("two cubes")
             .brep()
@@ -519,15 +556,19 @@ mod tests {
         }
     }
 
-    /// In both backends: float points take the plane test first.
+    /// In both backends (float points take the plane test first), with few triangles beside
+    /// the moved ones (every pair of boxes swept) and with many (the boxes near the moved
+    /// triangles looked up).
     #[test]
     fn a_moved_vertex_is_checked_against_its_neighbours() {
-        moved_vertices_checked::<Rational>();
-        moved_vertices_checked::<Float>();
+        for far in [0, 16] {
+            moved_vertices_checked::<Rational>(far);
+            moved_vertices_checked::<Float>(far);
+        }
     }
 
-    fn moved_vertices_checked<N: Num>() {
-        let after_moving = after_moving::<N>;
+    fn moved_vertices_checked<N: Num>(far: i64) {
+        let after_moving = |moves: &[([i64; 3], [i64; 3])]| after_moving::<N>(moves, far);
         let corner = [10; 3];
         // Pulled out a little: still valid.
         assert_eq!(after_moving(&[(corner, [11, 11, 11])]), (true, true));
