@@ -506,6 +506,19 @@ impl Num for Float {
         }
     }
 
+    fn parse(s: &str) -> Result<Self, NumError> {
+        let lit = Literal::parse(s)?;
+        // A decimal's nearest f64 straight from its text: the standard library's correctly
+        // rounded parse of the literal just checked, the value `from_literal` would make.
+        match lit.den == "1" {
+            true => Ok(s
+                .trim()
+                .parse()
+                .map_or_else(|_| Float::from_literal(&lit), Float::new)),
+            false => Ok(Float::from_literal(&lit)),
+        }
+    }
+
     fn from_literal(lit: &Literal) -> Self {
         let sign = if lit.negative { "-" } else { "" };
         let num: f64 = format!("{sign}{}e{}", lit.digits, lit.exp10)
@@ -587,6 +600,23 @@ impl Num for Float {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
+        /// A decimal read from its text is the value of its literal (signs, leading dots and
+        /// zeros, exponents up to ±400: past f64's range both ways), bit for bit.
+        #[test]
+        fn parsed_decimals_are_their_literals(
+            sign in "[-+]?", int in "[0-9]{0,20}", frac in "(\\.[0-9]{0,20})?",
+            exp in proptest::option::of(-400i32..400),
+        ) {
+            proptest::prop_assume!(!(int.is_empty() && frac.len() < 2));
+            let text = format!("{sign}{int}{frac}{}", exp.map_or(String::new(), |e| format!("e{e}")));
+            let lit = Literal::parse(&text).expect("a decimal");
+            let got = Float::parse(&text).expect("a decimal");
+            proptest::prop_assert_eq!(got.0.to_bits(), Float::from_literal(&lit).0.to_bits(), "{}", text);
+        }
+    }
 
     #[test]
     fn negative_zero_is_zero() {

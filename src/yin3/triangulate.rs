@@ -270,7 +270,16 @@ fn in_closed<N: Num>(points: &[Point<N>], t: [usize; 3], x: usize, ctx: &N::Ctx)
 /// the points are distinct, and an equal point is where the exact tests cost most).
 fn split<N: Num>(points: &[Point<N>], u: usize, v: usize, ctx: &N::Ctx) -> Vec<(usize, usize)> {
     let (a, b) = (&points[u], &points[v]);
-    let on_segment = |w: &Point<N>| orient(a, b, w, ctx) == Equal && on_closed_segment(a, b, w);
+    // With exact predicates the segment's box first: most points lie beyond it, and
+    // comparisons cost less than an orientation (which no filter decides where it is zero, as
+    // on the segment). A tolerance's orientation may take points beside the box.
+    let within = |lo: &N, hi: &N, x: &N| {
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        lo <= x && x <= hi
+    };
+    let in_box = |w: &Point<N>| !N::EXACT || within(&a.x, &b.x, &w.x) && within(&a.y, &b.y, &w.y);
+    let on_segment =
+        |w: &Point<N>| in_box(w) && orient(a, b, w, ctx) == Equal && on_closed_segment(a, b, w);
     let mut on: Vec<usize> = (0..points.len())
         .filter(|&w| w == u || w == v || on_segment(&points[w]))
         .collect();
