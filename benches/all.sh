@@ -7,7 +7,7 @@
 #
 #   KIGUMI_MESHES=DIR bash benches/all.sh BEFORE_REV
 #
-# DIR holds checker.obj and text.obj of kigumi's repository (meshes/).
+# DIR holds checker.obj, text.obj and plate.obj of kigumi's repository (meshes/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -ne 1 ]; then
@@ -15,7 +15,7 @@ if [ $# -ne 1 ]; then
   exit 2
 fi
 before=$1
-: "${KIGUMI_MESHES:?the folder of checker.obj and text.obj from kigumi meshes/}"
+: "${KIGUMI_MESHES:?the folder of checker.obj, text.obj and plate.obj from kigumi meshes/}"
 if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
   echo "commit first: the figures are those of HEAD" >&2
   exit 2

@@ -482,7 +482,8 @@ fn main() {
         table += &say(line(&label, &r));
         checks += &check(&label, &r);
     }
-    // kigumi's own non-manifold benchmark (meshes/checker.obj and text.obj of its repository).
+    // kigumi's own non-manifold benchmark (meshes/checker.obj, text.obj and plate.obj of its
+    // repository).
     if let Some(dir) = std::env::var_os("KIGUMI_MESHES").map(PathBuf::from) {
         let label = "V5 kigumi's checker ∧ text";
         let (a, b) = (dir.join("checker.obj"), dir.join("text.obj"));
