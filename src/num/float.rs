@@ -486,6 +486,9 @@ impl Neg for Float {
     }
 }
 
+/// The longest decimal text that [`Float::parse`] hands to the standard library's parse.
+const SHORT_DECIMAL: usize = 64;
+
 impl Num for Float {
     type Ctx = Tolerance;
     const EXACT: bool = false;
@@ -509,8 +512,10 @@ impl Num for Float {
     fn parse(s: &str) -> Result<Self, NumError> {
         let lit = Literal::parse(s)?;
         // A decimal's nearest f64 straight from its text: the standard library's correctly
-        // rounded parse of the literal just checked, the value `from_literal` would make.
-        match lit.den == "1" {
+        // rounded parse of the literal just checked, the value `from_literal` would make. Only
+        // for short text: the standard parse stops reading an exponent past 65 536, which a
+        // literal reaches only with as many fraction digits to bring it back.
+        match lit.den == "1" && s.len() <= SHORT_DECIMAL {
             true => Ok(s
                 .trim()
                 .parse()
@@ -616,6 +621,14 @@ mod tests {
             let got = Float::parse(&text).expect("a decimal");
             proptest::prop_assert_eq!(got.0.to_bits(), Float::from_literal(&lit).0.to_bits(), "{}", text);
         }
+    }
+
+    /// A literal whose exponent passes 65 536, brought back by as many fraction digits, is
+    /// its literal's value: 0.(699 999 zeros)1e700000 is 1.
+    #[test]
+    fn a_huge_exponent_balanced_by_fraction_digits_is_read_exactly() {
+        let text = format!("0.{}1e700000", "0".repeat(699_999));
+        assert_eq!(Float::parse(&text), Ok(Float::new(1.0)));
     }
 
     #[test]

@@ -20,20 +20,28 @@ const EXACT_INTEGERS: i64 = 1 << 53;
 fn common_grid<'a, N: Num + 'a>(
     points: impl Iterator<Item = &'a Point3<N>> + Clone,
 ) -> Option<i64> {
+    common_denominator(points.flat_map(|p| [&p.x, &p.y, &p.z]), EXACT_INTEGERS)
+}
+
+/// The least positive L such that every one of `values` times L is an integer, if L and each
+/// of those integers lie below `bound` in magnitude.
+pub(super) fn common_denominator<'a, N: Num + 'a>(
+    values: impl Iterator<Item = &'a N> + Clone,
+    bound: i64,
+) -> Option<i64> {
     let mut l: i64 = 1;
-    let coordinates = || points.clone().flat_map(|p| [&p.x, &p.y, &p.z]);
-    for v in coordinates() {
+    for v in values.clone() {
         let (_, d) = v.small_fraction()?;
         if l % d != 0 {
             l = (l / gcd::binary_u64(l as u64, d as u64) as i64).checked_mul(d)?;
-            if l >= EXACT_INTEGERS {
+            if l >= bound {
                 return None;
             }
         }
     }
-    for v in coordinates() {
+    for v in values {
         let (n, d) = v.small_fraction()?;
-        if n.checked_mul(l / d)?.unsigned_abs() >= EXACT_INTEGERS.unsigned_abs() {
+        if n.checked_mul(l / d)?.unsigned_abs() >= bound.unsigned_abs() {
             return None;
         }
     }
@@ -250,8 +258,9 @@ mod tests {
         assert!(!conforming_after_moves(&images, &tris, &everything));
     }
 
-    /// Operands sharing a face take the general arrangement; operands off every grid of
-    /// integers below 2⁵³ are met on their rationals.
+    /// Operands sharing a face take the general arrangement, on a grid or off every grid of
+    /// integers below 2⁵³; operands off every grid that meet generically are met on their
+    /// rationals.
     #[test]
     fn degenerate_operands_are_declined() {
         let unit =
@@ -269,5 +278,25 @@ mod tests {
         assert_eq!(common_grid(breps.iter().flat_map(|b| &b.points)), None);
         let meet = grid_meet([&a, &far], breps, ()).expect("no degenerate contact");
         assert_eq!(meet.expect("an exact meet"), general_meet(&a, &far));
+        // Off every grid too: boxes with sides 1/p, 1/q, 1/7 (p, q about 2⁴⁰) sharing a face.
+        let (p, q) = (1_099_511_627_791, 1_099_511_627_689);
+        let at = |x: i64| {
+            Point3::new(
+                point(x, 0, 0, p).x,
+                point(0, 1, 0, q).y,
+                point(0, 0, 1, 7).z,
+            )
+        };
+        let origin = Point3::int(0, 0, 0);
+        let left = YinSet3::cuboid(&origin, &at(1)).expect("a box");
+        let right = YinSet3::cuboid(
+            &Point3::new(point(1, 0, 0, p).x, origin.y.clone(), origin.z.clone()),
+            &at(2),
+        )
+        .expect("a box");
+        let breps = [left.brep().expect("a box"), right.brep().expect("a box")];
+        assert_eq!(common_grid(breps.iter().flat_map(|b| &b.points)), None);
+        assert!(grid_meet([&left, &right], breps, ()).is_none());
+        assert!(left.meet(&right).is_empty());
     }
 }

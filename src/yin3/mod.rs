@@ -122,7 +122,8 @@
 //! * **How the exact result is found.** When every pair of triangles of the two operands
 //!   misses, crosses properly, crosses edge through edge, from a shared corner or from a vertex
 //!   inside the other's triangle, or touches in a shared corner or edge or at such a vertex, the
-//!   meet is decided from exact orientations of the `f64` vertices alone: each end of a
+//!   meet is decided from exact orientations of the input vertices alone (the `f64` values of
+//!   float sets; in exact mode the same tests on filtered rational orientations): each end of a
 //!   crossing segment is named by what defines it (an edge and the triangle it pierces, two
 //!   crossing edges, a vertex in a triangle, a shared corner) and constructed once, a pierce
 //!   point on 256- or 384-bit stack integers where the corners on their common power-of-two

@@ -1,9 +1,10 @@
 //! The point where an edge pierces the plane of a triangle (the transversal meet's pierce
-//! points, [`super::transversal`]), exactly, from the `f64` corners on their common
-//! power-of-two grid: on 256- or 384-bit integers on the stack where the grid integers are
-//! narrow enough (every pair of ../shared/data/3d), on big integers otherwise — the same value
-//! either way.
+//! points, [`super::transversal`]), exactly: from `f64` corners on their common power-of-two
+//! grid, from rational corners on the integers over their common denominator; on 256- or
+//! 384-bit integers on the stack where those integers are narrow enough (every pair of
+//! ../shared/data/3d), on big integers otherwise — the same value either way.
 
+use super::grid::common_denominator;
 use super::link::{cross, dot, Scalar, Vector};
 use crate::kernel::Point3;
 use crate::num::{common_grid, from_words, gcd_u128, Num, Rational};
@@ -153,19 +154,11 @@ pub(super) fn pierce_rational(corners: [&Point3<Rational>; 5]) -> Point3<Rationa
 /// The values as integers over their least common denominator L, with L, if L and every
 /// integer fit an `i64`.
 fn small_grid(values: [&Rational; 15]) -> Option<([i64; 15], i64)> {
-    let mut fractions = [(0i64, 1i64); 15];
-    for (f, v) in fractions.iter_mut().zip(values) {
-        *f = v.small_fraction()?;
-    }
-    let mut l: i64 = 1;
-    for &(_, d) in &fractions {
-        if l % d != 0 {
-            l = (l / gcd::binary_u64(l as u64, d as u64) as i64).checked_mul(d)?;
-        }
-    }
+    let l = common_denominator(values.into_iter(), i64::MAX)?;
     let mut ints = [0i64; 15];
-    for (i, &(n, d)) in ints.iter_mut().zip(&fractions) {
-        *i = n.checked_mul(l / d)?;
+    for (i, v) in ints.iter_mut().zip(values) {
+        let (n, d) = v.small_fraction()?;
+        *i = n * (l / d);
     }
     Some((ints, l))
 }

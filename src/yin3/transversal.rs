@@ -1,10 +1,12 @@
-//! The meet of two float sets whose boundaries cross transversally (seed 004 steps 1–5 for the
-//! generic case; yin3 docs: *Float mode*; exact sets on a common integer grid come here
-//! scaled to float sets, [`super::grid`]): every pair of triangles of different operands
-//! misses, crosses along a segment whose inside runs through both triangles' insides, or
-//! touches in a shared corner or edge ([`super::contact`]) — no vertex on an edge of the other,
-//! no edge on the other's plane. Then everything the general arrangement decides with
-//! constructed points is decided from exact orientations of the `f64` input vertices:
+//! The meet of two sets whose boundaries cross transversally (seed 004 steps 1–5 for the
+//! generic case; yin3 docs: *Float mode*, *Meet*; exact sets come here through
+//! [`super::grid`], scaled to float sets where they lie on a small common integer grid):
+//! every pair of triangles of different operands misses, crosses along a segment whose inside
+//! runs through both triangles' insides, or touches in a shared corner or edge
+//! ([`super::contact`]) — no vertex on an edge of the other, no edge on the other's plane.
+//! Then everything the general arrangement decides with constructed points is decided from
+//! exact orientations of the input vertices ([`super::corners`]: `f64` filters and integers
+//! for float points, filtered rational orientations for exact ones):
 //! - each end of a crossing segment is where an edge of one operand pierces a triangle of the
 //!   other, where an edge of one crosses an edge of the other, a vertex of one inside a
 //!   triangle of the other, or a shared corner; each constructed point is named by what
@@ -164,7 +166,7 @@ fn map_all<T: Sync, R: Send>(
 /// Triangles over a table of exact points.
 type Complex = (Vec<Point3<Rational>>, Vec<[usize; 3]>);
 
-/// The meet of two float boundaries that cross transversally, touch, or do not meet.
+/// The meet of two boundaries that cross transversally, touch, or do not meet.
 pub(crate) enum Transversal {
     /// The meet is this operand (0 or 1) as it is: its boundary lies inside the other but
     /// where the two touch, and none of the other's lies inside it.
@@ -723,7 +725,7 @@ fn inside<N: Num>(
 /// triangle's box, later ones an R-tree of the other's boxes, built on first need.
 struct Rays<'a, N: Num> {
     ops: [&'a Brep<N>; 2],
-    /// The triangles' `f64` boxes, operand 0's first (exact: the operands are float sets).
+    /// The triangles' `f64` boxes, operand 0's first, each holding its triangle.
     boxes: &'a [AABB<[f64; 3]>],
     trees: [OnceCell<TriBoxes>; 2],
     cast: Cell<usize>,

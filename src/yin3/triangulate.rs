@@ -638,6 +638,27 @@ mod tests {
     /// One constraint from inside one side to inside another, or to a corner, with no other
     /// point, for every pair of sides or corner, both directions and every rotation of the
     /// corners: [`one_cut`] answers each without predicates, and the independent check passes.
+    /// A segment splits at the points on it, in order, and only there: collinear points past
+    /// either end, and points beside it, are left out; on axis-parallel segments (a box of
+    /// zero width) and a slanted one, in both backends.
+    #[test]
+    fn a_segment_splits_at_the_points_on_it() {
+        fn splits<N: Num>(ctx: &N::Ctx) {
+            // Horizontal: 0 → 1 through 2; 3 and 4 collinear beyond the ends; 5 beside.
+            let flat = pts::<N>(&[(0, 0), (4, 0), (2, 0), (6, 0), (-1, 0), (2, 1)]);
+            assert_eq!(split(&flat, 0, 1, ctx), [(0, 2), (2, 1)]);
+            assert_eq!(split(&flat, 1, 0, ctx), [(0, 2), (2, 1)]);
+            // Vertical, the same points turned.
+            let upright = pts::<N>(&[(0, 0), (0, 4), (0, 2), (0, 6), (0, -1), (1, 2)]);
+            assert_eq!(split(&upright, 0, 1, ctx), [(0, 2), (2, 1)]);
+            // Slanted: (3, 3) past the end, (1, 2) beside, (1, 1) and (2, 2) on it.
+            let slant = pts::<N>(&[(0, 0), (2, 2), (3, 3), (1, 2), (1, 1)]);
+            assert_eq!(split(&slant, 0, 1, ctx), [(0, 4), (4, 1)]);
+        }
+        splits::<Rational>(&());
+        splits::<Float>(&Tolerance::default().resolve(8.0, 8.0).expect("a tolerance"));
+    }
+
     #[test]
     fn one_cut_cuts_off_a_corner_or_halves_the_triangle() {
         // A point inside each side i, from corner i to corner i + 1.

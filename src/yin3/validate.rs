@@ -145,8 +145,9 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// images in a coordinate plane; a pair without a shared vertex that they cannot tell apart
 /// is intersected exactly on its rational values, as the validator would; other pairs they
 /// cannot tell make it false, and then the caller validates in full. Every other pair meets
-/// as it did. The pairs come from [`MeetingBoxes`], on rayon's threads from
-/// [`PARALLEL_FROM`] triangles.
+/// as it did. The pairs come from [`MeetingBoxes`], or where fewer than one triangle in
+/// [`FEW_MOVED`] has a moved vertex from an R-tree of those triangles' boxes; on rayon's
+/// threads from [`PARALLEL_FROM`] triangles.
 pub(crate) fn conforming_after_moves<N: Num>(
     points: &[Point3<N>],
     tris: &[[usize; 3]],
@@ -208,24 +209,25 @@ pub(crate) fn conforming_after_moves<N: Num>(
         .map(|t| widened_box(t.map(|v| f64s[v])))
         .collect();
     let parallel = boxes.len() >= PARALLEL_FROM;
+    let mut flags = vec![false; tris.len()];
+    for &t in &touched {
+        flags[t] = true;
+    }
     if few {
         let tree = RTree::bulk_load(
             (touched.iter())
                 .map(|&t| GeomWithData::new(Rectangle::from_aabb(boxes[t]), t))
                 .collect(),
         );
+        // Each pair once: two touched triangles from the later one.
         let near_touched = |u: usize| {
             (tree.locate_in_envelope_intersecting(&boxes[u]))
-                .all(|g| g.data == u || meet_in_shared(g.data, u))
+                .all(|g| g.data == u || flags[u] && g.data > u || meet_in_shared(g.data, u))
         };
         return match parallel {
             true => (0..tris.len()).into_par_iter().all(near_touched),
             false => (0..tris.len()).all(near_touched),
         };
-    }
-    let mut flags = vec![false; tris.len()];
-    for &t in &touched {
-        flags[t] = true;
     }
     MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| {
         !(flags[t] || flags[u]) || meet_in_shared(t, u)
@@ -493,6 +495,11 @@ mod tests {
         };
         let moved: Vec<bool> = b.points.iter().map(|q| to(q).is_some()).collect();
         let after = b.map_points(|q| to(q).unwrap_or_else(|| q.clone()));
+        // The far cubes put the moved triangles below one in FEW_MOVED: the R-tree's path.
+        let touched = (after.tris.iter())
+            .filter(|t| t.iter().any(|&v| moved[v]))
+            .count();
+        assert_eq!(touched * FEW_MOVED < after.tris.len(), far > 0);
         let full = revalidate(exact_points(&after.points), &after, ()).is_ok();
         (
             conforming_after_moves(&after.points, &after.tris, &moved),
