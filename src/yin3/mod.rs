@@ -36,7 +36,7 @@
 //! * **Validation** (`from_triangles`): degenerate faces are rejected and planar n-gons
 //!   triangulated; a complex whose triangles meet only in shared corners and edges is its own
 //!   arrangement (decided on `f64` values where the coordinates are `f64`s or, scaled, integers
-//!   of a common grid below 2⁵³); otherwise the arrangement of the set against itself makes
+//!   of a common grid below 2⁵³, else on filtered rational orientations); otherwise the arrangement of the set against itself makes
 //!   legal contacts (T-junctions, a vertex or an edge on a face) conforming; then I2, I3 (an
 //!   odd fin count means an open surface, non-alternating fins crossing sheets) and I4 (one ray
 //!   per edge-connected component) are checked. Errors name the face or edge.
@@ -151,12 +151,13 @@
 //!   static filter, then 128-bit integers where the coordinates are integers below 2⁶⁰ on one
 //!   power-of-two grid, then Shewchuk's adaptive `orient3d` after an exact power-of-two scaling,
 //!   rationals where even that under- or overflows).
-//! * **Speed.** On operands that cross, touch only in shared corners and edges, or do not
-//!   meet, float mode takes 0.09–0.20× exact mode's time on the crossing spheres and larger
-//!   meshes of benches/BENCHMARKS.md, and 0.33–0.64× on small pairs whose coordinates lie on a
-//!   common integer grid, where exact mode takes the same path (*Meet*); where they share faces
-//!   or meet otherwise degenerately it takes the general path, the exact meet and then
-//!   rounding, at 1.0–2.0× exact mode's time.
+//! * **Speed.** Exact mode takes the same construction-light meet as float mode wherever
+//!   operands cross, touch only in shared corners and edges, or do not meet (*Meet*), so the
+//!   two modes take about the same time there on the crossing spheres and meshes of
+//!   benches/BENCHMARKS.md (float 0.33–1.23× exact; 3.0× where two points round to one and the
+//!   rounded result is validated in full), float mode paying for its rounding check;
+//!   where operands share faces or meet otherwise degenerately float mode takes the general
+//!   path, the exact meet and then rounding, at 1.0–2.1× exact mode's time.
 
 mod arrange;
 mod betti;
