@@ -141,8 +141,9 @@ fn reduce(n: i128, d: i128) -> Rational {
 #[inline(never)]
 fn unfiltered_orient(a: [&Rational; 2], b: [&Rational; 2], c: [&Rational; 2]) -> Ordering {
     // Two equal points (edges meeting at a vertex, an arrangement's common ends) give 0,
-    // which no filter can certify: settled by comparing terms, not by big products.
-    if a == b || b == c || c == a {
+    // which no filter can certify: settled by comparing terms, not by big products; so do
+    // three points on one axis-parallel line (edges of boxes and voxels).
+    if a == b || b == c || c == a || (0..2).any(|k| a[k] == b[k] && a[k] == c[k]) {
         return Ordering::Equal;
     }
     let all = [a[0], a[1], b[0], b[1], c[0], c[1]];
@@ -746,8 +747,12 @@ impl Num for Rational {
         let f = |p: [&Self; 3]| p.map(approx);
         filtered_orient3d(f(a), f(b), f(c), f(d)).unwrap_or_else(|| {
             // A repeated point (triangles sharing a corner) spans no volume, which no filter
-            // can certify.
+            // can certify; nor do points in one axis-parallel plane (faces of boxes, voxels
+            // and extrusions), where one column of differences is zero.
             if a == d || b == d || c == d || a == b || b == c || c == a {
+                return Ordering::Equal;
+            }
+            if (0..3).any(|k| a[k] == b[k] && a[k] == c[k] && a[k] == d[k]) {
                 return Ordering::Equal;
             }
             match (dyadic(a), dyadic(b), dyadic(c), dyadic(d)) {
@@ -1251,6 +1256,39 @@ mod tests {
         let det = &u[0] * (&v[1] * &w[2] - &v[2] * &w[1]) - &u[1] * (&v[0] * &w[2] - &v[2] * &w[0])
             + &u[2] * (&v[0] * &w[1] - &v[1] * &w[0]);
         det.cmp(&BigRational::zero())
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
+        /// `orient3d` and `orient2d` agree with plain rational arithmetic on points sharing one
+        /// coordinate (an axis-parallel plane or line: zero), and on the same points with the
+        /// last one's shared coordinate nudged by 2⁻⁶² (not zero unless the rest is
+        /// degenerate): big fractions, so that no filter decides.
+        #[test]
+        fn axis_parallel_points_are_plain_rational(
+            terms in proptest::array::uniform12((-(1i64 << 40)..1 << 40, 1i64..1 << 40)),
+            axis in 0usize..3,
+            nudge in -2i64..=2,
+        ) {
+            let q = |(n, d): (i64, i64)| BigRational::new(n.into(), d.into());
+            let shared = q(terms[0]);
+            let mut p: [[BigRational; 3]; 4] =
+                std::array::from_fn(|i| std::array::from_fn(|k| q(terms[(3 * i + k) % 12])));
+            for (i, point) in p.iter_mut().enumerate() {
+                point[axis] = shared.clone() + q((nudge * i64::from(i == 3), 1 << 62));
+            }
+            let r = p.clone().map(|x| x.map(Rational::from));
+            let [ra, rb, rc, rd] = r.each_ref().map(|x| x.each_ref());
+            proptest::prop_assert_eq!(Rational::orient3d(ra, rb, rc, rd, &()), plain_orient3d(&p));
+            // The 2D test on the shared coordinate and the next, for the last three points: on
+            // an axis-parallel line, or the last one off it.
+            let (i, j) = (axis, (axis + 1) % 3);
+            let (pb, pc, pd) = (&p[1], &p[2], &p[3]);
+            proptest::prop_assert_eq!(
+                Rational::orient2d([rb[i], rb[j]], [rc[i], rc[j]], [rd[i], rd[j]], &()),
+                plain_orient([&pb[i], &pb[j]], [&pc[i], &pc[j]], [&pd[i], &pd[j]])
+            );
+        }
     }
 
     proptest::proptest! {
