@@ -69,7 +69,7 @@ pub(crate) fn on_grid<N: Num>(points: &[Point3<N>]) -> Option<Vec<Point3<Float>>
 /// meet, under the context `ctx`: of the operands scaled to a common integer grid where they
 /// are on one (module docs), else of the operands themselves; `None` where they meet
 /// degenerately.
-pub(crate) fn grid_meet<N: Num>(
+pub(crate) fn exact_transversal_meet<N: Num>(
     [x, y]: [&YinSet3<N>; 2],
     [a, b]: [&Brep<N>; 2],
     ctx: N::Ctx,
@@ -174,7 +174,7 @@ mod tests {
     /// and against their complements: wherever the transversal meet is taken it equals the
     /// general arrangement's meet, and it is taken in most cases, the complements' too.
     #[test]
-    fn grid_meets_are_the_general_meets() {
+    fn exact_transversal_meets_are_the_general_meets() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(7);
         let cube = YinSet3::cuboid(&point(5, 5, 5, 10), &point(15, 15, 15, 10)).expect("a cube");
         // Cases and meets taken, on the grid and off it.
@@ -189,7 +189,7 @@ mod tests {
                 let (a, b) = (x.brep().expect("bounded"), y.brep().expect("a boundary"));
                 let off = usize::from(common_grid(a.points.iter().chain(&b.points)).is_none());
                 cases[off] += 1;
-                if let Some(meet) = grid_meet([x, &y], [a, b], ()) {
+                if let Some(meet) = exact_transversal_meet([x, &y], [a, b], ()) {
                     assert_eq!(meet.expect("an exact meet"), general_meet(x, &y));
                     taken[off] += 1;
                 }
@@ -267,7 +267,7 @@ mod tests {
             |x: i64| YinSet3::cuboid(&point(x, 0, 0, 1), &point(x + 1, 1, 1, 1)).expect("a cube");
         let (a, b) = (unit(0), unit(1));
         let breps = [a.brep().expect("a cube"), b.brep().expect("a cube")];
-        assert!(grid_meet([&a, &b], breps, ()).is_none());
+        assert!(exact_transversal_meet([&a, &b], breps, ()).is_none());
         let tiny = Rational::new(BigInt::from(1), BigInt::from(1u64 << 60));
         let far = YinSet3::cuboid(
             &Point3::new(tiny.clone(), tiny.clone(), tiny),
@@ -276,7 +276,7 @@ mod tests {
         .expect("a box");
         let breps = [a.brep().expect("a cube"), far.brep().expect("a box")];
         assert_eq!(common_grid(breps.iter().flat_map(|b| &b.points)), None);
-        let meet = grid_meet([&a, &far], breps, ()).expect("no degenerate contact");
+        let meet = exact_transversal_meet([&a, &far], breps, ()).expect("no degenerate contact");
         assert_eq!(meet.expect("an exact meet"), general_meet(&a, &far));
         // Off every grid too: boxes with sides 1/p, 1/q, 1/7 (p, q about 2⁴⁰) sharing a face.
         let (p, q) = (1_099_511_627_791, 1_099_511_627_689);
@@ -296,7 +296,7 @@ mod tests {
         .expect("a box");
         let breps = [left.brep().expect("a box"), right.brep().expect("a box")];
         assert_eq!(common_grid(breps.iter().flat_map(|b| &b.points)), None);
-        assert!(grid_meet([&left, &right], breps, ()).is_none());
+        assert!(exact_transversal_meet([&left, &right], breps, ()).is_none());
         assert!(left.meet(&right).is_empty());
     }
 }

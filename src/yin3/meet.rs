@@ -7,7 +7,7 @@ use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::float_meet;
 use super::geom::{in_triangle2, Chart};
-use super::grid::grid_meet;
+use super::grid::exact_transversal_meet;
 use super::locate::{winding, TriBoxes};
 use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
@@ -84,7 +84,7 @@ impl<N: Num> YinSet3<N> {
             return Ok(YinSet3::empty().with_ctx(ctx));
         }
         if N::EXACT {
-            grid_meet([self, other], [a, b], ctx).unwrap_or_else(|| meet_in(a, b, ctx))
+            exact_transversal_meet([self, other], [a, b], ctx).unwrap_or_else(|| meet_in(a, b, ctx))
         } else {
             float_meet(self, other, ctx)
         }
@@ -92,7 +92,7 @@ impl<N: Num> YinSet3<N> {
 }
 
 /// The meet by the general arrangement alone, never by the transversal one (the oracle of the
-/// transversal and grid meets' tests).
+/// transversal meets' tests, float and exact).
 #[cfg(test)]
 pub(crate) fn general_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N> {
     match (x.brep(), y.brep()) {
