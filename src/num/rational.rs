@@ -467,7 +467,6 @@ fn digits(s: &str) -> BigInt {
 
 /// `v` within 3 ulps (numerator and denominator rounded, then divided: cheaper than the
 /// correctly rounded `to_f64`); NaN for a big value out of `f64`'s range ([`Big::boxed`]).
-#[inline]
 fn approx(v: &Rational) -> f64 {
     match &v.0 {
         Repr::Small(n, 1) => *n as f64,
@@ -480,7 +479,6 @@ fn approx(v: &Rational) -> f64 {
 /// (a rational sum would take a gcd at every step): with every coordinate `n / d`, `d > 0`,
 /// each difference is an integer over a positive product of denominators, and the two products
 /// compare as `n₁n₂·d_by·d_cx` against `n₃n₄·d_bx·d_cy` (the factors `d_ax·d_ay` cancel).
-#[inline(never)]
 fn fraction_free_orient(a: [&Rational; 2], b: [&Rational; 2], c: [&Rational; 2]) -> Ordering {
     let [ax, ay, bx, by, cx, cy] = [a[0], a[1], b[0], b[1], c[0], c[1]].map(|v| v.big());
     let diff = |p: &BigRational, q: &BigRational| p.numer() * q.denom() - q.numer() * p.denom();
