@@ -1,9 +1,9 @@
 //! How two triangles of different operands meet, decided from exact orientations of their
 //! corners ([`super::corners`]; seed 004 step 1 for the cases [`super::transversal`]
-//! constructs without the general arrangement). Where two triangles cross, each meets the line of the two planes in a
-//! segment — from one straddling edge's pierce point to the other's, or from a shared corner
-//! or a vertex on the other's plane to the opposite edge's — and the triangles meet in the
-//! overlap of the two segments. Each end of the overlap is an end of one segment strictly
+//! constructs without the general arrangement). Where two triangles cross, each meets the line
+//! of the two planes in a segment — from one straddling edge's pierce point to the other's, or
+//! from a shared corner or a vertex on the other's plane to the opposite edge's — and the
+//! triangles meet in the overlap of the two segments. Each end of the overlap is an end of one segment strictly
 //! inside the other (a pierce point or a vertex inside the other triangle) or an end of both
 //! (an edge of one operand through an edge of the other, or the shared corner), and is named
 //! by what defines it, so that every pair that finds it finds the same point.

@@ -36,10 +36,11 @@
 //! * **Validation** (`from_triangles`): degenerate faces are rejected and planar n-gons
 //!   triangulated; a complex whose triangles meet only in shared corners and edges is its own
 //!   arrangement (decided on `f64` values where the coordinates are `f64`s or, scaled, integers
-//!   of a common grid below 2⁵³, else on filtered rational orientations); otherwise the arrangement of the set against itself makes
-//!   legal contacts (T-junctions, a vertex or an edge on a face) conforming; then I2, I3 (an
-//!   odd fin count means an open surface, non-alternating fins crossing sheets) and I4 (one ray
-//!   per edge-connected component) are checked. Errors name the face or edge.
+//!   of a common grid below 2⁵³, else on filtered rational orientations); otherwise the
+//!   arrangement of the set against itself makes legal contacts (T-junctions, a vertex or an
+//!   edge on a face) conforming; then I2, I3 (an odd fin count means an open surface,
+//!   non-alternating fins crossing sheets) and I4 (one ray per edge-connected component) are
+//!   checked. Errors name the face or edge.
 //! * **Triangle–triangle** (seed 004 step 1): box pairs by sweep and prune, then each
 //!   non-coplanar pair by the signs of each triangle's corners against the other's plane and the
 //!   overlap of the two clipped intervals on the planes' line; coplanar pairs in the plane's
