@@ -251,22 +251,46 @@ pub(crate) fn balanced_sum<N: Num>(mut terms: Vec<N>) -> N {
 }
 
 /// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within 3 ulps of
-/// the exact ones, if the error bound proves it; `None` if it cannot decide.
+/// the exact ones, if the error bound proves it; `None` if it cannot decide
+/// ([`filtered_orient_sum`] of one point).
+pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
+    filtered_orient_sum(a, b, [c])
+}
+
+/// The sign of the sum of `(b − a) × (cᵢ − a)` over the points `c` — for three points, the
+/// orientation of their centroid, which is never constructed — evaluated in `f64` from
+/// coordinates each within 3 ulps of the exact ones, if the error bound proves it; `None` if
+/// it cannot decide.
 ///
 /// A semi-static bound, as [`filtered_orient3d`]'s: with M the largest coordinate, u = 2⁻⁵³
 /// and D the largest computed difference, each difference is off by at most e = 8M·u and every
 /// difference is at most D′ = D + e; each product is then off by at most 2D′e + e² ≤ 3D′e, and
-/// the determinant by 6D′e + 6D′²u; twice that is safe.
-pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
-    let m = [a[0], a[1], b[0], b[1], c[0], c[1]]
+/// each determinant by E = 6D′e + 6D′²u. Each computed determinant is at most 2D′² + E, so
+/// adding K of them rounds by at most (K − 1)·u·K·(2D′² + E): the sum is off by at most
+/// K·E + (K − 1)·u·K·(2D′² + E), and twice that is safe.
+pub(crate) fn filtered_orient_sum<const K: usize>(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [[f64; 2]; K],
+) -> Option<Ordering> {
+    let mut m = [a[0], a[1], b[0], b[1]]
         .iter()
         .fold(0.0f64, |m, v| m.max(v.abs()));
-    let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
-    let det = u[0] * v[1] - u[1] * v[0];
+    let u = [b[0] - a[0], b[1] - a[1]];
+    let mut reach = u[0].abs().max(u[1].abs());
+    let mut det = 0.0;
+    for c in c {
+        m = m.max(c[0].abs()).max(c[1].abs());
+        let v = [c[0] - a[0], c[1] - a[1]];
+        reach = reach.max(v[0].abs()).max(v[1].abs());
+        det += u[0] * v[1] - u[1] * v[0];
+    }
     let unit = f64::EPSILON * 0.5;
     let e = 8.0 * m * unit;
-    let reach = [u, v].iter().flatten().fold(0.0f64, |s, x| s.max(x.abs())) + e;
-    let bound = 2.0 * reach * (6.0 * e + 6.0 * reach * unit);
+    let reach = reach + e;
+    let one = reach * (6.0 * e + 6.0 * reach * unit);
+    let k = K as f64;
+    let bound = 2.0 * (k * one + (k - 1.0) * unit * k * (2.0 * reach * reach + one));
     // Below 1e-140 products of two differences could lose bits to underflow.
     if !det.is_finite() || !bound.is_finite() || m.is_nan() || reach < 1e-140 {
         return None;
@@ -353,6 +377,68 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The exact value of `x` moved by `k` quarter ulps (so within 3 ulps for |k| ≤ 12).
+    fn off_by(x: f64, k: i64) -> Rational {
+        let ulp = (x.abs().max(f64::MIN_POSITIVE)).next_up() - x.abs().max(f64::MIN_POSITIVE);
+        Rational::from_f64(x).expect("finite")
+            + Rational::from_f64(ulp / 4.0).expect("finite") * Rational::from_i64(k)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(3000)))]
+
+        /// Where [`filtered_orient_sum`] decides, its sign is the exact sign of the sum of the
+        /// three orientations, on exact values up to 3 ulps from the `f64`s it is given. The
+        /// points are often on the line (zero terms), two of them mirror images across a
+        /// point of the line (terms that cancel: a zero sum), or either nudged by an ulp.
+        #[test]
+        fn filtered_orient_sum_is_the_exact_sign_of_the_sum(
+            a in proptest::array::uniform2(-(1i64 << 52)..(1i64 << 52)),
+            b in proptest::array::uniform2(-(1i64 << 52)..(1i64 << 52)),
+            c in proptest::array::uniform2(-1000i32..1000),
+            t in proptest::array::uniform3(-8i32..8),
+            kind in 0u8..4,
+            scale in -40i32..40,
+            fine in proptest::bool::ANY,
+            nudge in proptest::array::uniform2(-1i32..2),
+            off in proptest::array::uniform::<_, 10>(-12i64..13),
+        ) {
+            let s = 2f64.powi(scale);
+            let f = |p: [i32; 2]| p.map(|v| f64::from(v) * s);
+            // Small integers (every point of the line below is exact), or full mantissas
+            // (points of the line rounded: sums near zero whose f64 terms round).
+            let g = |p: [i64; 2]| match fine {
+                true => p.map(|v| v as f64 * s / 2f64.powi(43)),
+                false => f(p.map(|v| (v >> 42) as i32)),
+            };
+            let (a, b) = (g(a), g(b));
+            // A point of the line a + t (b − a), as f64 computes it.
+            let on = |t: i32| [0, 1].map(|k| a[k] + f64::from(t) * (b[k] - a[k]));
+            let c0 = f(c);
+            let mirror = |p: [f64; 2], m: [f64; 2]| [2.0 * m[0] - p[0], 2.0 * m[1] - p[1]];
+            let mut cs = match kind {
+                0 => [on(t[0]), on(t[1]), on(t[2])],
+                1 => [c0, mirror(c0, on(t[0])), on(t[1])],
+                2 => [c0, on(t[0]), on(t[1])],
+                _ => [c0, f([t[0], t[1]]), f([t[2], t[0]])],
+            };
+            cs[0][0] += f64::from(nudge[0]) * f64::EPSILON * cs[0][0].abs();
+            cs[1][1] += f64::from(nudge[1]) * f64::EPSILON * cs[1][1].abs();
+            let mut k = off.into_iter();
+            let mut exact = |p: [f64; 2]| p.map(|x| off_by(x, k.next().unwrap_or(0)));
+            let (ea, eb) = (exact(a), exact(b));
+            let ec = cs.map(&mut exact);
+            let det = |c: &[Rational; 2]| {
+                (eb[0].clone() - ea[0].clone()) * (c[1].clone() - ea[1].clone())
+                    - (eb[1].clone() - ea[1].clone()) * (c[0].clone() - ea[0].clone())
+            };
+            let sum = ec.iter().fold(Rational::from_i64(0), |acc, c| acc + det(c));
+            if let Some(sign) = filtered_orient_sum(a, b, cs) {
+                proptest::prop_assert_eq!(sign, sum.sign());
+            }
+        }
+    }
 
     #[test]
     fn filter_decides_clear_cases_and_defers_near_degenerate_ones() {

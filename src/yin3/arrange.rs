@@ -6,13 +6,14 @@
 //! pieces form a conforming complex.
 
 use super::geom::{f64_box, in_triangle3, Chart};
-use super::tri::{apart_across, corners_after, intersect, meet_only_at};
+use super::locate::TriBoxes;
+use super::tri::{apart_across, corners_after, intersect_with, meet_only_at};
 use super::triangulate::{triangulate, TriangulateError};
 use crate::kernel::{orient3d, Point, Point3};
 use crate::num::Num;
 use foldhash::HashMap;
-use rstar::{primitives::GeomWithData, primitives::Rectangle, RTree};
 use smallvec::SmallVec;
+use std::cell::OnceCell;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 
@@ -91,7 +92,6 @@ pub(crate) enum ArrangeError<N> {
 }
 
 /// The arrangement of a soup's triangles against each other.
-#[derive(Clone, Debug)]
 pub(crate) struct Arrangement {
     /// The pieces: each a triangle over the soup's points, oriented as its parent, with the
     /// index of its parent triangle.
@@ -102,6 +102,9 @@ pub(crate) struct Arrangement {
     /// For each triangle, the triangles it was intersected with that overlap it in an area
     /// of their common plane.
     pub coplanar: Vec<Vec<usize>>,
+    /// The boxes of the soup's triangles: for [`Pairs::Across`] each operand's, for
+    /// [`Pairs::All`] all of them, then none.
+    pub boxes: [TriBoxes; 2],
 }
 
 /// The arrangement of the soup's triangles (`soup.points` gains the contact points).
@@ -119,17 +122,16 @@ pub(crate) fn arrange<N: Num>(
             Pairs::All => 0,
         })
         .collect();
-    let trees: [RTree<GeomWithData<Rectangle<[f64; 3]>, usize>>; 2] = [0, 1].map(|g| {
-        RTree::bulk_load(
+    let boxes: [TriBoxes; 2] = [0, 1].map(|g| {
+        TriBoxes::new(
             (0..n)
                 .filter(|&i| group[i] == g)
-                .map(|i| GeomWithData::new(Rectangle::from_aabb(f64_box(soup.corners(i))), i))
-                .collect(),
+                .map(|i| (i, soup.corners(i))),
         )
     });
     let tree_against = |i: usize| match pairs {
-        Pairs::Across => &trees[1 - group[i]],
-        Pairs::All => &trees[0],
+        Pairs::Across => &boxes[1 - group[i]],
+        Pairs::All => &boxes[0],
     };
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut coplanar: Vec<Vec<usize>> = vec![Vec::new(); n];
@@ -138,20 +140,19 @@ pub(crate) fn arrange<N: Num>(
     // intersections (constructed exactly on both triangles), which the distribution below need
     // not test again; float mode's constructed points are rounded and are tested like others.
     let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
+    // Each triangle's normal, made once where a pair needs it.
+    let normals: Vec<OnceCell<Point3<N>>> = (0..n).map(|_| OnceCell::new()).collect();
     for i in 0..n {
         let b = f64_box(soup.corners(i));
-        let mut others: Vec<usize> = tree_against(i)
-            .locate_in_envelope_intersecting(&b)
-            .map(|g| g.data)
-            .filter(|&j| j > i)
-            .collect();
+        let mut others: Vec<usize> = tree_against(i).meeting(&b).filter(|&j| j > i).collect();
         others.sort_unstable();
         for j in others {
             if let Some(shared) = shared_only(&soup.points, soup.tris[i], soup.tris[j], ctx) {
                 contact.extend(shared);
                 continue;
             }
-            let Some(c) = intersect(soup.corners(i), soup.corners(j), ctx) else {
+            let (t, s) = (soup.corners(i), soup.corners(j));
+            let Some(c) = intersect_with(t, s, [&normals[i], &normals[j]], ctx) else {
                 continue;
             };
             if c.interiors_meet && pairs == Pairs::All {
@@ -162,8 +163,8 @@ pub(crate) fn arrange<N: Num>(
                     point: c.points[0].clone(),
                 });
             }
-            for p in &c.points {
-                let v = soup.intern(p);
+            let ids: SmallVec<[usize; 6]> = c.points.iter().map(|p| soup.intern(p)).collect();
+            for &v in &ids {
                 contact.insert(v);
                 for t in [i, j] {
                     if N::EXACT && !soup.tris[t].contains(&v) {
@@ -175,24 +176,14 @@ pub(crate) fn arrange<N: Num>(
                 coplanar[i].push(j);
                 coplanar[j].push(i);
             }
-            for (p, q) in &c.cuts_t {
-                let e = (soup.intern(p), soup.intern(q));
-                cuts[i].push(e);
-            }
-            for (p, q) in &c.cuts_s {
-                let e = (soup.intern(p), soup.intern(q));
-                cuts[j].push(e);
-            }
+            cuts[i].extend(c.cuts_t.iter().map(|&(p, q)| (ids[p], ids[q])));
+            cuts[j].extend(c.cuts_s.iter().map(|&(p, q)| (ids[p], ids[q])));
         }
     }
     // Every contact point goes to every triangle containing it.
     for &v in &contact {
         let b = f64_box([&soup.points[v]]);
-        for g in trees
-            .iter()
-            .flat_map(|t| t.locate_in_envelope_intersecting(&b))
-        {
-            let t = g.data;
+        for t in boxes.iter().flat_map(|x| x.meeting(&b)) {
             if !soup.tris[t].contains(&v)
                 && !extra[t].contains(&v)
                 && in_triangle3(soup.corners(t), &soup.points[v], ctx)
@@ -228,6 +219,7 @@ pub(crate) fn arrange<N: Num>(
         pieces,
         contact: on_contact,
         coplanar,
+        boxes,
     })
 }
 

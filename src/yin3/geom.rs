@@ -1,7 +1,8 @@
 //! Plane keys, 2D charts of planes, and point/triangle predicates (yin3 docs: *Primitives*).
 
 use crate::kernel::{orient, orient3d, Point, Point3};
-use crate::num::{exact_orient_f64, Num};
+use crate::num::{exact_orient_f64, filtered_orient_sum, Num};
+use std::cell::OnceCell;
 use std::cmp::Ordering;
 
 /// |v|.
@@ -201,6 +202,53 @@ pub(crate) fn in_triangle2<N: Num>(
         && orient(c, a, p, ctx) != Ordering::Less
 }
 
+/// A 2D triangle with its corners' approximations ([`Num::approx`]), the filters' input.
+pub(crate) struct Triangle2<N> {
+    pub corners: [Point<N>; 3],
+    approx: [[f64; 2]; 3],
+}
+
+impl<N: Num> Triangle2<N> {
+    /// The triangle with the corners `corners`.
+    pub(crate) fn new(corners: [Point<N>; 3]) -> Triangle2<N> {
+        let approx = corners.each_ref().map(|p| [p.x.approx(), p.y.approx()]);
+        Triangle2 { corners, approx }
+    }
+}
+
+/// True if the non-degenerate triangle `piece` lies in the closed counterclockwise triangle
+/// `tri`, given that no side of `tri` passes through its interior (as no cut passes through a
+/// piece of an arrangement): then it does iff its centroid lies inside `tri`, never on a side,
+/// so that exact backends decide each side by the floating-point filter of the three corners'
+/// orientations (corners on a side, whose zero no filter certifies, then cost nothing) and
+/// construct the centroid only where the filter cannot tell. Float backends test every corner
+/// as [`in_triangle2`].
+pub(crate) fn piece_in_triangle2<N: Num>(
+    tri: &Triangle2<N>,
+    piece: &Triangle2<N>,
+    ctx: &N::Ctx,
+) -> bool {
+    let [a, b, c] = &tri.corners;
+    if !N::EXACT {
+        return piece.corners.iter().all(|p| in_triangle2(a, b, c, p, ctx));
+    }
+    let centroid = OnceCell::new();
+    let left = |i: usize, j: usize| {
+        let side = filtered_orient_sum(tri.approx[i], tri.approx[j], piece.approx);
+        side.unwrap_or_else(|| {
+            let centroid = centroid.get_or_init(|| {
+                let [p, q, r] = &piece.corners;
+                let three = N::from_i64(3);
+                let mean =
+                    |x: [&N; 3]| (x[0].clone() + x[1].clone() + x[2].clone()) / three.clone();
+                Point::new(mean([&p.x, &q.x, &r.x]), mean([&p.y, &q.y, &r.y]))
+            });
+            orient(&tri.corners[i], &tri.corners[j], centroid, ctx)
+        }) == Ordering::Greater
+    };
+    left(0, 1) && left(1, 2) && left(2, 0)
+}
+
 /// True if `p` lies in the closed triangle `abc` of space (non-degenerate).
 pub(crate) fn in_triangle3<N: Num>(t: [&Point3<N>; 3], p: &Point3<N>, ctx: &N::Ctx) -> bool {
     let [a, b, c] = t;
@@ -256,6 +304,35 @@ mod tests {
         ]
     }
 
+    /// The point (x, y) of small integers.
+    fn q(x: i64, y: i64) -> Point<Rational> {
+        Point::int(x, y)
+    }
+
+    /// True if the closed counterclockwise triangles `t` and `s` have disjoint interiors: a
+    /// side of either has the other in its closed outer half-plane (the separating axes of
+    /// two triangles).
+    fn interiors_apart(t: &[Point<Rational>; 3], s: &[Point<Rational>; 3]) -> bool {
+        let outside = |x: &[Point<Rational>; 3], y: &[Point<Rational>; 3]| {
+            (0..3).any(|i| {
+                y.iter()
+                    .all(|p| orient(&x[i], &x[(i + 1) % 3], p, &()) != Ordering::Greater)
+            })
+        };
+        outside(t, s) || outside(s, t)
+    }
+
+    /// A thin piece outside the triangle by its corner whose corners lie left of two of the
+    /// triangle's side lines each (left of all three between them): not in the triangle.
+    #[test]
+    fn a_piece_beside_a_corner_is_not_in_the_triangle() {
+        let tri = Triangle2::new([q(0, 0), q(2, 0), q(0, 2)]);
+        let piece = Triangle2::new([q(-2, 1), q(1, -2), q(-2, -2)]);
+        assert!(!piece_in_triangle2(&tri, &piece, &()));
+        let inside = Triangle2::new([q(0, 0), q(1, 0), q(0, 1)]);
+        assert!(piece_in_triangle2(&tri, &inside, &()));
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(2000)))]
 
@@ -305,6 +382,55 @@ mod tests {
                     prop_assert_eq!(Some(3 - chart.keep[0] - chart.keep[1]), axis);
                 }
             }
+        }
+    }
+
+    proptest! {
+        // Most pairs of random triangles cross, which the premise excludes.
+        #![proptest_config(ProptestConfig {
+            max_global_rejects: 100_000,
+            ..ProptestConfig::with_cases(yinset_testkit::cases(2000))
+        })]
+
+        /// [`piece_in_triangle2`] is the test of every corner on pieces that lie in the
+        /// triangle or have no interior point in common with it (the arrangement's promise),
+        /// half of them made inside from barycentric weights that are often zero (corners on
+        /// sides and at corners), the others anywhere near it (touching it, beside a corner).
+        #[test]
+        fn a_piece_is_in_the_triangle_iff_its_corners_are(
+            t in proptest::array::uniform3((-6i64..7, -6i64..7)),
+            weights in proptest::array::uniform3(proptest::array::uniform3(0i64..3)),
+            near in proptest::array::uniform3((-8i64..9, -8i64..9)),
+            inside in any::<bool>(),
+        ) {
+            let mut corners = t.map(|(x, y)| q(x, y));
+            let turn = orient(&corners[0], &corners[1], &corners[2], &());
+            prop_assume!(turn != Ordering::Equal);
+            if turn == Ordering::Less {
+                corners.swap(1, 2);
+            }
+            let mut piece: [Point<Rational>; 3] = match inside {
+                true => weights.map(|w| {
+                    let total = Rational::from_i64(w.iter().sum::<i64>().max(1));
+                    let mean = |k: fn(&Point<Rational>) -> &Rational| {
+                        (0..3).fold(Rational::from_i64(0), |s, i| {
+                            s + k(&corners[i]).clone() * Rational::from_i64(w[i])
+                        }) / total.clone()
+                    };
+                    Point::new(mean(|p| &p.x), mean(|p| &p.y))
+                }),
+                false => near.map(|(x, y)| q(x, y)),
+            };
+            match orient(&piece[0], &piece[1], &piece[2], &()) {
+                Ordering::Equal => prop_assume!(false),
+                Ordering::Less => piece.swap(1, 2),
+                Ordering::Greater => {}
+            }
+            let [a, b, c] = &corners;
+            let by_corners = piece.iter().all(|p| in_triangle2(a, b, c, p, &()));
+            prop_assume!(by_corners || interiors_apart(&corners, &piece));
+            let (tri, image) = (Triangle2::new(corners.clone()), Triangle2::new(piece));
+            prop_assert_eq!(piece_in_triangle2(&tri, &image, &()), by_corners);
         }
     }
 }

@@ -38,6 +38,11 @@ impl TriBoxes {
             .map(|g| g.data)
     }
 
+    /// The triangles whose box meets the box `b`.
+    pub(crate) fn meeting<'a>(&'a self, b: &AABB<[f64; 3]>) -> impl Iterator<Item = usize> + 'a {
+        self.0.locate_in_envelope_intersecting(b).map(|g| g.data)
+    }
+
     /// The triangles whose box meets the ray from `q` along +x: all that can count in
     /// [`winding`] at `q` (a crossing needs q's y and z in the triangle's closed box and a
     /// corner with x ≥ q's).

@@ -6,9 +6,9 @@
 use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
 use super::float::float_meet;
-use super::geom::{in_triangle2, Chart};
+use super::geom::{piece_in_triangle2, Chart, Triangle2};
 use super::grid::exact_transversal_meet;
-use super::locate::{winding, TriBoxes};
+use super::locate::winding;
 use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
 use crate::kernel::{orient, Point3};
@@ -141,17 +141,16 @@ fn meet_in<N: Num>(a: &Brep<N>, b: &Brep<N>, ctx: N::Ctx) -> Result<YinSet3<N>, 
     Ok(YinSet3::from_brep(brep, ctx))
 }
 
-/// The side of every piece relative to the other operand, decided without constructing a
-/// point where a patch has a vertex off the other's boundary. Membership is constant on
-/// patches: pieces of one operand joined across edges that are no edge of the other's pieces.
-/// (Every contact point goes to every triangle containing it, so an edge of one operand's
-/// pieces on the other's boundary is an edge of the other's pieces too, but for edges inside
-/// a coplanar overlap, which join only pieces on the other's boundary.) A piece lies on the
-/// other's boundary iff its corners lie in a closed triangle that overlaps its parent in their
-/// plane (the overlap's sides are cuts, so no piece straddles them), on the same or the
-/// opposite side as that triangle's orientation in the parent's chart tells. Every other patch
-/// is decided by one ray, from a vertex off the other's boundary where it has one (an input
-/// vertex), else from a piece's centroid.
+/// The side of every piece relative to the other operand, decided without constructing a point
+/// where a patch has a vertex off the other's boundary. Membership is constant on patches: pieces
+/// of one operand joined across edges that are no edge of the other's pieces. (Every contact point
+/// goes to every triangle containing it, so an edge of one operand's pieces on the other's boundary
+/// is an edge of the other's pieces too, but for edges inside a coplanar overlap, which join only
+/// pieces on the other's boundary.) A piece lies on the other's boundary iff it lies in a closed
+/// triangle that overlaps its parent in their plane (the overlap's sides are cuts, so no piece
+/// straddles them: [`piece_in_triangle2`]), on the same or the opposite side as that triangle's
+/// orientation in the parent's chart tells. Every other patch is decided by one ray, from a vertex
+/// off the other's boundary where it has one (an input vertex), else from a piece's centroid.
 fn classify<N: Num>(
     soup: &Soup<N>,
     arrangement: &Arrangement,
@@ -160,27 +159,22 @@ fn classify<N: Num>(
 ) -> Vec<Side> {
     let (pieces, contact) = (&arrangement.pieces, &arrangement.contact);
     let op = |i: usize| soup.operand[pieces[i].1] as usize;
-    let trees: [TriBoxes; 2] = [0u8, 1].map(|o| {
-        TriBoxes::new(
-            (0..soup.tris.len())
-                .filter(|&t| soup.operand[t] == o)
-                .map(|t| (t, soup.corners(t))),
-        )
-    });
-    // Patches across edges that are no edge of the other operand's pieces.
-    let mut edges: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
+    // Patches across edges that are no edge of the other operand's pieces: the pieces at
+    // each edge, grouped by sorting.
+    let mut at_edge: Vec<((usize, usize), usize)> = Vec::with_capacity(3 * pieces.len());
     for (i, (t, _)) in pieces.iter().enumerate() {
         for k in 0..3 {
             let (u, v) = (t[k], t[(k + 1) % 3]);
-            edges.entry((u.min(v), u.max(v))).or_default().push(i);
+            at_edge.push(((u.min(v), u.max(v)), i));
         }
     }
+    at_edge.sort_unstable();
     let mut uf = UnionFind::new(pieces.len());
-    for at in edges.values() {
-        let o = op(at[0]);
-        if at.len() > 1 && at.iter().all(|&i| op(i) == o) {
-            for w in &at[1..] {
-                uf.union(at[0], *w);
+    for at in at_edge.chunk_by(|x, y| x.0 == y.0) {
+        let o = op(at[0].1);
+        if at.len() > 1 && at.iter().all(|&(_, i)| op(i) == o) {
+            for &(_, w) in &at[1..] {
+                uf.union(at[0].1, w);
             }
         }
     }
@@ -191,31 +185,38 @@ fn classify<N: Num>(
             off_vertex.entry(uf.find(i)).or_insert(v);
         }
     }
-    // The chart of each parent with overlaps, made once (counterclockwise for the parent).
-    let charts: Vec<OnceCell<Chart>> = vec![OnceCell::new(); soup.tris.len()];
+    // For each parent with overlaps, made once: its chart (counterclockwise for it), and the
+    // triangles overlapping it there, counterclockwise, each with the side of the pieces in it.
+    type Overlaps<N> = (Chart, Vec<(Triangle2<N>, Side)>);
+    let overlaps: Vec<OnceCell<Overlaps<N>>> =
+        (0..soup.tris.len()).map(|_| OnceCell::new()).collect();
     // The side of piece `t` of `parent` if it lies in a triangle overlapping its parent.
     let on_overlap = |t: &[usize; 3], parent: usize| -> Option<Side> {
-        let overlaps = &arrangement.coplanar[parent];
-        if overlaps.is_empty() || !t.iter().all(|&v| contact[v]) {
+        if arrangement.coplanar[parent].is_empty() || !t.iter().all(|&v| contact[v]) {
             return None;
         }
-        let ch = charts[parent].get_or_init(|| {
+        let (ch, overlaps) = overlaps[parent].get_or_init(|| {
             let [a, b, c] = soup.corners(parent);
-            Chart::of_triangle(a, b, c)
+            let ch = Chart::of_triangle(a, b, c);
+            let overlaps = (arrangement.coplanar[parent].iter())
+                .map(|&s| {
+                    let mut other = soup.tris[s].map(|v| ch.project(&soup.points[v]));
+                    let turn = orient(&other[0], &other[1], &other[2], ctx);
+                    if turn == Ordering::Less {
+                        other.swap(1, 2);
+                    }
+                    let side = match turn {
+                        Ordering::Greater => Side::Same,
+                        _ => Side::Opposite,
+                    };
+                    (Triangle2::new(other), side)
+                })
+                .collect();
+            (ch, overlaps)
         });
-        let image = t.map(|v| ch.project(&soup.points[v]));
-        overlaps.iter().find_map(|&s| {
-            let mut other = soup.tris[s].map(|v| ch.project(&soup.points[v]));
-            let turn = orient(&other[0], &other[1], &other[2], ctx);
-            if turn == Ordering::Less {
-                other.swap(1, 2);
-            }
-            let [a, b, c] = &other;
-            (image.iter().all(|p| in_triangle2(a, b, c, p, ctx))).then_some(match turn {
-                Ordering::Greater => Side::Same,
-                _ => Side::Opposite,
-            })
-        })
+        let image = Triangle2::new(t.map(|v| ch.project(&soup.points[v])));
+        (overlaps.iter())
+            .find_map(|(other, side)| piece_in_triangle2(other, &image, ctx).then_some(*side))
     };
     let mut memo: HashMap<usize, Side> = HashMap::new();
     (0..pieces.len())
@@ -236,7 +237,7 @@ fn classify<N: Num>(
                         &centroid
                     }
                 };
-                let others = trees[1 - o].along_x(q).map(|s| soup.corners(s));
+                let others = arrangement.boxes[1 - o].along_x(q).map(|s| soup.corners(s));
                 if winding(others, q, ctx) + i64::from(!bounded[1 - o]) == 1 {
                     Side::Inside
                 } else {

@@ -5,6 +5,7 @@
 use super::geom::{dominant_axis, in_triangle2, normal, Chart};
 use crate::kernel::{classify, orient, orient3d, Contact, Point, Point3};
 use crate::num::Num;
+use std::cell::OnceCell;
 use std::cmp::Ordering;
 
 /// How two closed triangles `t` and `s` meet.
@@ -12,10 +13,11 @@ use std::cmp::Ordering;
 pub(crate) struct TriContact<N> {
     /// The vertices of the intersection (each a point of both triangles).
     pub points: Vec<Point3<N>>,
-    /// Segments of the intersection that `t` must be cut along.
-    pub cuts_t: Vec<(Point3<N>, Point3<N>)>,
-    /// Segments of the intersection that `s` must be cut along.
-    pub cuts_s: Vec<(Point3<N>, Point3<N>)>,
+    /// Segments of the intersection that `t` must be cut along (their ends' indices in
+    /// `points`).
+    pub cuts_t: Vec<(usize, usize)>,
+    /// Segments of the intersection that `s` must be cut along (as `cuts_t`).
+    pub cuts_s: Vec<(usize, usize)>,
     /// True if the relative interiors meet: the triangles cross (not coplanar) or overlap in
     /// an area (coplanar). Legal contacts — a vertex or an edge on the other — leave it false.
     pub interiors_meet: bool,
@@ -29,23 +31,46 @@ pub(crate) fn intersect<N: Num>(
     s: [&Point3<N>; 3],
     ctx: &N::Ctx,
 ) -> Option<TriContact<N>> {
+    intersect_with(t, s, [&OnceCell::new(), &OnceCell::new()], ctx)
+}
+
+/// [`intersect`], with each triangle's normal (b − a) × (c − a) taken from `normals` or made
+/// there where it is needed (an arrangement makes each once for all its pairs).
+pub(crate) fn intersect_with<N: Num>(
+    t: [&Point3<N>; 3],
+    s: [&Point3<N>; 3],
+    normals: [&OnceCell<Point3<N>>; 2],
+    ctx: &N::Ctx,
+) -> Option<TriContact<N>> {
+    let normal_of = |k: usize| {
+        let [a, b, c] = [t, s][k];
+        normals[k].get_or_init(|| normal(a, b, c))
+    };
     let s_side = t_side(t, s, ctx);
     if strictly_one_side(&s_side) {
         return None;
     }
     if s_side.iter().all(|o| *o == Ordering::Equal) {
-        return coplanar(t, s, ctx);
+        // A side of either outside which the other lies, found from orientations alone,
+        // before any contact is constructed.
+        if misses_in_plane(t, &s, ctx) || misses_in_plane(s, &t, ctx) {
+            return None;
+        }
+        return coplanar(t, s, normal_of(0), ctx);
     }
     let t_sides = t_side(s, t, ctx);
-    if strictly_one_side(&t_sides) || separated(t, s, &t_sides, &s_side, ctx) {
+    if off_plane_of(s, &s_side, t, ctx)
+        || off_plane_of(t, &t_sides, s, ctx)
+        || separated(t, s, &t_sides, &s_side, ctx)
+    {
         return None;
     }
     // Both meet the line L where the planes meet; order points along L's dominant axis.
-    let (nt, ns) = (normal(t[0], t[1], t[2]), normal(s[0], s[1], s[2]));
-    let axis = dominant_axis(&nt.cross(&ns));
+    let (nt, ns) = (normal_of(0), normal_of(1));
+    let axis = dominant_axis(&nt.cross(ns));
     let key = |p: &Point3<N>| p.coord(axis).clone();
-    let it = section(t, (&ns, s[0]), &t_sides, axis);
-    let is = section(s, (&nt, t[0]), &s_side, axis);
+    let it = section(t, (ns, s[0]), &t_sides, axis);
+    let is = section(s, (nt, t[0]), &s_side, axis);
     let lo = if key(&it.0) >= key(&is.0) {
         &it.0
     } else {
@@ -66,11 +91,10 @@ pub(crate) fn intersect<N: Num>(
             coplanar: false,
         }),
         Ordering::Less => {
-            let cut = (lo.clone(), hi.clone());
             Some(TriContact {
                 points: vec![lo.clone(), hi.clone()],
-                cuts_t: vec![cut.clone()],
-                cuts_s: vec![cut],
+                cuts_t: vec![(0, 1)],
+                cuts_s: vec![(0, 1)],
                 // Both planes cut through the other triangle's interior, and the open intervals
                 // (lo, hi) lie in both relative interiors.
                 interiors_meet: proper(&t_sides) && proper(&s_side),
@@ -405,11 +429,16 @@ fn section<N: Num>(
     (lo, hi)
 }
 
-/// Coplanar triangles: contacts of their edges and vertices in a 2D chart of the plane.
-fn coplanar<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N::Ctx) -> Option<TriContact<N>> {
-    let n = normal(t[0], t[1], t[2]);
+/// Coplanar triangles, `t` with normal `n`: contacts of their edges and vertices in a 2D
+/// chart of the plane.
+fn coplanar<N: Num>(
+    t: [&Point3<N>; 3],
+    s: [&Point3<N>; 3],
+    n: &Point3<N>,
+    ctx: &N::Ctx,
+) -> Option<TriContact<N>> {
     let d = n.dot(t[0]);
-    let chart = Chart::of_normal(&n);
+    let chart = Chart::of_normal(n);
     let t2 = t.map(|p| chart.project(p));
     let mut s2 = s.map(|p| chart.project(p));
     if orient(&s2[0], &s2[1], &s2[2], ctx) == Ordering::Less {
@@ -445,12 +474,16 @@ fn coplanar<N: Num>(t: [&Point3<N>; 3], s: [&Point3<N>; 3], ctx: &N::Ctx) -> Opt
     if all.is_empty() {
         return None;
     }
-    let lift = |q: &Point<N>| chart.lift(q, &n, &d);
-    let cuts = |on: [Vec<Point<N>>; 3]| -> Vec<(Point3<N>, Point3<N>)> {
+    let lift = |q: &Point<N>| chart.lift(q, n, &d);
+    let at = |q: &Point<N>| {
+        all.binary_search(q)
+            .expect("every contact point is in `all`")
+    };
+    let cuts = |on: [Vec<Point<N>>; 3]| -> Vec<(usize, usize)> {
         on.into_iter()
             .filter_map(|v| {
                 let (lo, hi) = (v.iter().min()?, v.iter().max()?);
-                (lo != hi).then(|| (lift(lo), lift(hi)))
+                (lo != hi).then(|| (at(lo), at(hi)))
             })
             .collect()
     };
@@ -476,6 +509,16 @@ mod tests {
 
     fn p(x: i64, y: i64, z: i64) -> Point3<Rational> {
         Point3::int(x, y, z)
+    }
+
+    /// The ends of the cuts `cuts` of the contact `c`.
+    fn ends(
+        c: &TriContact<Rational>,
+        cuts: &[(usize, usize)],
+    ) -> Vec<(Point3<Rational>, Point3<Rational>)> {
+        (cuts.iter())
+            .map(|&(i, j)| (c.points[i].clone(), c.points[j].clone()))
+            .collect()
     }
 
     /// Coplanar triangles are apart when the line of a side of either has the other strictly
@@ -510,7 +553,7 @@ mod tests {
         assert_eq!(tip.points, vec![p(1, 1, 0)]);
         let edge = intersect([&a, &b, &c], [&p(1, 1, 0), &p(2, 1, 0), &p(1, 2, 3)], &()).unwrap();
         assert!(!edge.interiors_meet);
-        assert_eq!(edge.cuts_t, vec![(p(1, 1, 0), p(2, 1, 0))]);
+        assert_eq!(ends(&edge, &edge.cuts_t), vec![(p(1, 1, 0), p(2, 1, 0))]);
     }
 
     #[test]
@@ -522,7 +565,7 @@ mod tests {
         // Mirror image across y = 0: touches along [1,2] on the x axis only.
         let t = intersect([&a, &b, &c], [&p(1, 0, 0), &p(1, -1, 0), &p(3, 0, 0)], &()).unwrap();
         assert!(!t.interiors_meet);
-        assert_eq!(t.cuts_t, vec![(p(1, 0, 0), p(2, 0, 0))]);
+        assert_eq!(ends(&t, &t.cuts_t), vec![(p(1, 0, 0), p(2, 0, 0))]);
         assert!(intersect([&a, &b, &c], [&p(5, 5, 0), &p(6, 5, 0), &p(5, 6, 0)], &()).is_none());
     }
 
