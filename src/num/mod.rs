@@ -263,11 +263,13 @@ pub(crate) fn filtered_orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<O
 /// it cannot decide.
 ///
 /// A semi-static bound, as [`filtered_orient3d`]'s: with M the largest coordinate, u = 2⁻⁵³
-/// and D the largest computed difference, each difference is off by at most e = 8M·u and every
-/// difference is at most D′ = D + e; each product is then off by at most 2D′e + e² ≤ 3D′e, and
-/// each determinant by E = 6D′e + 6D′²u. Each computed determinant is at most 2D′² + E, so
-/// adding K of them rounds by at most (K − 1)·u·K·(2D′² + E): the sum is off by at most
-/// K·E + (K − 1)·u·K·(2D′² + E), and twice that is safe.
+/// and D the largest computed difference, each difference is off by at most e = 8M·u (3u·|x|
+/// per input, and the subtraction's rounding) and every difference is at most D′ = D + e; each
+/// product is then off by at most 2D′e + e² ≤ 3D′e, and each determinant by
+/// E = 6D′e + 6D′²u. Each computed determinant is at most 2D′² + E, so adding K of them
+/// rounds by at most (K − 1)·u·K·(2D′² + E): the sum is off by at most
+/// K·E + (K − 1)·u·K·(2D′² + E). Twice that is returned, which also covers inputs 4 whole
+/// ulps off ([`Num::approx`]'s promise: e ≤ 18M·u).
 pub(crate) fn filtered_orient_sum<const K: usize>(
     a: [f64; 2],
     b: [f64; 2],
@@ -290,9 +292,13 @@ pub(crate) fn filtered_orient_sum<const K: usize>(
     let reach = reach + e;
     let one = reach * (6.0 * e + 6.0 * reach * unit);
     let k = K as f64;
-    let bound = 2.0 * (k * one + (k - 1.0) * unit * k * (2.0 * reach * reach + one));
+    let rounding = match K {
+        1 => 0.0,
+        _ => (k - 1.0) * unit * k * (2.0 * reach * reach + one),
+    };
+    let bound = 2.0 * (k * one + rounding);
     // Below 1e-140 products of two differences could lose bits to underflow.
-    if !det.is_finite() || !bound.is_finite() || m.is_nan() || reach < 1e-140 {
+    if !det.is_finite() || !bound.is_finite() || reach < 1e-140 {
         return None;
     }
     if det > bound {
@@ -451,6 +457,15 @@ mod tests {
             Some(Ordering::Less)
         );
         assert_eq!(filtered_orient([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]), None);
+        // Three points: one on the line, two left of it (the centroid is left).
+        let cs = [[2.0, 0.0], [0.0, 1.0], [5.0, 0.5]];
+        assert_eq!(
+            filtered_orient_sum([0.0, 0.0], [1.0, 0.0], cs),
+            Some(Ordering::Greater)
+        );
+        // Mirror images across the line: a zero sum, which the filter leaves undecided.
+        let cs = [[2.0, 1.0], [2.0, -1.0], [3.0, 0.0]];
+        assert_eq!(filtered_orient_sum([0.0, 0.0], [1.0, 0.0], cs), None);
         assert_eq!(
             filtered_orient([0.0, 0.0], [1.0, 1.0], [2.0, 2.0 + 1e-15]),
             None

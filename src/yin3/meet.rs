@@ -188,17 +188,17 @@ fn classify<N: Num>(
     // For each parent with overlaps, made once: its chart (counterclockwise for it), and the
     // triangles overlapping it there, counterclockwise, each with the side of the pieces in it.
     type Overlaps<N> = (Chart, Vec<(Triangle2<N>, Side)>);
-    let overlaps: Vec<OnceCell<Overlaps<N>>> =
+    let overlap_cells: Vec<OnceCell<Overlaps<N>>> =
         (0..soup.tris.len()).map(|_| OnceCell::new()).collect();
     // The side of piece `t` of `parent` if it lies in a triangle overlapping its parent.
     let on_overlap = |t: &[usize; 3], parent: usize| -> Option<Side> {
         if arrangement.coplanar[parent].is_empty() || !t.iter().all(|&v| contact[v]) {
             return None;
         }
-        let (ch, overlaps) = overlaps[parent].get_or_init(|| {
+        let (ch, tris_over) = overlap_cells[parent].get_or_init(|| {
             let [a, b, c] = soup.corners(parent);
             let ch = Chart::of_triangle(a, b, c);
-            let overlaps = (arrangement.coplanar[parent].iter())
+            let tris_over = (arrangement.coplanar[parent].iter())
                 .map(|&s| {
                     let mut other = soup.tris[s].map(|v| ch.project(&soup.points[v]));
                     let turn = orient(&other[0], &other[1], &other[2], ctx);
@@ -212,10 +212,10 @@ fn classify<N: Num>(
                     (Triangle2::new(other), side)
                 })
                 .collect();
-            (ch, overlaps)
+            (ch, tris_over)
         });
         let image = Triangle2::new(t.map(|v| ch.project(&soup.points[v])));
-        (overlaps.iter())
+        (tris_over.iter())
             .find_map(|(other, side)| piece_in_triangle2(other, &image, ctx).then_some(*side))
     };
     let mut memo: HashMap<usize, Side> = HashMap::new();

@@ -58,11 +58,11 @@ pub(crate) fn intersect_with<N: Num>(
         }
         return coplanar(t, s, normal_of(0), ctx);
     }
+    if off_plane_of(s, &s_side, t, ctx) {
+        return None;
+    }
     let t_sides = t_side(s, t, ctx);
-    if off_plane_of(s, &s_side, t, ctx)
-        || off_plane_of(t, &t_sides, s, ctx)
-        || separated(t, s, &t_sides, &s_side, ctx)
-    {
+    if off_plane_of(t, &t_sides, s, ctx) || separated(t, s, &t_sides, &s_side, ctx) {
         return None;
     }
     // Both meet the line L where the planes meet; order points along L's dominant axis.
