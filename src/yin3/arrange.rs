@@ -9,7 +9,7 @@ use super::geom::{f64_box, in_triangle3, Chart};
 use super::locate::TriBoxes;
 use super::tri::{apart_across, corners_after, intersect_with, meet_only_at};
 use super::triangulate::{triangulate, TriangulateError};
-use crate::kernel::{orient3d, Point, Point3};
+use crate::kernel::{orient, orient3d, Point, Point3};
 use crate::num::Num;
 use foldhash::HashMap;
 use smallvec::SmallVec;
@@ -199,12 +199,14 @@ pub(crate) fn arrange<N: Num>(
             continue;
         }
         let [a, b, c] = soup.corners(t);
+        let chart = Chart::of_triangle(a, b, c);
+        let (sides, inside) = by_side(&soup.points, soup.tris[t], &chart, &extra[t], ctx);
         let cut = retriangulate(
             &soup.points,
             soup.tris[t],
-            Chart::of_triangle(a, b, c),
-            [&[]; 3],
-            extra[t].iter().copied(),
+            chart,
+            [&sides[0], &sides[1], &sides[2]],
+            inside,
             &cuts[t],
             ctx,
         )
@@ -221,6 +223,36 @@ pub(crate) fn arrange<N: Num>(
         coplanar,
         boxes,
     })
+}
+
+/// The points `extra` of the closed triangle `tri` (indices into `points`, none a corner),
+/// as those inside each side (side k from corner k to corner k + 1) and the others, where the
+/// predicates are exact (a tolerance could put a point on a side that is not); else all as
+/// others. Re-triangulation splits the sides at the former without locating them, and may
+/// then cut the triangle along chains of cuts without any predicate.
+fn by_side<N: Num>(
+    points: &[Point3<N>],
+    tri: [usize; 3],
+    chart: &Chart,
+    extra: &BTreeSet<usize>,
+    ctx: &N::Ctx,
+) -> ([SmallVec<[usize; 4]>; 3], SmallVec<[usize; 8]>) {
+    let mut sides: [SmallVec<[usize; 4]>; 3] = Default::default();
+    if !N::EXACT {
+        return (sides, extra.iter().copied().collect());
+    }
+    let corners = tri.map(|v| chart.project(&points[v]));
+    let mut inside = SmallVec::new();
+    for &v in extra {
+        let p = chart.project(&points[v]);
+        let on = (0..3)
+            .find(|&k| orient(&corners[k], &corners[(k + 1) % 3], &p, ctx) == Ordering::Equal);
+        match on {
+            Some(k) => sides[k].push(v),
+            None => inside.push(v),
+        }
+    }
+    (sides, inside)
 }
 
 /// The shared vertices of triangles `t` and `s` (indices into `points`) if they are the whole
@@ -293,4 +325,49 @@ pub(crate) fn retriangulate<N: Num>(
     let on_side = [&on_side[0][..], &on_side[1][..], &on_side[2][..]];
     let tris = triangulate(&pts, [0, 1, 2], on_side, &cons, ctx)?;
     Ok(tris.into_iter().map(|tri| tri.map(|k| ids[k])).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Rational;
+
+    /// Points of a triangle's sides are told from those inside it, each by its side, and the
+    /// triangle re-triangulated with them is tiled: the pieces' areas sum to its own.
+    #[test]
+    fn points_on_sides_are_told_apart_and_the_pieces_tile() {
+        let p = |x, y| Point3::<Rational>::int(x, y, 0);
+        let points = vec![
+            p(0, 0),
+            p(4, 0),
+            p(0, 4),
+            p(2, 0),
+            p(2, 2),
+            p(0, 1),
+            p(1, 1),
+            p(3, 1),
+        ];
+        let tri = [0, 1, 2];
+        let chart = Chart::of_triangle(&points[0], &points[1], &points[2]);
+        let extra: BTreeSet<usize> = (3..points.len()).collect();
+        let (sides, inside) = by_side(&points, tri, &chart, &extra, &());
+        assert_eq!(
+            sides.each_ref().map(|s| s.to_vec()),
+            [vec![3], vec![4, 7], vec![5]]
+        );
+        assert_eq!(inside.to_vec(), vec![6]);
+        let cuts = [(3, 4), (5, 6)];
+        let side_slices = [&sides[0][..], &sides[1][..], &sides[2][..]];
+        let pieces = retriangulate(&points, tri, chart, side_slices, inside, &cuts, &()).unwrap();
+        let area = |t: [usize; 3]| {
+            let [a, b, c] = t.map(|v| chart.project(&points[v]));
+            (b.x.clone() - a.x.clone()) * (c.y.clone() - a.y.clone())
+                - (b.y.clone() - a.y.clone()) * (c.x.clone() - a.x.clone())
+        };
+        let total = pieces
+            .iter()
+            .fold(Rational::from_i64(0), |s, &t| s + area(t));
+        assert_eq!(total, area(tri));
+        assert!(pieces.iter().all(|&t| area(t) > Rational::from_i64(0)));
+    }
 }
