@@ -200,13 +200,13 @@ pub(crate) fn arrange<N: Num>(
         }
         let [a, b, c] = soup.corners(t);
         let chart = Chart::of_triangle(a, b, c);
-        let (sides, inside) = by_side(&soup.points, soup.tris[t], &chart, &extra[t], ctx);
+        let (sides, others) = by_side(&soup.points, soup.tris[t], &chart, &extra[t], ctx);
         let cut = retriangulate(
             &soup.points,
             soup.tris[t],
             chart,
             [&sides[0], &sides[1], &sides[2]],
-            inside,
+            others,
             &cuts[t],
             ctx,
         )
@@ -242,17 +242,17 @@ fn by_side<N: Num>(
         return (sides, extra.iter().copied().collect());
     }
     let corners = tri.map(|v| chart.project(&points[v]));
-    let mut inside = SmallVec::new();
+    let mut others = SmallVec::new();
     for &v in extra {
         let p = chart.project(&points[v]);
         let on = (0..3)
             .find(|&k| orient(&corners[k], &corners[(k + 1) % 3], &p, ctx) == Ordering::Equal);
         match on {
             Some(k) => sides[k].push(v),
-            None => inside.push(v),
+            None => others.push(v),
         }
     }
-    (sides, inside)
+    (sides, others)
 }
 
 /// The shared vertices of triangles `t` and `s` (indices into `points`) if they are the whole
@@ -333,7 +333,10 @@ mod tests {
     use crate::num::Rational;
 
     /// Points of a triangle's sides are told from those inside it, each by its side, and the
-    /// triangle re-triangulated with them is tiled: the pieces' areas sum to its own.
+    /// triangle re-triangulated with them is tiled, with one cut (the general path) and with
+    /// a chain of cuts from side to side (the predicate-free path): every point is a vertex,
+    /// every piece is counterclockwise, each edge is met once each way or lies on a side, and
+    /// the pieces' areas sum to the triangle's.
     #[test]
     fn points_on_sides_are_told_apart_and_the_pieces_tile() {
         let p = |x, y| Point3::<Rational>::int(x, y, 0);
@@ -350,24 +353,47 @@ mod tests {
         let tri = [0, 1, 2];
         let chart = Chart::of_triangle(&points[0], &points[1], &points[2]);
         let extra: BTreeSet<usize> = (3..points.len()).collect();
-        let (sides, inside) = by_side(&points, tri, &chart, &extra, &());
+        let (sides, others) = by_side(&points, tri, &chart, &extra, &());
         assert_eq!(
             sides.each_ref().map(|s| s.to_vec()),
             [vec![3], vec![4, 7], vec![5]]
         );
-        assert_eq!(inside.to_vec(), vec![6]);
-        let cuts = [(3, 4), (5, 6)];
-        let side_slices = [&sides[0][..], &sides[1][..], &sides[2][..]];
-        let pieces = retriangulate(&points, tri, chart, side_slices, inside, &cuts, &()).unwrap();
+        assert_eq!(others.to_vec(), vec![6]);
         let area = |t: [usize; 3]| {
             let [a, b, c] = t.map(|v| chart.project(&points[v]));
             (b.x.clone() - a.x.clone()) * (c.y.clone() - a.y.clone())
                 - (b.y.clone() - a.y.clone()) * (c.x.clone() - a.x.clone())
         };
-        let total = pieces
-            .iter()
-            .fold(Rational::from_i64(0), |s, &t| s + area(t));
-        assert_eq!(total, area(tri));
-        assert!(pieces.iter().all(|&t| area(t) > Rational::from_i64(0)));
+        // The side (0 to 2) holding both ends of an edge, if any.
+        let on_side = |u: usize, v: usize| {
+            (0..3).any(|k| {
+                let side = [tri[k], tri[(k + 1) % 3]];
+                let on = |w: usize| side.contains(&w) || sides[k].contains(&w);
+                on(u) && on(v)
+            })
+        };
+        for cuts in [vec![(3, 4), (5, 6)], vec![(5, 6), (6, 4)]] {
+            let side_slices = [&sides[0][..], &sides[1][..], &sides[2][..]];
+            let pieces =
+                retriangulate(&points, tri, chart, side_slices, others.clone(), &cuts, &())
+                    .unwrap();
+            assert!(pieces.iter().all(|&t| area(t) > Rational::from_i64(0)));
+            let total = pieces
+                .iter()
+                .fold(Rational::from_i64(0), |s, &t| s + area(t));
+            assert_eq!(total, area(tri));
+            assert!((0..points.len()).all(|v| pieces.iter().any(|t| t.contains(&v))));
+            let edges: Vec<(usize, usize)> = (pieces.iter())
+                .flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3])))
+                .collect();
+            for &(u, v) in &edges {
+                let twins = edges.iter().filter(|&&e| e == (v, u)).count();
+                assert!(twins == 1 || twins == 0 && on_side(u, v), "edge {u}-{v}");
+                assert_eq!(edges.iter().filter(|&&e| e == (u, v)).count(), 1);
+            }
+            for &(u, v) in &cuts {
+                assert!(edges.contains(&(u, v)) || edges.contains(&(v, u)));
+            }
+        }
     }
 }
