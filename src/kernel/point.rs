@@ -35,6 +35,15 @@ impl<N: Num> Point<N> {
         }
     }
 
+    /// The centroid of the triangle `abc` (exact in exact mode).
+    pub fn centroid(a: &Point<N>, b: &Point<N>, c: &Point<N>) -> Point<N> {
+        let three = N::from_i64(3);
+        Point {
+            x: (a.x.clone() + b.x.clone() + c.x.clone()) / three.clone(),
+            y: (a.y.clone() + b.y.clone() + c.y.clone()) / three,
+        }
+    }
+
     /// The point `self + t (other − self)`.
     pub fn lerp(&self, other: &Point<N>, t: &N) -> Point<N> {
         Point {

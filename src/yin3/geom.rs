@@ -204,7 +204,9 @@ pub(crate) fn in_triangle2<N: Num>(
 
 /// A 2D triangle with its corners' approximations ([`Num::approx`]), the filters' input.
 pub(crate) struct Triangle2<N> {
+    /// The corners.
     pub corners: [Point<N>; 3],
+    /// Their approximations, one `[x, y]` per corner.
     approx: [[f64; 2]; 3],
 }
 
@@ -236,13 +238,8 @@ pub(crate) fn piece_in_triangle2<N: Num>(
     let left = |i: usize, j: usize| {
         let side = filtered_orient_sum(tri.approx[i], tri.approx[j], piece.approx);
         side.unwrap_or_else(|| {
-            let centroid = centroid.get_or_init(|| {
-                let [p, q, r] = &piece.corners;
-                let three = N::from_i64(3);
-                let mean =
-                    |x: [&N; 3]| (x[0].clone() + x[1].clone() + x[2].clone()) / three.clone();
-                Point::new(mean([&p.x, &q.x, &r.x]), mean([&p.y, &q.y, &r.y]))
-            });
+            let [p, q, r] = &piece.corners;
+            let centroid = centroid.get_or_init(|| Point::centroid(p, q, r));
             orient(&tri.corners[i], &tri.corners[j], centroid, ctx)
         }) == Ordering::Greater
     };
