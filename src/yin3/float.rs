@@ -14,7 +14,7 @@ use super::transversal::{transversal_meet, Transversal};
 use super::validate::{check_windings, conforming_after_moves, revalidate};
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
-use foldhash::{HashMap, HashMapExt, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 
 /// The meet of two float sets under the combined context `ctx` (module docs): the transversal
 /// meet where it applies, else the general exact meet, rounded.
@@ -126,13 +126,13 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 /// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
 /// and conforming, as the validator would rebuild it — with each point replaced by its rounding
 /// in `rounded` (`moved`: its exact value where it differs). If none moved, it is the exact
-/// boundary. If no two points round to one, only the triangles at moved points are checked
-/// against their neighbours ([`conforming_after_moves`]), else the whole boundary is validated.
-/// Otherwise vertices that round to one point are merged, triangles that collapse to a
-/// segment or a point are dropped (each takes a pair of opposite fins off an edge, so closed
-/// surfaces stay closed), and the rounded boundary is validated exactly. The result must have
-/// the exact one's topology, computed by `keep` unless [`provably_kept`] shows it (which also
-/// shows the windings of a conforming boundary, I4: see [`Shown::Conforming`]). Any failure is
+/// boundary. Vertices that round to one point are merged, and triangles that collapse to a
+/// segment or a point dropped (each takes a pair of opposite fins off an edge, so closed
+/// surfaces stay closed). Then only the triangles at moved points are checked against their
+/// neighbours ([`conforming_after_moves`]); where that cannot show the boundary conforming,
+/// it is validated in full. The result must have the exact one's topology, computed by `keep`
+/// unless [`provably_kept`] shows it (which also shows the windings of a conforming boundary
+/// with the exact triangles, I4: see [`Shown::Conforming`]). Any failure is
 /// [`Yin3Error::Unrepresentable`].
 fn rounded_complex<N: Num>(
     rounded: Vec<Point3<N>>,
@@ -146,11 +146,14 @@ fn rounded_complex<N: Num>(
         return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
     }
     let (brep, shown) = rounded_boundary(rounded, moved, exact, tris)?;
-    let same_triangles = matches!(shown, Shown::Conforming | Shown::Valid { same: true });
+    let same_triangles = matches!(
+        shown,
+        Shown::Conforming { same: true } | Shown::Valid { same: true }
+    );
     if same_triangles && provably_kept(&brep, exact) {
         return Ok(brep);
     }
-    if let Shown::Conforming = shown {
+    if let Shown::Conforming { .. } = shown {
         check_windings(&exact_brep(&brep), &()).map_err(|e| unrepresentable(&e))?;
     }
     let (keep, got) = (keep()?, Topology::of(&brep));
@@ -164,18 +167,17 @@ fn rounded_complex<N: Num>(
 
 /// What [`rounded_boundary`] has shown of its boundary's validity.
 enum Shown {
-    /// The exact boundary's very triangles, numbering kept, and conforming (I1–I3): valid once
-    /// its windings are (I4). Where [`provably_kept`] also holds they are. With two fins per
-    /// edge the glued surfaces are the edge-connected surfaces I4 speaks of; each is embedded
-    /// and splits space in two, so its own winding number beside it is 0 on the side its
-    /// normals point to if it is positive, −1 if negative, and it keeps its orientation and the
-    /// winding number about it of every other surface. So the winding number beside each
-    /// triangle is the exact boundary's, which is valid; and the rounded boundedness,
-    /// recomputed from the rounded volumes, is the exact one (the volume is the integral of
-    /// the winding number).
-    Conforming,
-    /// Validated in full; `same` if it has the triangles `tris` (no point merged, the numbering
-    /// kept).
+    /// Conforming (I1–I3): valid once its windings are (I4). `same` if it has the exact
+    /// boundary's very triangles, numbering kept; where [`provably_kept`] also holds its
+    /// windings are shown. With two fins per edge the glued surfaces are the edge-connected
+    /// surfaces I4 speaks of; each is embedded and splits space in two, so its own winding
+    /// number beside it is 0 on the side its normals point to if it is positive, −1 if
+    /// negative, and it keeps its orientation and the winding number about it of every other
+    /// surface. So the winding number beside each triangle is the exact boundary's, which is
+    /// valid; and the rounded boundedness, recomputed from the rounded volumes, is the exact
+    /// one (the volume is the integral of the winding number).
+    Conforming { same: bool },
+    /// Validated in full; `same` as for `Conforming`.
     Valid { same: bool },
 }
 
@@ -199,7 +201,10 @@ fn rounded_boundary<N: Num>(
         // first use, the identity on a compact boundary), so `flags` and `rounded` still apply.
         let same = on_values.tris == tris;
         if same && conforming_after_moves(&rounded, &on_values.tris, &flags) {
-            return Ok((on_values.with_points(rounded), Shown::Conforming));
+            return Ok((
+                on_values.with_points(rounded),
+                Shown::Conforming { same: true },
+            ));
         }
         let points: Vec<Point3<N>> = (on_values.points.iter())
             .map(|p| rounded_point(p).expect("the values of rounded points are f64s"))
@@ -212,7 +217,12 @@ fn rounded_boundary<N: Num>(
     let mut index: HashMap<Point3<N>, usize> = HashMap::new();
     let mut points = Vec::new();
     let mut new = Vec::with_capacity(rounded.len());
-    for q in rounded {
+    // The rounded points that a moved point became: every triangle at one is checked.
+    let mut reached = HashSet::new();
+    for (q, m) in rounded.into_iter().zip(&moved) {
+        if m.is_some() {
+            reached.insert(q.clone());
+        }
         let next = points.len();
         let i = *index.entry(q.clone()).or_insert(next);
         if i == next {
@@ -229,6 +239,12 @@ fn rounded_boundary<N: Num>(
         return Err(unrepresentable(&"every triangle collapsed when rounded"));
     }
     let brep = Brep::assemble(points, tris).map_err(|e| unrepresentable(&e))?;
+    // The triangles that are left met only in shared corners and edges before they moved, and
+    // merging points gave a shared corner only to triangles at a moved point.
+    let flags: Vec<bool> = brep.points.iter().map(|p| reached.contains(p)).collect();
+    if conforming_after_moves(&brep.points, &brep.tris, &flags) {
+        return Ok((brep, Shown::Conforming { same: false }));
+    }
     revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
     Ok((brep, Shown::Valid { same: false }))
 }

@@ -162,6 +162,7 @@
 
 mod arrange;
 mod betti;
+mod bvh;
 mod canonical;
 mod complement;
 mod contact;

@@ -35,6 +35,7 @@
 //! the exact meet either way.
 
 use super::arrange::retriangulate;
+use super::bvh::Bvh;
 use super::contact::{contact, key, Contact, Edge, End};
 use super::corners::{Corners, F64Corners, RationalCorners};
 use super::fins::Fin;
@@ -46,8 +47,7 @@ use crate::num::{Num, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use rayon::prelude::*;
-use rstar::primitives::{GeomWithData, Rectangle};
-use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, AABB};
+use rstar::{Envelope, AABB};
 use std::cell::{Cell, OnceCell};
 
 /// Where the boundaries meet, as edges of the pieces of the transversal meet.
@@ -150,6 +150,9 @@ const SCANNED_RAYS: usize = if cfg!(test) { 1 } else { 8 };
 /// work over costs more than it saves.
 pub(crate) const PARALLEL_FROM: usize = if cfg!(test) { 16 } else { 8192 };
 
+/// The contact search on rayon's threads is split into at least this many pieces.
+const PIECES: usize = 64;
+
 /// `f` on each of `items`, in order, on rayon's threads if `parallel`.
 fn map_all<T: Sync, R: Send>(
     items: &[T],
@@ -238,62 +241,55 @@ fn meet_on<N: Num, C: Corners>(a: &Brep<N>, b: &Brep<N>, p: &C) -> Option<Transv
     let corners: Vec<&Point3<N>> = a.points.iter().chain(&b.points).collect();
     let boxes: Vec<AABB<[f64; 3]>> = tris.iter().map(|&t| p.bbox(t)).collect();
     let (near_a, near_b) = near(&boxes, first_b);
-    // The R-tree holds the operand with fewer near triangles (by their place in `indexed`), the
-    // other's query it.
-    let flip = near_b.len() > near_a.len();
-    let (near, indexed) = match flip {
-        false => (near_a, near_b),
-        true => (near_b, near_a),
-    };
-    let tree = RTree::bulk_load(
-        (indexed.iter().enumerate())
-            .map(|(k, &s)| GeomWithData::new(Rectangle::from_aabb(boxes[s]), k))
-            .collect(),
-    );
-    // Each indexed triangle's plane (the operand with fewer near triangles), and a querying
-    // triangle's once it meets a box.
-    let plane = |t: usize| p.plane(tris[t]);
-    let planes: Vec<C::Plane> = indexed.iter().map(|&t| plane(t)).collect();
-    // Every pair of boxes that meet, operand 0's triangle first; the first degenerate pair
-    // ends it.
-    // The crossing and the touching pairs found so far, to which `search` adds those of the
-    // triangle q.
-    type Found = (Vec<(usize, usize, [End; 2])>, Vec<[[usize; 2]; 2]>);
-    let search = |(mut crossing, mut touching): Found, q: usize| -> Option<Found> {
-        let mut own = None;
-        let generic = meeting_boxes(tree.root(), &boxes[q], &mut |k| {
-            let g = indexed[k];
-            let own = &*own.get_or_insert_with(|| plane(q));
-            let (t, s, both) = match flip {
-                true => (g, q, [&planes[k], own]),
-                false => (q, g, [own, &planes[k]]),
-            };
-            match contact(p, both, &corners, (t, tris[t]), (s, tris[s])) {
-                Contact::Apart => {}
-                Contact::Cross(ends) => crossing.push((t, s, ends)),
-                Contact::Touch(at) => touching.push(at),
-                Contact::Degenerate => return false,
-            }
-            true
-        });
-        generic.then_some((crossing, touching))
-    };
+    // Each operand's near triangles in a hierarchy of boxes; both are walked together.
+    let (bvh_a, bvh_b) = (Bvh::new(&near_a, &boxes), Bvh::new(&near_b, &boxes));
     let parallel = tris.len() >= PARALLEL_FROM;
+    // Every pair of boxes that meet, operand 0's triangle first.
+    let pieces = bvh_a.meeting_nodes(&bvh_b, if parallel { PIECES } else { 1 });
+    let pairs: Vec<(usize, usize)> = map_all(&pieces, parallel, |&piece| {
+        let mut pairs = Vec::new();
+        bvh_a.meeting_pairs(&bvh_b, piece, &mut |t, s| pairs.push((t, s)));
+        pairs
+    })
+    .concat();
+    // The plane of each triangle in a pair, made once: `slot[t]` is its place in `planes`.
+    let mut slot = vec![usize::MAX; tris.len()];
+    let mut in_pairs = Vec::new();
+    for u in pairs.iter().flat_map(|&(t, s)| [t, s]) {
+        if slot[u] == usize::MAX {
+            slot[u] = in_pairs.len();
+            in_pairs.push(u);
+        }
+    }
+    let planes = map_all(&in_pairs, parallel, |&t| p.plane(tris[t]));
+    let plane = |t: usize| &planes[slot[t]];
+    // The crossing and the touching pairs found so far, to which `search` adds the pair's
+    // contact; the first degenerate pair ends the search.
+    type Found = (Vec<(usize, usize, [End; 2])>, Vec<[[usize; 2]; 2]>);
+    let search = |(mut crossing, mut touching): Found, &(t, s): &(usize, usize)| {
+        let both = [plane(t), plane(s)];
+        match contact(p, both, &corners, (t, tris[t]), (s, tris[s])) {
+            Contact::Apart => {}
+            Contact::Cross(ends) => crossing.push((t, s, ends)),
+            Contact::Touch(at) => touching.push(at),
+            Contact::Degenerate => return None,
+        }
+        Some((crossing, touching))
+    };
     let (crossings, touching) = if parallel {
         let join = |(mut c, mut t): Found, (c1, t1): Found| {
             c.extend(c1);
             t.extend(t1);
             Some((c, t))
         };
-        near.par_iter()
-            .try_fold(Found::default, |found, &q| search(found, q))
+        (pairs.par_iter())
+            .try_fold(Found::default, search)
             .try_reduce(Found::default, join)?
     } else {
-        near.iter()
-            .try_fold(Found::default(), |found, &q| search(found, q))?
+        pairs.iter().try_fold(Found::default(), search)?
     };
     // The search's index and planes are done with: free them before the points are made.
-    drop((tree, planes));
+    drop((bvh_a, bvh_b, pairs, slot, planes));
     let rays = Rays::new([a, b], &boxes);
     if crossings.is_empty() && !touching.is_empty() {
         return touching_meet(&touching, &rays);
@@ -439,28 +435,6 @@ fn near(boxes: &[AABB<[f64; 3]>], first_b: usize) -> (Vec<usize>, Vec<usize>) {
     }
     let [a, b] = near;
     (a, b)
-}
-
-/// Calls `f` on the data of each leaf under `node` whose box meets `query`, depth first,
-/// until `f` returns false; false if it did. (A walk of the nodes, with nothing to set up per
-/// query as rstar's iterators do: most queries of the contact search meet nothing.)
-fn meeting_boxes(
-    node: &ParentNode<GeomWithData<Rectangle<[f64; 3]>, usize>>,
-    query: &AABB<[f64; 3]>,
-    f: &mut impl FnMut(usize) -> bool,
-) -> bool {
-    // A loop, not `all` with a closure: the closure, with `f` inlined in it, was a call with a
-    // large frame on every child visited.
-    for child in node.children() {
-        let stop = match child {
-            RTreeNode::Leaf(g) => g.envelope().intersects(query) && !f(g.data),
-            RTreeNode::Parent(p) => p.envelope().intersects(query) && !meeting_boxes(p, query, f),
-        };
-        if stop {
-            return false;
-        }
-    }
-    true
 }
 
 /// The operand whose parts (glued surfaces or patches, by operand) all lie inside the other,
@@ -853,9 +827,8 @@ mod tests {
         #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
 
         /// The broad phase finds every pair of boxes that meet: the near triangles of each
-        /// side include every one whose box meets a box of the other side, and the walk of an
-        /// R-tree of one side's near boxes yields, for a query box of the other, exactly the
-        /// boxes it meets (boxes that touch in a face or corner included: sides may be 0).
+        /// side include every one whose box meets a box of the other side (boxes that touch
+        /// in a face or corner included: sides may be 0).
         #[test]
         fn the_broad_phase_finds_every_meeting_pair(
             boxes in prop::collection::vec(
@@ -881,24 +854,6 @@ mod tests {
                         prop_assert!(near_a.contains(&t) && near_b.contains(&s));
                     }
                 }
-            }
-            let tree = RTree::bulk_load(
-                near_b
-                    .iter()
-                    .map(|&s| GeomWithData::new(Rectangle::from_aabb(boxes[s]), s))
-                    .collect(),
-            );
-            for &t in &near_a {
-                let mut found = Vec::new();
-                let whole = meeting_boxes(tree.root(), &boxes[t], &mut |s| {
-                    found.push(s);
-                    true
-                });
-                prop_assert!(whole);
-                found.sort_unstable();
-                let expected: Vec<usize> =
-                    near_b.iter().copied().filter(|&s| meets(t, s)).collect();
-                prop_assert_eq!(found, expected);
             }
         }
     }
