@@ -89,7 +89,7 @@ impl Links {
     /// Where every edge has two fins the three joins are one: each fin's only partner, in
     /// either pairing, is the edge's other fin, and the link joins the same two.
     pub(crate) fn new(tris: &[[usize; 3]], table: &FinTable, inside: UnionFind) -> Links {
-        if table.fins.iter().all(|fins| fins.len() == 2) {
+        if table.fin_lists().all(|fins| fins.len() == 2) {
             return Links {
                 outside: inside.clone(),
                 link: inside.clone(),
@@ -102,7 +102,7 @@ impl Links {
     /// [`Links::new`] joined fin by fin, for any number of fins at an edge.
     fn joined(tris: &[[usize; 3]], table: &FinTable, inside: UnionFind) -> Links {
         let mut link = UnionFind::new(3 * tris.len());
-        for (e, fins) in table.fins.iter().enumerate() {
+        for (e, fins) in table.fin_lists().enumerate() {
             let (a, b) = table.edges[e];
             for v in [a, b] {
                 let c0 = corner(tris, fins[0].tri, v);
@@ -233,7 +233,7 @@ mod tests {
             let points: Vec<Point3<Rational>> =
                 p.iter().map(|&[x, y, z]| Point3::int(x, y, z)).collect();
             let table = FinTable::new(&points, &tris, &());
-            assert!(table.fins.iter().all(|f| f.len() == 2));
+            assert!(table.fin_lists().all(|f| f.len() == 2));
             let inside = || corner_cycles(&table, &tris, None, Pairing::Inside);
             let (mut fast, mut slow) = (
                 Links::new(&tris, &table, inside()),

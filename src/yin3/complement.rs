@@ -91,7 +91,7 @@ mod tests {
     /// triangle, in the vertex numbering `to` (edge endpoints in increasing order, the rotation
     /// and directions turned where `to` swaps them).
     fn rotations(table: &FinTable, to: &[usize]) -> Rotations {
-        (table.edges.iter().zip(&table.fins))
+        (table.edges.iter().zip(table.fin_lists()))
             .map(|(&(a, b), fins)| {
                 let (a, b) = (to[a], to[b]);
                 let swap = a > b;

@@ -4,8 +4,6 @@
 
 use crate::kernel::{orient3d, Point3};
 use crate::num::Num;
-use foldhash::{HashMap, HashMapExt};
-use smallvec::SmallVec;
 use std::cmp::Ordering;
 
 /// A triangle seen from one of its edges (a "fin" of the edge).
@@ -23,10 +21,12 @@ pub(crate) struct Fin {
 /// edge's direction (from its smaller to its larger vertex index).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct FinTable {
-    /// The edges `(a, b)` with `a < b`.
+    /// The edges `(a, b)` with `a < b`, in order of first appearance in the triangles.
     pub edges: Vec<(usize, usize)>,
-    /// The fins of each edge, in counterclockwise order about b − a.
-    pub fins: Vec<SmallVec<[Fin; 2]>>,
+    /// Where the fins of each edge start in `all`, and the end of the last edge's.
+    start: Vec<usize>,
+    /// The fins of all edges, each edge's in counterclockwise order about b − a.
+    all: Vec<Fin>,
 }
 
 /// Which good pairing of the fins around an edge (seed 003 Lemma 5.13).
@@ -41,34 +41,23 @@ pub(crate) enum Pairing {
 impl FinTable {
     /// Build the table of the triangles `tris` over `points` (each edge's fins sorted).
     pub(crate) fn new<N: Num>(points: &[Point3<N>], tris: &[[usize; 3]], ctx: &N::Ctx) -> FinTable {
-        // A closed surface has 3T/2 edges.
-        let edges = 3 * tris.len() / 2;
-        let mut index: HashMap<(usize, usize), usize> = HashMap::with_capacity(edges);
-        let mut table = FinTable {
-            edges: Vec::with_capacity(edges),
-            fins: Vec::with_capacity(edges),
-        };
-        for (t, tri) in tris.iter().enumerate() {
-            for k in 0..3 {
-                let (u, v, w) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
-                let key = (u.min(v), u.max(v));
-                let e = *index.entry(key).or_insert_with(|| {
-                    table.edges.push(key);
-                    table.fins.push(SmallVec::new());
-                    table.edges.len() - 1
-                });
-                table.fins[e].push(Fin {
-                    tri: t,
-                    apex: w,
-                    forward: u < v,
-                });
-            }
-        }
-        for (e, fins) in table.fins.iter_mut().enumerate() {
+        let mut table = unsorted(tris, points.len());
+        for e in 0..table.edges.len() {
             let (a, b) = table.edges[e];
+            let fins = &mut table.all[table.start[e]..table.start[e + 1]];
             sort_about(&points[a], &points[b], fins, points, ctx);
         }
         table
+    }
+
+    /// The fins of edge `e`.
+    pub(crate) fn fins(&self, e: usize) -> &[Fin] {
+        &self.all[self.start[e]..self.start[e + 1]]
+    }
+
+    /// The fins of each edge, in the order of `edges`.
+    pub(crate) fn fin_lists(&self) -> impl ExactSizeIterator<Item = &[Fin]> + '_ {
+        self.start.windows(2).map(|w| &self.all[w[0]..w[1]])
     }
 
     /// The table of the same triangles each reversed (`[p, q, r]` → `[p, r, q]`), without a
@@ -84,21 +73,114 @@ impl FinTable {
     /// since a reversed triangle meets its edges in another order; nothing depends on that
     /// numbering.)
     pub(crate) fn reversed(&self) -> FinTable {
-        let fins = (self.fins.iter())
-            .map(|fins| {
-                (fins.iter())
-                    .map(|f| Fin {
-                        forward: !f.forward,
-                        ..*f
-                    })
-                    .collect()
+        let all = (self.all.iter())
+            .map(|f| Fin {
+                forward: !f.forward,
+                ..*f
             })
             .collect();
         FinTable {
             edges: self.edges.clone(),
-            fins,
+            start: self.start.clone(),
+            all,
         }
     }
+}
+
+/// The side `k` of triangle `t` (`tris[t][k]` to the next corner) as its edge key (smaller
+/// vertex, larger vertex) and its fin.
+fn side(tris: &[[usize; 3]], t: usize, k: usize) -> ((usize, usize), Fin) {
+    let tri = tris[t];
+    let (u, v, w) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
+    let fin = Fin {
+        tri: t,
+        apex: w,
+        forward: u < v,
+    };
+    ((u.min(v), u.max(v)), fin)
+}
+
+/// The sides (3 t + k: side k of triangle t) of the triangles `tris` over `count` vertices,
+/// grouped by their smaller vertex (a counting sort, stable): the sides in that order and
+/// where each vertex's group starts.
+fn sides_by_smaller_vertex(tris: &[[usize; 3]], count: usize) -> (Vec<usize>, Vec<usize>) {
+    let smaller = |h: usize| side(tris, h / 3, h % 3).0 .0;
+    let mut start = vec![0usize; count + 1];
+    for h in 0..3 * tris.len() {
+        start[smaller(h) + 1] += 1;
+    }
+    for v in 0..count {
+        start[v + 1] += start[v];
+    }
+    let mut next = start.clone();
+    let mut order = vec![0usize; 3 * tris.len()];
+    for h in 0..3 * tris.len() {
+        let slot = &mut next[smaller(h)];
+        order[*slot] = h;
+        *slot += 1;
+    }
+    (order, start)
+}
+
+/// The edge of each side of the triangles `tris` over `count` vertices, edges numbered in
+/// order of first appearance (side 3 t + k in increasing order), and the edges' keys: sides
+/// with one smaller vertex are matched by their larger vertex through a per-vertex slot.
+fn edge_of_sides(tris: &[[usize; 3]], count: usize) -> (Vec<usize>, Vec<(usize, usize)>) {
+    let (order, start) = sides_by_smaller_vertex(tris, count);
+    // Groups of sides with one key, numbered in the order of `order`; then renumbered.
+    let mut group = vec![usize::MAX; order.len()];
+    let mut slot = vec![usize::MAX; count];
+    let mut groups = 0;
+    for sides in start.windows(2).map(|w| &order[w[0]..w[1]]) {
+        for &h in sides {
+            let larger = side(tris, h / 3, h % 3).0 .1;
+            if slot[larger] == usize::MAX {
+                slot[larger] = groups;
+                groups += 1;
+            }
+            group[h] = slot[larger];
+        }
+        for &h in sides {
+            slot[side(tris, h / 3, h % 3).0 .1] = usize::MAX;
+        }
+    }
+    let mut number = vec![usize::MAX; groups];
+    let mut edges = Vec::with_capacity(groups);
+    for (h, g) in group.iter_mut().enumerate() {
+        if number[*g] == usize::MAX {
+            number[*g] = edges.len();
+            edges.push(side(tris, h / 3, h % 3).0);
+        }
+        *g = number[*g];
+    }
+    (group, edges)
+}
+
+/// The fin table of the triangles `tris` over `count` vertices before sorting: each edge's
+/// fins in increasing triangle order.
+fn unsorted(tris: &[[usize; 3]], count: usize) -> FinTable {
+    let (edge, edges) = edge_of_sides(tris, count);
+    let mut start = vec![0usize; edges.len() + 1];
+    for &e in &edge {
+        start[e + 1] += 1;
+    }
+    for e in 0..edges.len() {
+        start[e + 1] += start[e];
+    }
+    let mut next = start.clone();
+    let mut all = vec![
+        Fin {
+            tri: 0,
+            apex: 0,
+            forward: false
+        };
+        edge.len()
+    ];
+    for (h, &e) in edge.iter().enumerate() {
+        all[next[e]] = side(tris, h / 3, h % 3).1;
+        next[e] += 1;
+    }
+    FinTable { edges, start, all }
 }
 
 /// The partner of `fin` in `pairing`, given the fins `prev` and `next` to it in the
@@ -151,7 +233,7 @@ fn sort_about<N: Num>(
 /// True if fins at every edge alternate in direction (invariant I3 of the yin3 docs); otherwise the
 /// first edge and the two neighbouring fins that do not.
 pub(crate) fn first_non_alternating(table: &FinTable) -> Option<(usize, Fin, Fin)> {
-    for (e, fins) in table.fins.iter().enumerate() {
+    for (e, fins) in table.fin_lists().enumerate() {
         let m = fins.len();
         for i in 0..m {
             let (f, g) = (fins[i], fins[(i + 1) % m]);
@@ -167,6 +249,42 @@ pub(crate) fn first_non_alternating(table: &FinTable) -> Option<(usize, Fin, Fin
 mod tests {
     use super::*;
     use crate::num::Rational;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
+        /// Before sorting, the table has each edge once, numbered in order of first appearance
+        /// in the triangles, with the fins of the triangles along it in triangle order: an
+        /// oracle that scans the edges found so far for each side.
+        #[test]
+        fn unsorted_fins_follow_the_triangles(
+            tris in proptest::collection::vec(
+                (0usize..12, 0usize..12, 0usize..12)
+                    .prop_filter("three corners", |(a, b, c)| a != b && b != c && c != a)
+                    .prop_map(|(a, b, c)| [a, b, c]),
+                0..40,
+            ),
+        ) {
+            let mut edges: Vec<(usize, usize)> = Vec::new();
+            let mut fins: Vec<Vec<Fin>> = Vec::new();
+            for (t, tri) in tris.iter().enumerate() {
+                for k in 0..3 {
+                    let (u, v) = (tri[k], tri[(k + 1) % 3]);
+                    let key = (u.min(v), u.max(v));
+                    let e = edges.iter().position(|&f| f == key).unwrap_or_else(|| {
+                        edges.push(key);
+                        fins.push(Vec::new());
+                        edges.len() - 1
+                    });
+                    fins[e].push(Fin { tri: t, apex: tri[(k + 2) % 3], forward: u < v });
+                }
+            }
+            let table = unsorted(&tris, 12);
+            prop_assert_eq!(&table.edges, &edges);
+            let got: Vec<Vec<Fin>> = table.fin_lists().map(<[Fin]>::to_vec).collect();
+            prop_assert_eq!(got, fins);
+        }
+    }
 
     #[test]
     fn fins_sort_counterclockwise_about_the_edge() {

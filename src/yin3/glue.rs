@@ -18,26 +18,38 @@ impl Pairing {
     }
 }
 
-/// Call `f(fin, edge, partner)` for every fin of every edge and its partner in `pairing`,
-/// among the fins of the same `label` only when labels are given (the restricted cyclic order
-/// of GS.2).
+/// Call `f(fin, edge, partner)` for every fin of every edge whose partner in `pairing` is
+/// another fin, among the fins of the same `label` only when labels are given (the restricted
+/// cyclic order of GS.2); at an edge of two fins, which are each other's partners, for the
+/// first only. (Callers join each fin with its partner: a fin paired with itself joins nothing,
+/// and a pair joined once is joined.)
 pub(crate) fn pair_fins(
     table: &FinTable,
     label: Option<&[usize]>,
     pairing: Pairing,
     mut f: impl FnMut(Fin, usize, Fin),
 ) {
-    for (e, fins) in table.fins.iter().enumerate() {
+    let same = |a: &Fin, b: &Fin| label.is_none_or(|l| l[a.tri] == l[b.tri]);
+    for (e, fins) in table.fin_lists().enumerate() {
+        if let [a, b] = fins {
+            if same(a, b) {
+                f(*a, e, *b);
+            }
+            continue;
+        }
         // The cyclic order, restricted to one label when labels are given: the nearest fins
         // of the same label before and after each fin (the fin itself if it is alone).
         let m = fins.len();
         // j mod m for j < 2m, without a division.
         let wrap = |j: usize| if j >= m { j - m } else { j };
         for (i, fin) in fins.iter().enumerate() {
-            let same = |j: &usize| label.is_none_or(|l| l[fins[*j].tri] == l[fin.tri]);
-            let next = (1..=m).map(|k| wrap(i + k)).find(same).unwrap_or(i);
-            let prev = (1..=m).map(|k| wrap(i + m - k)).find(same).unwrap_or(i);
-            f(*fin, e, fins[partner(*fin, pairing, prev, next)]);
+            let like = |j: &usize| same(&fins[*j], fin);
+            let next = (1..=m).map(|k| wrap(i + k)).find(like).unwrap_or(i);
+            let prev = (1..=m).map(|k| wrap(i + m - k)).find(like).unwrap_or(i);
+            let p = partner(*fin, pairing, prev, next);
+            if p != i {
+                f(*fin, e, fins[p]);
+            }
         }
     }
 }
@@ -54,7 +66,11 @@ pub(crate) fn glued_surfaces(
     pair_fins(table, None, bounding, |f, _, g| {
         gs1.union(f.tri, g.tri);
     });
-    let (pgs, _) = gs1.classes();
+    let (pgs, count) = gs1.classes();
+    if table.fin_lists().all(|fins| fins.len() == 2) {
+        // GS.2 would join the same pairs: both fins of each edge lie in one P_GS.
+        return (pgs, count);
+    }
     let mut gs2 = UnionFind::new(ntris);
     pair_fins(table, Some(&pgs), bounding.other(), |f, _, g| {
         gs2.union(f.tri, g.tri);

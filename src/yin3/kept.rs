@@ -104,7 +104,7 @@ const U: f64 = f64::EPSILON / 2.0;
 pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> bool {
     // Two fins per edge also make the fin table (built on the rounded points) the exact
     // points' own: with two fins there is no order to sort.
-    if b.table.fins.iter().any(|f| f.len() != 2) {
+    if b.table.fin_lists().any(|f| f.len() != 2) {
         return false;
     }
     let mut cycles = corner_cycles(&b.table, &b.tris, None, Pairing::Inside);

@@ -81,7 +81,7 @@ impl<N: Num> Brep<N> {
         if let Some((e, f, g)) = first_non_alternating(&table) {
             let (a, b) = table.edges[e];
             let (from, to) = (Spot::new(&points[a]), Spot::new(&points[b]));
-            let count = table.fins[e].len();
+            let count = table.fins(e).len();
             return Err(if count % 2 == 1 {
                 Yin3Error::OpenEdge {
                     from,

@@ -492,7 +492,7 @@ fn touching_meet<N: Num>(touching: &[[[usize; 2]; 2]], rays: &Rays<N>) -> Option
             return Some(side);
         }
         let mut uf = UnionFind::new(op.tris.len());
-        for (e, fins) in op.table.edges.iter().zip(&op.table.fins) {
+        for (e, fins) in op.table.edges.iter().zip(op.table.fin_lists()) {
             let touches = corners[o][e.0] && corners[o][e.1] && edges[o].contains(e);
             if !touches {
                 for f in &fins[1..] {
@@ -597,7 +597,7 @@ fn inside<N: Num>(
     // The fins at edges of cut triangles: the pieces' own, and the uncut triangles' there.
     let mut loose: Vec<((usize, usize), usize)> = Vec::new();
     for (o, op) in ops.iter().enumerate() {
-        for (&(a, b), fins) in op.table.edges.iter().zip(&op.table.fins) {
+        for (&(a, b), fins) in op.table.edges.iter().zip(op.table.fin_lists()) {
             let edge = (a + o * points_a, b + o * points_a);
             let piece = |f: &Fin| whole[f.tri + o * first_b];
             if fins.iter().any(|f| piece(f).is_none()) {

@@ -419,7 +419,7 @@ fn polygon_normal<N: Num>(vertices: &[Point3<N>], face: &[usize]) -> Point3<N> {
 /// number 0 (bounded set) or −1 (unbounded set), by one ray per surface.
 pub(crate) fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yin3Error> {
     let mut uf = UnionFind::new(b.tris.len());
-    for fins in &b.table.fins {
+    for fins in b.table.fin_lists() {
         for f in &fins[1..] {
             uf.union(fins[0].tri, f.tri);
         }
