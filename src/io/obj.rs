@@ -63,7 +63,7 @@ pub fn read_obj<N: Num>(text: &str) -> Result<Mesh<N>, ParseError> {
     let mut first_other = None;
     for (number, line) in text.split('\n').enumerate() {
         let content = line.split('#').next().unwrap_or_default();
-        let mut tokens = content.split_whitespace();
+        let mut tokens = Tokens::of(content);
         match tokens.next() {
             Some("v") => mesh.vertices.push(vertex(text, content, tokens)?),
             Some(keyword @ "f") => {
@@ -90,6 +90,45 @@ pub fn read_obj<N: Num>(text: &str) -> Result<Mesh<N>, ParseError> {
     }
 }
 
+/// The blank-separated tokens of a line, those of `str::split_whitespace`: found byte by byte
+/// when the line is ASCII, by `split_whitespace` itself otherwise.
+enum Tokens<'a> {
+    /// The rest of an ASCII line.
+    Ascii(&'a str),
+    /// The tokens of a line with other characters (some of them Unicode blanks).
+    Unicode(std::str::SplitWhitespace<'a>),
+}
+
+impl<'a> Tokens<'a> {
+    /// The tokens of `line`.
+    fn of(line: &'a str) -> Tokens<'a> {
+        match line.is_ascii() {
+            true => Tokens::Ascii(line),
+            false => Tokens::Unicode(line.split_whitespace()),
+        }
+    }
+}
+
+impl<'a> Iterator for Tokens<'a> {
+    type Item = &'a str;
+
+    /// The next token: in an ASCII line, the next run of bytes that are not ASCII blanks (the
+    /// characters `char::is_whitespace` accepts among them: tab to carriage return, space).
+    fn next(&mut self) -> Option<&'a str> {
+        match self {
+            Tokens::Ascii(rest) => {
+                let blank = |b: u8| matches!(b, b'\t'..=b'\r' | b' ');
+                let start = rest.bytes().position(|b| !blank(b))?;
+                let token = &rest[start..];
+                let end = token.bytes().position(blank).unwrap_or(token.len());
+                *rest = &token[end..];
+                Some(&token[..end])
+            }
+            Tokens::Unicode(split) => split.next(),
+        }
+    }
+}
+
 /// The error `message` at `token`, a subslice of `text`.
 fn at(text: &str, token: &str, message: impl Into<String>) -> ParseError {
     ParseError::at_token(text, token, message)
@@ -101,12 +140,12 @@ fn vertex<'a, N: Num>(
     content: &'a str,
     tokens: impl Iterator<Item = &'a str>,
 ) -> Result<Point3<N>, ParseError> {
-    let tokens: Vec<&str> = tokens.collect();
+    let (first, count) = first_of::<5>(tokens);
     let number = |token: &str| coordinate::<N>(text, token);
     let message = |found: String| format!("a vertex line needs `v x y z` or `v x y z 1`, {found}");
-    match tokens[..] {
-        [x, y, z] => Ok(Point3::new(number(x)?, number(y)?, number(z)?)),
-        [x, y, z, w] => {
+    match (count, first) {
+        (3, [x, y, z, ..]) => Ok(Point3::new(number(x)?, number(y)?, number(z)?)),
+        (4, [x, y, z, w, _]) => {
             let p = Point3::new(number(x)?, number(y)?, number(z)?);
             if number(w)? == N::from_i64(1) {
                 Ok(p)
@@ -118,18 +157,29 @@ fn vertex<'a, N: Num>(
                 ))
             }
         }
-        [_, _, _, _, extra, ..] => Err(at(
-            text,
-            extra,
-            message(format!("found {} numbers", tokens.len())),
-        )),
+        (5.., [.., extra]) => Err(at(text, extra, message(format!("found {count} numbers")))),
         _ => {
-            let found = format!("found only {} number(s)", tokens.len());
-            let place = tokens.last().copied().unwrap_or(content.trim_start());
+            let found = format!("found only {count} number(s)");
+            let place = count
+                .checked_sub(1)
+                .map_or(content.trim_start(), |i| first[i]);
             let end = &place[place.len()..];
             Err(at(text, end, message(found)))
         }
     }
+}
+
+/// The first `K` items of `tokens` (the rest `""`) and how many items it has in all.
+fn first_of<'a, const K: usize>(tokens: impl Iterator<Item = &'a str>) -> ([&'a str; K], usize) {
+    let mut first = [""; K];
+    let mut count = 0;
+    for token in tokens {
+        if let Some(slot) = first.get_mut(count) {
+            *slot = token;
+        }
+        count += 1;
+    }
+    (first, count)
 }
 
 /// The 0-based vertex indices of an `f` line whose keyword is `keyword` and whose remaining
@@ -155,13 +205,13 @@ fn face<'a>(
 
 /// The 0-based vertex index of one face corner `token` (`i`, `i/j`, `i/j/k` or `i//k`).
 fn corner(text: &str, token: &str, defined: usize) -> Result<usize, ParseError> {
-    let parts: Vec<&str> = token.split('/').collect();
+    let (parts, count) = first_of::<4>(token.split('/'));
     let form = "expected `i`, `i/j`, `i/j/k` or `i//k`";
-    let optional = match parts[..] {
-        [_] => &[][..],
-        [_, j] => &[j][..],
-        [_, "", k] => &[k][..],
-        [_, j, k] => &[j, k][..],
+    let optional = match (count, &parts) {
+        (1, _) => &[][..],
+        (2, [_, j, ..]) => &[*j][..],
+        (3, [_, "", k, _]) => &[*k][..],
+        (3, [_, j, k, _]) => &[*j, *k][..],
         _ => {
             let extra = parts[3];
             return Err(at(text, extra, format!("`{token}`: too many `/`, {form}")));
@@ -295,6 +345,21 @@ mod tests {
     }
 
     const SQUARE: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+    proptest::proptest! {
+        /// A line's tokens are those of `str::split_whitespace`: on ASCII lines with every
+        /// ASCII blank (vertical tab and form feed too), and on lines with Unicode blanks.
+        #[test]
+        fn tokens_split_like_split_whitespace(
+            line in proptest::prop_oneof![
+                "[ \t\n\x0B\x0C\rav1/#-]{0,40}",
+                "[ \t\x0B\r\u{85}\u{a0}\u{2003}\u{3000}av1é]{0,40}",
+            ],
+        ) {
+            let want: Vec<&str> = line.split_whitespace().collect();
+            proptest::prop_assert_eq!(Tokens::of(&line).collect::<Vec<_>>(), want);
+        }
+    }
 
     #[test]
     fn reads_exact_decimals_and_fractions() {

@@ -1,7 +1,7 @@
 //! The float backend: `f64` coordinates with a run-time tolerance ε (seed 000 §5.2).
 
 use super::grid_orient::grid_orient3d;
-use super::{Literal, Num, NumError, Rational};
+use super::{Literal, Num, NumError, Parts, Rational};
 use std::cmp::Ordering;
 use std::fmt;
 use std::hash::{Hash, Hasher};
@@ -510,17 +510,17 @@ impl Num for Float {
     }
 
     fn parse(s: &str) -> Result<Self, NumError> {
-        let lit = Literal::parse(s)?;
+        let parts = Parts::scan(s)?;
         // A decimal's nearest f64 straight from its text: the standard library's correctly
         // rounded parse of the literal just checked, the value `from_literal` would make. Only
         // for short text: the standard parse stops reading an exponent past 65 536, which a
         // literal reaches only with as many fraction digits to bring it back.
-        match lit.den == "1" && s.len() <= SHORT_DECIMAL {
+        match parts.den.is_none() && s.len() <= SHORT_DECIMAL {
             true => Ok(s
                 .trim()
                 .parse()
-                .map_or_else(|_| Float::from_literal(&lit), Float::new)),
-            false => Ok(Float::from_literal(&lit)),
+                .map_or_else(|_| Float::from_literal(&parts.literal()), Float::new)),
+            false => Ok(Float::from_literal(&parts.literal())),
         }
     }
 
@@ -605,6 +605,20 @@ impl Num for Float {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(1024)))]
+        /// A parsed decimal is its value correctly rounded: the standard library's parse, and
+        /// the nearest f64 of its exact value.
+        #[test]
+        fn parsed_decimals_are_correctly_rounded(
+            (text, exact) in crate::num::literal::texts::literals(false),
+        ) {
+            let got = Float::parse(&text).unwrap().0;
+            proptest::prop_assert_eq!(got.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{}", text);
+            proptest::prop_assert_eq!(got, Rational::from(exact).to_f64(), "{}", text);
+        }
+    }
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]

@@ -31,6 +31,7 @@ pub(crate) use grid_orient::common_grid;
 pub(crate) use interval::Interval;
 pub(crate) use lattice::lattice_det_sum;
 pub use literal::Literal;
+use literal::Parts;
 pub use rational::Rational;
 
 use num_bigint::BigInt;

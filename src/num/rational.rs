@@ -5,7 +5,7 @@ use super::grid_orient::{det3_sign, odd_decode};
 use super::quotient::{nearest_f64, Leading};
 use super::{
     big, exact_orient, exact_orient3d, exact_orient3d_f64, exact_orient_f64, filtered_orient,
-    filtered_orient3d, Literal, Num, NumError,
+    filtered_orient3d, Literal, Num, NumError, Parts,
 };
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
@@ -156,21 +156,37 @@ fn unfiltered_orient(a: [&Rational; 2], b: [&Rational; 2], c: [&Rational; 2]) ->
     fraction_free_orient(a, b, c)
 }
 
-/// The literal as a numerator and a positive denominator in `i128`, where its digits, its
-/// denominator's and the power of ten fit (at most 18 digits each, exponent within ±18).
-fn small_literal(lit: &Literal) -> Option<(i128, i128)> {
-    let int = |s: &str| (s.len() <= 18).then(|| s.parse::<i128>().ok()).flatten();
-    let (n, d) = (int(&lit.digits)?, int(&lit.den)?);
-    let ten = 10i128.checked_pow(
-        u32::try_from(lit.exp10.unsigned_abs())
-            .ok()
-            .filter(|&e| e <= 18)?,
-    )?;
-    let (n, d) = match lit.exp10 >= 0 {
-        true => (n * ten, d),
-        false => (n, d * ten),
-    };
-    Some((if lit.negative { -n } else { n }, d))
+/// The value of a literal's `parts` where its terms fit in `i128`: a decimal `m / 10^k` by
+/// [`decimal`], any other by [`reduce`].
+fn small_literal(parts: &Parts) -> Option<Rational> {
+    match parts.decimal() {
+        Some((m, k)) => Some(decimal(parts.negative, m, k)),
+        None => parts.small_fraction().map(|(n, d)| reduce(n, d)),
+    }
+}
+
+/// The value of a literal through big integers (any size).
+fn big_literal(lit: &Literal) -> Rational {
+    let (num, den) = lit.fraction();
+    Rational::new(digits(&num), digits(&den))
+}
+
+/// `±m / 10^k` (`10^k` in a `u64`) in lowest terms without a gcd: the only factors it can
+/// share are twos, removed by a shift, and fives, removed by division.
+fn decimal(negative: bool, m: u64, k: u32) -> Rational {
+    if m == 0 {
+        return lowest(0, 1);
+    }
+    let twos = m.trailing_zeros().min(k);
+    let (mut m, mut d) = (m >> twos, 10u64.pow(k) >> twos);
+    for _ in 0..k {
+        if m % 5 != 0 {
+            break;
+        }
+        (m, d) = (m / 5, d / 5);
+    }
+    let n = i128::from(m);
+    lowest(if negative { -n } else { n }, i128::from(d))
 }
 
 /// A big rational in lowest terms, stored small if it fits.
@@ -657,11 +673,13 @@ impl Num for Rational {
     }
 
     fn from_literal(lit: &Literal) -> Self {
-        if let Some((n, d)) = small_literal(lit) {
-            return reduce(n, d);
-        }
-        let (num, den) = lit.fraction();
-        Rational::new(digits(&num), digits(&den))
+        small_literal(&Parts::of(lit)).unwrap_or_else(|| big_literal(lit))
+    }
+
+    /// The literal's value, without allocating where its terms fit in `i128`.
+    fn parse(s: &str) -> Result<Self, NumError> {
+        let parts = Parts::scan(s)?;
+        Ok(small_literal(&parts).unwrap_or_else(|| big_literal(&parts.literal())))
     }
 
     fn approx(&self) -> f64 {
@@ -765,6 +783,20 @@ impl Num for Rational {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(1024)))]
+        /// A parsed decimal or fraction (on the `u64` decimal path, the `i128` path and the
+        /// big path) is the value that big integers make of its digits, in canonical form.
+        #[test]
+        fn parsed_literals_are_their_exact_values(
+            (text, want) in crate::num::literal::texts::literals(true),
+        ) {
+            let got = Rational::parse(&text).unwrap();
+            proptest::prop_assert!(got == Rational::from(want.clone()), "{}", text);
+            proptest::prop_assert_eq!(got.fraction(), (want.numer().clone(), want.denom().clone()));
+        }
+    }
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(256)))]
