@@ -524,13 +524,18 @@ impl Num for Float {
         }
     }
 
+    /// The nearest `f64` of the literal's value: a decimal by the standard library's correctly
+    /// rounded parse, a fraction from its exact value (its terms rounded apart and divided could
+    /// miss the nearest by an ulp, and overflow to NaN where both exceed `f64`'s range).
     fn from_literal(lit: &Literal) -> Self {
+        if lit.den != "1" {
+            return Float::new(Rational::from_literal(lit).to_f64());
+        }
         let sign = if lit.negative { "-" } else { "" };
         let num: f64 = format!("{sign}{}e{}", lit.digits, lit.exp10)
             .parse()
             .unwrap_or(f64::NAN);
-        let den: f64 = lit.den.parse().unwrap_or(f64::NAN);
-        Float::new(num / den)
+        Float::new(num)
     }
 
     fn to_f64(&self) -> f64 {
@@ -618,6 +623,23 @@ mod tests {
             proptest::prop_assert_eq!(got.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{}", text);
             proptest::prop_assert_eq!(got, Rational::from(exact).to_f64(), "{}", text);
         }
+
+        /// A parsed fraction is the nearest f64 of its exact value (rounded once).
+        #[test]
+        fn parsed_fractions_are_correctly_rounded(
+            (text, exact) in crate::num::literal::texts::literals(true),
+        ) {
+            let got = Float::parse(&text).unwrap().0;
+            proptest::prop_assert_eq!(got, Rational::from(exact).to_f64(), "{}", text);
+        }
+    }
+
+    /// A fraction whose terms, each rounded to `f64` and then divided, miss its nearest `f64`
+    /// by an ulp: 3.799759413396676 is nearest, 3.7997594133966754 the twice-rounded quotient.
+    #[test]
+    fn a_fraction_is_rounded_once() {
+        let got = Float::parse("91770119583970787981/24151560559444937093").unwrap();
+        assert_eq!(got.0, 3.799759413396676);
     }
 
     proptest::proptest! {
