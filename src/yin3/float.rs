@@ -9,6 +9,7 @@
 
 use super::error::Yin3Error;
 use super::kept::{provably_kept, Topology};
+use super::meet::general_meet;
 use super::set::{compact, Brep, Repr3, YinSet3};
 use super::transversal::{transversal_meet, Transversal};
 use super::validate::{check_windings, conforming_after_moves, revalidate};
@@ -17,7 +18,7 @@ use crate::num::{Num, Rational};
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 
 /// The meet of two float sets under the combined context `ctx` (module docs): the transversal
-/// meet where it applies, else the general exact meet, rounded.
+/// meet where it applies, else the general arrangement's exact meet, rounded.
 pub(crate) fn float_meet<N: Num>(
     a: &YinSet3<N>,
     b: &YinSet3<N>,
@@ -42,7 +43,8 @@ pub(crate) fn float_meet<N: Num>(
             ));
         }
     }
-    rounded_exact(a, b, ctx, YinSet3::meet)
+    // The transversal meet declined these values: the exact one would decline them again.
+    rounded_exact(a, b, ctx, general_meet)
 }
 
 /// `op` computed exactly on the operands' values and rounded once, under the context `ctx`.

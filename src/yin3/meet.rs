@@ -91,9 +91,8 @@ impl<N: Num> YinSet3<N> {
     }
 }
 
-/// The meet by the general arrangement alone, never by the transversal one (the oracle of the
-/// transversal meets' tests, float and exact).
-#[cfg(test)]
+/// The meet by the general arrangement alone, never by the transversal one: where that one
+/// declined the operands' values, and the oracle of its tests, float and exact.
 pub(crate) fn general_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N> {
     match (x.brep(), y.brep()) {
         (Some(a), Some(b)) => meet_in(a, b, N::combine_ctx(x.ctx, y.ctx)).expect("an exact meet"),

@@ -244,52 +244,38 @@ fn meet_on<N: Num, C: Corners>(a: &Brep<N>, b: &Brep<N>, p: &C) -> Option<Transv
     // Each operand's near triangles in a hierarchy of boxes; both are walked together.
     let (bvh_a, bvh_b) = (Bvh::new(&near_a, &boxes), Bvh::new(&near_b, &boxes));
     let parallel = tris.len() >= PARALLEL_FROM;
-    // Every pair of boxes that meet, operand 0's triangle first.
-    let pieces = bvh_a.meeting_nodes(&bvh_b, if parallel { PIECES } else { 1 });
-    let pairs: Vec<(usize, usize)> = map_all(&pieces, parallel, |&piece| {
-        let mut pairs = Vec::new();
-        bvh_a.meeting_pairs(&bvh_b, piece, &mut |t, s| pairs.push((t, s)));
-        pairs
-    })
-    .concat();
-    // The plane of each triangle in a pair, made once: `slot[t]` is its place in `planes`.
-    let mut slot = vec![usize::MAX; tris.len()];
-    let mut in_pairs = Vec::new();
-    for u in pairs.iter().flat_map(|&(t, s)| [t, s]) {
-        if slot[u] == usize::MAX {
-            slot[u] = in_pairs.len();
-            in_pairs.push(u);
-        }
-    }
-    let planes = map_all(&in_pairs, parallel, |&t| p.plane(tris[t]));
-    let plane = |t: usize| &planes[slot[t]];
-    // The crossing and the touching pairs found so far, to which `search` adds the pair's
-    // contact; the first degenerate pair ends the search.
+    // The crossing and the touching pairs found so far, to which `search` adds those of the
+    // pairs of boxes that meet under a pair of nodes (operand 0's triangle first); the first
+    // degenerate pair ends the search.
     type Found = (Vec<(usize, usize, [End; 2])>, Vec<[[usize; 2]; 2]>);
-    let search = |(mut crossing, mut touching): Found, &(t, s): &(usize, usize)| {
-        let both = [plane(t), plane(s)];
-        match contact(p, both, &corners, (t, tris[t]), (s, tris[s])) {
-            Contact::Apart => {}
-            Contact::Cross(ends) => crossing.push((t, s, ends)),
-            Contact::Touch(at) => touching.push(at),
-            Contact::Degenerate => return None,
-        }
-        Some((crossing, touching))
+    let search = |(mut crossing, mut touching): Found, pair| {
+        let generic = bvh_a.meeting_pairs(&bvh_b, pair, &mut |t, s| {
+            let both = [&p.plane(tris[t]), &p.plane(tris[s])];
+            match contact(p, both, &corners, (t, tris[t]), (s, tris[s])) {
+                Contact::Apart => {}
+                Contact::Cross(ends) => crossing.push((t, s, ends)),
+                Contact::Touch(at) => touching.push(at),
+                Contact::Degenerate => return false,
+            }
+            true
+        });
+        generic.then_some((crossing, touching))
     };
+    let pieces = bvh_a.meeting_nodes(&bvh_b, if parallel { PIECES } else { 1 });
     let (crossings, touching) = if parallel {
         let join = |(mut c, mut t): Found, (c1, t1): Found| {
             c.extend(c1);
             t.extend(t1);
             Some((c, t))
         };
-        (pairs.par_iter())
+        (pieces.into_par_iter())
             .try_fold(Found::default, search)
             .try_reduce(Found::default, join)?
     } else {
-        pairs.iter().try_fold(Found::default(), search)?
+        pieces.into_iter().try_fold(Found::default(), search)?
     };
-    // The search's index and planes are done with: free them before the points are made.
-    drop((bvh_a, bvh_b, pairs, slot, planes));
+    // The search's hierarchies are done with: free them before the points are made.
+    drop((bvh_a, bvh_b));
     let rays = Rays::new([a, b], &boxes);
     if crossings.is_empty() && !touching.is_empty() {
         return touching_meet(&touching, &rays);
