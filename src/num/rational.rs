@@ -676,7 +676,8 @@ impl Num for Rational {
         small_literal(&Parts::of(lit)).unwrap_or_else(|| big_literal(lit))
     }
 
-    /// The literal's value, without allocating where its terms fit in `i128`.
+    /// The literal's value: straight from its text where its terms fit in `i128` (a value that
+    /// does not fit two `i64`s is then stored big), through big integers otherwise.
     fn parse(s: &str) -> Result<Self, NumError> {
         let parts = Parts::scan(s)?;
         Ok(small_literal(&parts).unwrap_or_else(|| big_literal(&parts.literal())))

@@ -141,7 +141,8 @@ fn morton(hull: &AABB<[f64; 3]>, b: &AABB<[f64; 3]>) -> u64 {
         } else {
             0.0
         };
-        // NaN and values outside [0, 1] (none for finite boxes) clamp to the ends.
+        // Values outside [0, 1] (none for finite boxes) clamp to the ends; NaN (a box with a
+        // NaN corner, which meets nothing) becomes 0 in the cast.
         (t.clamp(0.0, 1.0) * max) as u64
     };
     spread(cell(0)) | spread(cell(1)) << 1 | spread(cell(2)) << 2
@@ -158,12 +159,12 @@ fn spread(v: u64) -> u64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use proptest::prelude::*;
 
     /// A box from a corner and non-negative sides.
-    fn a_box(corner: [f64; 3], sides: [f64; 3]) -> AABB<[f64; 3]> {
+    pub(in crate::yin3) fn a_box(corner: [f64; 3], sides: [f64; 3]) -> AABB<[f64; 3]> {
         AABB::from_corners(corner, [0, 1, 2].map(|k| corner[k] + sides[k]))
     }
 

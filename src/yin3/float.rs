@@ -43,7 +43,8 @@ pub(crate) fn float_meet<N: Num>(
             ));
         }
     }
-    // The transversal meet declined these values: the exact one would decline them again.
+    // The transversal meet declined these values (a degenerate contact, which exact mode's
+    // transversal meet would find again on the same values).
     rounded_exact(a, b, ctx, general_meet)
 }
 
@@ -258,4 +259,41 @@ fn rounded_set<N: Num>(y: YinSet3<Rational>, ctx: N::Ctx) -> Result<YinSet3<N>, 
         Repr3::Empty => YinSet3::empty().with_ctx(ctx),
         Repr3::Full => YinSet3::full().with_ctx(ctx),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Float;
+
+    /// A tetrahedron whose edge AB carries a vertex M a third of 2⁻⁶⁰ from A, splitting its two
+    /// faces at AB: M rounds to A, the two triangles at AM collapse, and the rounded boundary
+    /// is the tetrahedron, shown conforming by the triangles at the merged point alone.
+    #[test]
+    fn a_point_rounding_onto_another_merges_and_is_checked_locally() {
+        let r = |n: i64| Rational::from_i64(n);
+        let d = Rational::new(1.into(), (3 * (1i64 << 60)).into());
+        let exact = vec![
+            Point3::new(r(1), r(1), r(1)),
+            Point3::new(r(2), r(1), r(1)),
+            Point3::new(r(1), r(2), r(1)),
+            Point3::new(r(1), r(1), r(2)),
+            Point3::new(r(1) + d, r(1), r(1)),
+        ];
+        let tris = vec![
+            [0, 2, 4],
+            [4, 2, 1],
+            [0, 4, 3],
+            [4, 1, 3],
+            [0, 3, 2],
+            [1, 2, 3],
+        ];
+        Brep::assemble(exact.clone(), tris.clone()).expect("the exact boundary is valid");
+        let rounded: Vec<Point3<Float>> = rounded_points(&exact).unwrap();
+        assert_eq!(rounded[4], rounded[0]);
+        let moved = moved(&rounded, &exact);
+        let (brep, shown) = rounded_boundary(rounded, moved, &exact, tris).unwrap();
+        assert!(matches!(shown, Shown::Conforming { same: false }));
+        assert_eq!((brep.points.len(), brep.tris.len()), (4, 4));
+    }
 }

@@ -729,6 +729,7 @@ impl<'a, N: Num> Rays<'a, N> {
 mod tests {
     use super::*;
     use crate::num::Float;
+    use crate::yin3::bvh::tests::a_box;
     use crate::yin3::float::exact_set;
     use crate::yin3::meet::general_meet;
     use crate::yin3::set::compact;
@@ -802,11 +803,6 @@ mod tests {
 
     fn jitter() -> impl Strategy<Value = Vec<[f64; 3]>> {
         prop::collection::vec([-0.1..0.1, -0.1..0.1, -0.1..0.1], 8)
-    }
-
-    /// A box from a corner and non-negative sides.
-    fn a_box(corner: [f64; 3], sides: [f64; 3]) -> AABB<[f64; 3]> {
-        AABB::from_corners(corner, [0, 1, 2].map(|k| corner[k] + sides[k]))
     }
 
     proptest! {

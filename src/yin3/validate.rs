@@ -137,8 +137,10 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 }
 
 /// True if the validator would rebuild the boundary of the triangles `tris` over `points`
-/// unchanged (I4 aside), knowing that it did before the vertices `moved` moved, each to a
-/// distinct point (a rounded result): every triangle with a moved vertex meets every other
+/// unchanged (I4 aside), knowing that it did before the vertices `moved` moved (a rounded
+/// result: where moved points were merged with others, the merged points are flagged and the
+/// triangles that collapsed are gone, so every other triangle kept its corners and its
+/// neighbours but for those): every triangle with a moved vertex meets every other
 /// triangle exactly in their shared vertices and edges (a degenerate one fails against its
 /// neighbours across its edges). Decided by exact orientations of the points' values — first
 /// by either triangle's plane where a filter is certain ([`off_plane_but_shared`]), then on
