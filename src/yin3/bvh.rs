@@ -62,12 +62,15 @@ impl Bvh {
         (i * WIDTH..end).map(move |c| (level - 1, c))
     }
 
-    /// The nodes one step down from `n` towards level 0 (its children), or `n` itself at level
-    /// 0.
-    fn down(&self, n: Node) -> impl Iterator<Item = Node> {
-        let leaf = (n.0 == 0).then_some(n);
-        let inner = (n.0 > 0).then(|| self.children(n)).into_iter().flatten();
-        leaf.into_iter().chain(inner)
+    /// What stands for `n` when it is paired with a node at level `beside`: its children if
+    /// it is above level 0 and no lower than that node (the higher node of a pair is split,
+    /// both at equal levels, so nodes of like size are paired), else `n` itself.
+    fn split(&self, n: Node, beside: usize) -> impl Iterator<Item = Node> {
+        let split = n.0 > 0 && n.0 >= beside;
+        let whole = (!split).then_some(n);
+        whole
+            .into_iter()
+            .chain(split.then(|| self.children(n)).into_iter().flatten())
     }
 
     /// Pairs of nodes of `self` and `other` whose boxes meet, covering every pair of boxes
@@ -84,11 +87,10 @@ impl Bvh {
         while pairs.len() < enough && pairs.iter().any(|[x, y]| x.0 > 0 || y.0 > 0) {
             let mut split = Vec::new();
             for &[x, y] in &pairs {
-                for cx in self.down(x) {
+                for cx in self.split(x, y.0) {
                     let bx = self.node_box(cx);
-                    let meeting = other
-                        .down(y)
-                        .filter(|&cy| bx.intersects(other.node_box(cy)));
+                    let meeting =
+                        (other.split(y, x.0)).filter(|&cy| bx.intersects(other.node_box(cy)));
                     split.extend(meeting.map(|cy| [cx, cy]));
                 }
             }
@@ -109,18 +111,11 @@ impl Bvh {
         if x.0 == 0 && y.0 == 0 {
             return f(self.items[x.1], other.items[y.1]);
         }
-        // The higher node is split (both at equal levels), so nodes of like size are paired.
-        let (xs, ys) = (x.0 >= y.0, y.0 >= x.0);
-        let split = |n: Node, s: bool, b: &Bvh| {
-            let one = (!s).then_some(n);
-            one.into_iter()
-                .chain(s.then(|| b.children(n)).into_iter().flatten())
-        };
         // Loops, not `all` with closures: the closures, with `f` inlined, were calls with
         // large frames on every node visited.
-        for cx in split(x, xs, self) {
+        for cx in self.split(x, y.0) {
             let bx = self.node_box(cx);
-            for cy in split(y, ys, other) {
+            for cy in other.split(y, x.0) {
                 if bx.intersects(other.node_box(cy)) && !self.meeting_pairs(other, [cx, cy], f) {
                     return false;
                 }
