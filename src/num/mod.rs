@@ -312,47 +312,84 @@ pub(crate) fn filtered_orient_sum<const K: usize>(
 }
 
 /// The sign of det[b − a, c − a, d − a] evaluated in `f64` from coordinates each within
-/// 3 ulps of the exact ones, if the error bound proves it; `None` if it cannot decide.
-///
-/// A semi-static bound, in the size of the differences rather than of the coordinates, so that
-/// small triangles far from the origin are decided too. With M the largest coordinate, u = 2⁻⁵³
-/// and D the largest computed difference, each difference is off by at most e = 8M·u and every
-/// difference, true or computed, is at most D′ = D + e; each 2×2 minor is then off by at most
-/// 4D′e + 2e² + 6D′²u, and the determinant by 3(2D′²e + D′(4D′e + 2e² + 6D′²u)) + 30D′³u ≤
-/// 24D′²e + 48D′³u; twice that is safe against the rounding of the bound itself.
+/// 3 ulps of the exact ones, if the error bound proves it; `None` if it cannot decide
+/// ([`NearPlane::certain_side`] of `d` against the plane through `a`, `b`, `c`).
 pub(crate) fn filtered_orient3d(
     a: [f64; 3],
     b: [f64; 3],
     c: [f64; 3],
     d: [f64; 3],
 ) -> Option<Ordering> {
-    let m = [a, b, c, d]
-        .iter()
-        .flatten()
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-    let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-    let w = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
-    let det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
-        + u[2] * (v[0] * w[1] - v[1] * w[0]);
-    let unit = f64::EPSILON * 0.5;
-    let e = 8.0 * m * unit;
-    let reach = [u, v, w]
-        .iter()
-        .flatten()
-        .fold(0.0f64, |s, x| s.max(x.abs()))
-        + e;
-    let bound = 2.0 * reach * reach * (24.0 * e + 48.0 * reach * unit);
-    // Below 1e-90 products of three differences could lose bits to underflow.
-    if !det.is_finite() || !bound.is_finite() || m.is_nan() || reach < 1e-90 {
-        return None;
+    NearPlane::new(a, b, c).certain_side(d)
+}
+
+/// The plane through three points given by coordinates each within 3 ulps of the exact ones,
+/// prepared so that the side of many points costs a dot product and a bound each:
+/// det[b − a, c − a, d − a] = (d − a) · ((b − a) × (c − a)).
+///
+/// The bound is semi-static, in the size of the differences rather than of the coordinates, so
+/// that small triangles far from the origin are decided too. With M the largest coordinate of
+/// the four points, u = 2⁻⁵³ and D the largest computed difference, each difference is off by
+/// at most e = 8M·u and every difference, true or computed, is at most D′ = D + e; each 2×2
+/// minor of the normal is then off by at most 4D′e + 2e² + 6D′²u, and the determinant by
+/// 3(2D′²e + D′(4D′e + 2e² + 6D′²u)) + 30D′³u ≤ 24D′²e + 48D′³u; twice that is safe against
+/// the rounding of the bound itself.
+pub(crate) struct NearPlane {
+    /// The first corner, from which the differences are taken.
+    a: [f64; 3],
+    /// (b − a) × (c − a), computed.
+    normal: [f64; 3],
+    /// The largest coordinate of the corners in magnitude.
+    largest: f64,
+    /// The largest computed difference b − a, c − a in magnitude.
+    reach: f64,
+}
+
+impl NearPlane {
+    /// The plane through `a`, `b`, `c`.
+    pub(crate) fn new(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> NearPlane {
+        let u = [0, 1, 2].map(|k| b[k] - a[k]);
+        let v = [0, 1, 2].map(|k| c[k] - a[k]);
+        let largest = (a.iter().chain(&b).chain(&c)).fold(0.0f64, |m, x| m.max(x.abs()));
+        NearPlane {
+            a,
+            normal: [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ],
+            largest,
+            reach: u.iter().chain(&v).fold(0.0f64, |m, x| m.max(x.abs())),
+        }
     }
-    if det > bound {
-        Some(Ordering::Greater)
-    } else if det < -bound {
-        Some(Ordering::Less)
-    } else {
-        None
+
+    /// The plane of the triangle `t`, indices into the points `p`.
+    pub(crate) fn of_triangle(p: &[[f64; 3]], t: [usize; 3]) -> NearPlane {
+        NearPlane::new(p[t[0]], p[t[1]], p[t[2]])
+    }
+
+    /// The sign of det[b − a, c − a, d − a] of the plane's corners and `d` (also within
+    /// 3 ulps of its exact value), if the bound (type docs) proves it; `None` if it cannot.
+    pub(crate) fn certain_side(&self, d: [f64; 3]) -> Option<Ordering> {
+        let w = [0, 1, 2].map(|k| d[k] - self.a[k]);
+        let det = w[0] * self.normal[0] + w[1] * self.normal[1] + w[2] * self.normal[2];
+        let m = d.iter().fold(self.largest, |m, x| m.max(x.abs()));
+        let unit = f64::EPSILON * 0.5;
+        let e = 8.0 * m * unit;
+        let reach = w.iter().fold(self.reach, |r, x| r.max(x.abs())) + e;
+        let bound = 2.0 * reach * reach * (24.0 * e + 48.0 * reach * unit);
+        // Below 1e-90 products of three differences could lose bits to underflow.
+        // A NaN or infinite coordinate makes `det` NaN or infinite.
+        if !det.is_finite() || !bound.is_finite() || reach < 1e-90 {
+            return None;
+        }
+        if det > bound {
+            Some(Ordering::Greater)
+        } else if det < -bound {
+            Some(Ordering::Less)
+        } else {
+            None
+        }
     }
 }
 

@@ -15,7 +15,7 @@ use super::transversal::PARALLEL_FROM;
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
 use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
-use crate::num::{filtered_orient3d, Float, Num, PlaneF64};
+use crate::num::{Float, NearPlane, Num, PlaneF64};
 use crate::union_find::UnionFind;
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
@@ -162,29 +162,23 @@ pub(crate) fn conforming_after_moves<N: Num>(
     // Few triangles moved (a rounded result): each triangle's box is looked up among theirs,
     // instead of pairing all boxes.
     let few = touched.len() * FEW_MOVED < tris.len();
-    // Each point's nearest `f64`, once: the corners of the triangles' boxes, and in float
-    // mode the points themselves, whose triangles' planes tell most pairs apart with a few
-    // dot products before anything is projected (prepared once where every pair is tested).
+    // Each point's nearest `f64`, once: the corners of the triangles' boxes, and the corners of
+    // the triangles' planes, which tell most pairs apart with a few dot products before
+    // anything is projected (prepared once where every pair is tested).
     let f64s: Vec<[f64; 3]> = points.iter().map(|p| p.to_f64()).collect();
-    let planes: Vec<PlaneF64> = match N::EXACT || few {
+    let plane = |t: [usize; 3]| SidePlane::of_triangle::<N>(&f64s, t);
+    let planes: Vec<SidePlane> = match few {
         true => Vec::new(),
-        false => (tris.iter())
-            .map(|&t| PlaneF64::of_triangle(&f64s, t))
-            .collect(),
+        false => tris.iter().map(|&t| plane(t)).collect(),
     };
     // Triangles `ti` and `ui` meet only in their shared corners (each test is symmetric).
     let meet_in_shared = |ti: usize, ui: usize| {
         let (t, s) = (tris[ti], tris[ui]);
-        // Either triangle's plane, by the static filter of `f64` points or the semi-static
-        // one on exact points' nearest `f64`s.
-        let off = |t: [usize; 3], s: [usize; 3], ti: usize| match (N::EXACT, planes.get(ti)) {
-            (true, _) => off_plane_but_shared(t, s, |v| {
-                filtered_orient3d(f64s[t[0]], f64s[t[1]], f64s[t[2]], f64s[v])
-            }),
-            (false, Some(plane)) => off_plane_but_shared(t, s, |v| plane.certain_side(f64s[v])),
-            (false, None) => {
-                let plane = PlaneF64::of_triangle(&f64s, t);
-                off_plane_but_shared(t, s, |v| plane.certain_side(f64s[v]))
+        let off = |t: [usize; 3], s: [usize; 3], ti: usize| match planes.get(ti) {
+            Some(p) => off_plane_but_shared(t, s, |v| p.certain_side(f64s[v])),
+            None => {
+                let p = plane(t);
+                off_plane_but_shared(t, s, |v| p.certain_side(f64s[v]))
             }
         };
         if off(t, s, ti) || off(s, t, ui) {
@@ -234,6 +228,32 @@ pub(crate) fn conforming_after_moves<N: Num>(
     MeetingBoxes::new(boxes).all_pairs(parallel, |t, u| {
         !(flags[t] || flags[u]) || meet_in_shared(t, u)
     })
+}
+
+/// A triangle's plane prepared for the side of many points by a filter: on `f64` values
+/// (float mode), or on the nearest `f64`s of exact values.
+enum SidePlane {
+    Values(PlaneF64),
+    Near(NearPlane),
+}
+
+impl SidePlane {
+    /// The plane of the triangle `t` of points of backend `N`, indices into their nearest
+    /// `f64`s `p`.
+    fn of_triangle<N: Num>(p: &[[f64; 3]], t: [usize; 3]) -> SidePlane {
+        match N::EXACT {
+            true => SidePlane::Near(NearPlane::of_triangle(p, t)),
+            false => SidePlane::Values(PlaneF64::of_triangle(p, t)),
+        }
+    }
+
+    /// The side of the point `d` where the filter is certain of it.
+    fn certain_side(&self, d: [f64; 3]) -> Option<Ordering> {
+        match self {
+            SidePlane::Values(p) => p.certain_side(d),
+            SidePlane::Near(p) => p.certain_side(d),
+        }
+    }
 }
 
 /// [`conforming_after_moves`] looks up the triangles near the moved ones where these are fewer
@@ -389,7 +409,7 @@ fn face_triangles<N: Num>(
         return Err(degenerate("all its vertices are collinear".into()));
     };
     if let Some(i) =
-        (2..face.len()).find(|&i| orient3d(p(0), p(1), p(k), p(i), ctx) != Ordering::Equal)
+        (k + 1..face.len()).find(|&i| orient3d(p(0), p(1), p(k), p(i), ctx) != Ordering::Equal)
     {
         return Err(Yin3Error::NonPlanarFace {
             face: f,
