@@ -203,10 +203,15 @@ fn face<'a>(
     Ok(indices)
 }
 
+/// The forms of a face corner, for errors.
+const CORNER_FORMS: &str = "expected `i`, `i/j`, `i/j/k` or `i//k`";
+
 /// The 0-based vertex index of one face corner `token` (`i`, `i/j`, `i/j/k` or `i//k`).
 fn corner(text: &str, token: &str, defined: usize) -> Result<usize, ParseError> {
+    if token.bytes().all(|c| c.is_ascii_digit()) {
+        return vertex_index(text, token, token, defined);
+    }
     let (parts, count) = first_of::<4>(token.split('/'));
-    let form = "expected `i`, `i/j`, `i/j/k` or `i//k`";
     let optional = match (count, &parts) {
         (1, _) => &[][..],
         (2, [_, j, ..]) => &[*j][..],
@@ -214,7 +219,11 @@ fn corner(text: &str, token: &str, defined: usize) -> Result<usize, ParseError> 
         (3, [_, j, k, _]) => &[*j, *k][..],
         _ => {
             let extra = parts[3];
-            return Err(at(text, extra, format!("`{token}`: too many `/`, {form}")));
+            return Err(at(
+                text,
+                extra,
+                format!("`{token}`: too many `/`, {CORNER_FORMS}"),
+            ));
         }
     };
     for &part in optional {
@@ -231,12 +240,17 @@ fn corner(text: &str, token: &str, defined: usize) -> Result<usize, ParseError> 
                 return Err(at(
                     text,
                     part,
-                    format!("`{token}`: `{part}` is not an index, {form}"),
+                    format!("`{token}`: `{part}` is not an index, {CORNER_FORMS}"),
                 ))
             }
         }
     }
-    let i = parts[0];
+    vertex_index(text, token, parts[0], defined)
+}
+
+/// The 0-based index of the vertex that `i`, the first part of the face corner `token`,
+/// names: 1-based, or counted back from the last of the `defined` vertices if negative.
+fn vertex_index(text: &str, token: &str, i: &str, defined: usize) -> Result<usize, ParseError> {
     let range = || {
         format!(
             "`{token}`: vertex index {i} is out of range, {defined} vertices are defined so far"
@@ -246,7 +260,7 @@ fn corner(text: &str, token: &str, defined: usize) -> Result<usize, ParseError> 
         None => Err(at(
             text,
             i,
-            format!("`{token}`: `{i}` is not a vertex index, {form}"),
+            format!("`{token}`: `{i}` is not a vertex index, {CORNER_FORMS}"),
         )),
         Some(Some(0)) => Err(at(
             text,
@@ -268,11 +282,25 @@ fn corner(text: &str, token: &str, defined: usize) -> Result<usize, ParseError> 
 /// An optional `-` and decimal digits: `Some(Some(value))`, `Some(None)` if it overflows
 /// `i64` (syntactically an index, but out of every range), `None` if it is not an integer.
 fn integer(s: &str) -> Option<Option<i64>> {
-    let digits = s.strip_prefix('-').unwrap_or(s);
-    if digits.is_empty() || !digits.bytes().all(|c| c.is_ascii_digit()) {
+    let (negative, digits) = match s.strip_prefix('-') {
+        Some(digits) => (true, digits),
+        None => (false, s),
+    };
+    if digits.is_empty() {
         return None;
     }
-    Some(s.parse().ok())
+    // The magnitude, `None` once it passes every i64's.
+    let mut magnitude = Some(0u64);
+    for c in digits.bytes() {
+        if !c.is_ascii_digit() {
+            return None;
+        }
+        magnitude = magnitude.and_then(|m| m.checked_mul(10)?.checked_add((c - b'0') as u64));
+    }
+    Some(magnitude.and_then(|m| match negative {
+        true => 0i64.checked_sub_unsigned(m),
+        false => i64::try_from(m).ok(),
+    }))
 }
 
 /// The triangle groups of a 3D set's OBJ text: one object `surface_K_positive` or
@@ -372,6 +400,35 @@ mod tests {
         assert_eq!(mesh.vertices[1], Point3::int(1, 2, 3));
         assert_eq!(mesh.vertices[2], Point3::int(1, 2, 3));
         assert!(mesh.faces.is_empty() && mesh.face_lines.is_empty());
+    }
+
+    proptest::proptest! {
+        /// Every `i64` written in decimal reads back as itself.
+        #[test]
+        fn integers_read_back(v in proptest::prelude::any::<i64>()) {
+            proptest::prop_assert_eq!(integer(&v.to_string()), Some(Some(v)));
+        }
+    }
+
+    /// Integers just past `i64`'s range are indices out of every range; other text is none.
+    #[test]
+    fn integers_past_i64_or_malformed() {
+        let cases = [
+            ("9223372036854775807", Some(Some(i64::MAX))),
+            ("9223372036854775808", Some(None)),
+            ("-9223372036854775808", Some(Some(i64::MIN))),
+            ("-9223372036854775809", Some(None)),
+            ("99999999999999999999999", Some(None)),
+            ("-0", Some(Some(0))),
+            ("", None),
+            ("-", None),
+            ("+1", None),
+            ("1a", None),
+            ("1/2", None),
+        ];
+        for (text, want) in cases {
+            assert_eq!(integer(text), want, "{text:?}");
+        }
     }
 
     #[test]
