@@ -5,6 +5,7 @@
 //! contact point lying on it, two triangles that share a segment split it at the same points: the
 //! pieces form a conforming complex.
 
+use super::bvh::Bvh;
 use super::geom::{f64_box, in_triangle3, Chart};
 use super::locate::TriBoxes;
 use super::tri::{apart_across, corners_after, intersect_with, meet_only_at};
@@ -12,6 +13,7 @@ use super::triangulate::{triangulate, TriangulateError};
 use crate::kernel::{orient, orient3d, Point, Point3};
 use crate::num::Num;
 use foldhash::HashMap;
+use rstar::AABB;
 use smallvec::SmallVec;
 use std::cell::OnceCell;
 use std::cmp::Ordering;
@@ -114,25 +116,34 @@ pub(crate) fn arrange<N: Num>(
     ctx: &N::Ctx,
 ) -> Result<Arrangement, ArrangeError<N>> {
     let n = soup.tris.len();
-    // One R-tree of boxes per group of triangles whose pairs are wanted: the other operand's,
-    // or, for every pair, all of them.
     let group: Vec<usize> = (0..n)
         .map(|i| match pairs {
             Pairs::Across => usize::from(soup.operand[i]),
             Pairs::All => 0,
         })
         .collect();
-    let boxes: [TriBoxes; 2] = [0, 1].map(|g| {
-        TriBoxes::new(
-            (0..n)
-                .filter(|&i| group[i] == g)
-                .map(|i| (i, soup.corners(i))),
-        )
-    });
-    let tree_against = |i: usize| match pairs {
-        Pairs::Across => &boxes[1 - group[i]],
-        Pairs::All => &boxes[0],
+    let f64_boxes: Vec<AABB<[f64; 3]>> = (0..n).map(|i| f64_box(soup.corners(i))).collect();
+    let members: [Vec<usize>; 2] = [0, 1].map(|g| (0..n).filter(|&i| group[i] == g).collect());
+    // The hierarchies of the groups' boxes, and the pairs whose boxes meet, each as (smaller,
+    // larger): of the two operands' hierarchies walked together, or of the one hierarchy
+    // walked with itself.
+    let trees: Vec<Bvh> = match pairs {
+        Pairs::Across => members.iter().map(|m| Bvh::new(m, &f64_boxes)).collect(),
+        Pairs::All => vec![Bvh::new(&members[0], &f64_boxes)],
     };
+    let mut meeting: Vec<(usize, usize)> = Vec::new();
+    let (x, y) = (&trees[0], trees.last().expect("a hierarchy"));
+    each_meeting_pair(x, y, |t, s| match pairs {
+        Pairs::Across => meeting.push((t.min(s), t.max(s))),
+        // Each pair comes twice, once in each order, and each box with itself.
+        Pairs::All if t < s => meeting.push((t, s)),
+        Pairs::All => {}
+    });
+    meeting.sort_unstable();
+    // One R-tree of boxes per group, for the caller's point location.
+    let boxes: [TriBoxes; 2] = members
+        .each_ref()
+        .map(|m| TriBoxes::of_boxes(m, &f64_boxes));
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut coplanar: Vec<Vec<usize>> = vec![Vec::new(); n];
     let mut contact: BTreeSet<usize> = BTreeSet::new();
@@ -142,54 +153,56 @@ pub(crate) fn arrange<N: Num>(
     let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
     // Each triangle's normal, made once where a pair needs it.
     let normals: Vec<OnceCell<Point3<N>>> = (0..n).map(|_| OnceCell::new()).collect();
-    for i in 0..n {
-        let b = f64_box(soup.corners(i));
-        let mut others: Vec<usize> = tree_against(i).meeting(&b).filter(|&j| j > i).collect();
-        others.sort_unstable();
-        for j in others {
-            if let Some(shared) = shared_only(&soup.points, soup.tris[i], soup.tris[j], ctx) {
-                contact.extend(shared);
-                continue;
-            }
-            let (t, s) = (soup.corners(i), soup.corners(j));
-            let Some(c) = intersect_with(t, s, [&normals[i], &normals[j]], ctx) else {
-                continue;
-            };
-            if c.interiors_meet && pairs == Pairs::All {
-                return Err(ArrangeError::Clash {
-                    a: i,
-                    b: j,
-                    coplanar: c.coplanar,
-                    point: c.points[0].clone(),
-                });
-            }
-            let ids: SmallVec<[usize; 6]> = c.points.iter().map(|p| soup.intern(p)).collect();
-            for &v in &ids {
-                contact.insert(v);
-                for t in [i, j] {
-                    if N::EXACT && !soup.tris[t].contains(&v) {
-                        extra[t].insert(v);
-                    }
+    for (i, j) in meeting {
+        if let Some(shared) = shared_only(&soup.points, soup.tris[i], soup.tris[j], ctx) {
+            contact.extend(shared);
+            continue;
+        }
+        let (t, s) = (soup.corners(i), soup.corners(j));
+        let Some(c) = intersect_with(t, s, [&normals[i], &normals[j]], ctx) else {
+            continue;
+        };
+        if c.interiors_meet && pairs == Pairs::All {
+            return Err(ArrangeError::Clash {
+                a: i,
+                b: j,
+                coplanar: c.coplanar,
+                point: c.points[0].clone(),
+            });
+        }
+        let ids: SmallVec<[usize; 6]> = c.points.iter().map(|p| soup.intern(p)).collect();
+        for &v in &ids {
+            contact.insert(v);
+            for t in [i, j] {
+                if N::EXACT && !soup.tris[t].contains(&v) {
+                    extra[t].insert(v);
                 }
             }
-            if c.coplanar && c.interiors_meet {
-                coplanar[i].push(j);
-                coplanar[j].push(i);
-            }
-            cuts[i].extend(c.cuts_t.iter().map(|&(p, q)| (ids[p], ids[q])));
-            cuts[j].extend(c.cuts_s.iter().map(|&(p, q)| (ids[p], ids[q])));
         }
+        if c.coplanar && c.interiors_meet {
+            coplanar[i].push(j);
+            coplanar[j].push(i);
+        }
+        cuts[i].extend(c.cuts_t.iter().map(|&(p, q)| (ids[p], ids[q])));
+        cuts[j].extend(c.cuts_s.iter().map(|&(p, q)| (ids[p], ids[q])));
     }
-    // Every contact point goes to every triangle containing it.
-    for &v in &contact {
-        let b = f64_box([&soup.points[v]]);
-        for t in boxes.iter().flat_map(|x| x.meeting(&b)) {
-            if !soup.tris[t].contains(&v)
-                && !extra[t].contains(&v)
-                && in_triangle3(soup.corners(t), &soup.points[v], ctx)
-            {
-                extra[t].insert(v);
-            }
+    // Every contact point goes to every triangle containing it: the hierarchy of the points'
+    // boxes walked with the triangles'.
+    let contacts: Vec<usize> = contact.iter().copied().collect();
+    let point_boxes: Vec<AABB<[f64; 3]>> = (contacts.iter())
+        .map(|&v| f64_box([&soup.points[v]]))
+        .collect();
+    let at_points = Bvh::new(&(0..contacts.len()).collect::<Vec<_>>(), &point_boxes);
+    let mut near: Vec<(usize, usize)> = Vec::new();
+    for tree in &trees {
+        each_meeting_pair(&at_points, tree, |k, t| near.push((t, contacts[k])));
+    }
+    for (t, v) in near {
+        if !soup.tris[t].contains(&v)
+            && !extra[t].contains(&v)
+            && in_triangle3(soup.corners(t), &soup.points[v], ctx)
+        {
+            extra[t].insert(v);
         }
     }
     let mut pieces = Vec::with_capacity(n);
@@ -223,6 +236,16 @@ pub(crate) fn arrange<N: Num>(
         coplanar,
         boxes,
     })
+}
+
+/// Calls `f(t, s)` on every pair of a box `t` of `x` and a box `s` of `y` that meet.
+fn each_meeting_pair(x: &Bvh, y: &Bvh, mut f: impl FnMut(usize, usize)) {
+    for piece in x.meeting_nodes(y, 1) {
+        x.meeting_pairs(y, piece, &mut |t, s| {
+            f(t, s);
+            true
+        });
+    }
 }
 
 /// The points `extra` of the closed triangle `tri` (indices into `points`, none a corner),

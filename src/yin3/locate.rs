@@ -25,6 +25,15 @@ impl TriBoxes {
         ))
     }
 
+    /// The boxes `boxes[i]` of the triangles `i` in `items`, each named by its index.
+    pub(crate) fn of_boxes(items: &[usize], boxes: &[AABB<[f64; 3]>]) -> TriBoxes {
+        TriBoxes(RTree::bulk_load(
+            (items.iter())
+                .map(|&i| GeomWithData::new(Rectangle::from_aabb(boxes[i]), i))
+                .collect(),
+        ))
+    }
+
     /// The triangles whose box, widened by `slack` (float mode's ε; 0 in exact mode),
     /// contains `q`: all that [`on_triangles`] can find `q` on (the sums rounded outward, so
     /// that a triangle exactly `slack` away is among them).
@@ -36,11 +45,6 @@ impl TriBoxes {
         self.0
             .locate_in_envelope_intersecting(&near)
             .map(|g| g.data)
-    }
-
-    /// The triangles whose box meets the box `b`.
-    pub(crate) fn meeting<'a>(&'a self, b: &AABB<[f64; 3]>) -> impl Iterator<Item = usize> + 'a {
-        self.0.locate_in_envelope_intersecting(b).map(|g| g.data)
     }
 
     /// The triangles whose box meets the ray from `q` along +x: all that can count in
