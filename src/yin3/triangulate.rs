@@ -10,7 +10,7 @@
 //! chains from side to side (the triangle split into polygons along them, each ear-clipped).
 
 use crate::kernel::{on_closed_segment, orient, Point};
-use crate::num::Num;
+use crate::num::{Interval, Num};
 use foldhash::{HashMap, HashMapExt};
 use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering::{Equal, Greater, Less};
@@ -74,8 +74,9 @@ pub(crate) fn triangulate<N: Num>(
     }
     let mut owner = HashMap::new();
     let mut pieces = Vec::new();
+    let near = enclosures(points);
     for (c, &(u, v)) in constraints.iter().enumerate() {
-        for (a, b) in split(points, u, v, ctx) {
+        for (a, b) in split(points, &near, u, v, ctx) {
             if let Entry::Vacant(e) = owner.entry(key(a, b)) {
                 e.insert(c);
                 pieces.push((a, b, c));
@@ -266,22 +267,49 @@ fn in_closed<N: Num>(points: &[Point<N>], t: [usize; 3], x: usize, ctx: &N::Ctx)
     (0..3).all(|i| orient(&points[t[i]], &points[t[(i + 1) % 3]], &points[x], ctx) != Less)
 }
 
+/// An interval around each coordinate of each point (from [`Num::approx`]).
+fn enclosures<N: Num>(points: &[Point<N>]) -> Vec<[Interval; 2]> {
+    (points.iter())
+        .map(|p| [&p.x, &p.y].map(|c| Interval::around(c.approx())))
+        .collect()
+}
+
 /// The pieces of the segment `uv` between consecutive points lying on it (its ends by index:
 /// the points are distinct, and an equal point is where the exact tests cost most).
-fn split<N: Num>(points: &[Point<N>], u: usize, v: usize, ctx: &N::Ctx) -> Vec<(usize, usize)> {
+fn split<N: Num>(
+    points: &[Point<N>],
+    near: &[[Interval; 2]],
+    u: usize,
+    v: usize,
+    ctx: &N::Ctx,
+) -> Vec<(usize, usize)> {
     let (a, b) = (&points[u], &points[v]);
-    // With exact predicates the segment's box first: most points lie beyond it, and
-    // comparisons cost less than an orientation (which no filter decides where it is zero, as
-    // on the segment). A tolerance's orientation may take points beside the box.
+    // With exact predicates the segment's box first: most points lie beyond it, which their
+    // enclosures `near` mostly show without exact comparisons, and comparisons cost less than
+    // an orientation (which no filter decides where it is zero, as on the segment). A
+    // tolerance's orientation may take points beside the box.
+    let beyond = |w: usize, k: usize| {
+        let (p, q, r) = (near[u][k], near[v][k], near[w][k]);
+        let side = r.cmp(p);
+        side.is_some() && side == r.cmp(q)
+    };
     let within = |lo: &N, hi: &N, x: &N| {
         let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
         lo <= x && x <= hi
     };
-    let in_box = |w: &Point<N>| !N::EXACT || within(&a.x, &b.x, &w.x) && within(&a.y, &b.y, &w.y);
-    let on_segment =
-        |w: &Point<N>| in_box(w) && orient(a, b, w, ctx) == Equal && on_closed_segment(a, b, w);
+    let in_box = |w: usize| {
+        let p = &points[w];
+        !N::EXACT
+            || !beyond(w, 0)
+                && !beyond(w, 1)
+                && within(&a.x, &b.x, &p.x)
+                && within(&a.y, &b.y, &p.y)
+    };
+    let on_segment = |w: usize| {
+        in_box(w) && orient(a, b, &points[w], ctx) == Equal && on_closed_segment(a, b, &points[w])
+    };
     let mut on: Vec<usize> = (0..points.len())
-        .filter(|&w| w == u || w == v || on_segment(&points[w]))
+        .filter(|&w| w == u || w == v || on_segment(w))
         .collect();
     on.sort_by(|&x, &y| points[x].cmp(&points[y]));
     on.windows(2).map(|w| (w[0], w[1])).collect()
@@ -646,14 +674,26 @@ mod tests {
         fn splits<N: Num>(ctx: &N::Ctx) {
             // Horizontal: 0 → 1 through 2; 3 and 4 collinear beyond the ends; 5 beside.
             let flat = pts::<N>(&[(0, 0), (4, 0), (2, 0), (6, 0), (-1, 0), (2, 1)]);
-            assert_eq!(split(&flat, 0, 1, ctx), [(0, 2), (2, 1)]);
-            assert_eq!(split(&flat, 1, 0, ctx), [(0, 2), (2, 1)]);
+            assert_eq!(
+                split(&flat, &enclosures(&flat), 0, 1, ctx),
+                [(0, 2), (2, 1)]
+            );
+            assert_eq!(
+                split(&flat, &enclosures(&flat), 1, 0, ctx),
+                [(0, 2), (2, 1)]
+            );
             // Vertical, the same points turned.
             let upright = pts::<N>(&[(0, 0), (0, 4), (0, 2), (0, 6), (0, -1), (1, 2)]);
-            assert_eq!(split(&upright, 0, 1, ctx), [(0, 2), (2, 1)]);
+            assert_eq!(
+                split(&upright, &enclosures(&upright), 0, 1, ctx),
+                [(0, 2), (2, 1)]
+            );
             // Slanted: (3, 3) past the end, (1, 2) beside, (1, 1) and (2, 2) on it.
             let slant = pts::<N>(&[(0, 0), (2, 2), (3, 3), (1, 2), (1, 1)]);
-            assert_eq!(split(&slant, 0, 1, ctx), [(0, 4), (4, 1)]);
+            assert_eq!(
+                split(&slant, &enclosures(&slant), 0, 1, ctx),
+                [(0, 4), (4, 1)]
+            );
         }
         splits::<Rational>(&());
         splits::<Float>(&Tolerance::default().resolve(8.0, 8.0).expect("a tolerance"));
