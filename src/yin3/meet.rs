@@ -140,6 +140,12 @@ fn meet_in<N: Num>(a: &Brep<N>, b: &Brep<N>, ctx: N::Ctx) -> Result<YinSet3<N>, 
     Ok(YinSet3::from_brep(brep, ctx))
 }
 
+/// The corners of a triangle in increasing order.
+fn sorted(mut t: [usize; 3]) -> [usize; 3] {
+    t.sort_unstable();
+    t
+}
+
 /// The side of every piece relative to the other operand, decided without constructing a point
 /// where a patch has a vertex off the other's boundary. Membership is constant on patches: pieces
 /// of one operand joined across edges that are no edge of the other's pieces. (Every contact point
@@ -148,7 +154,8 @@ fn meet_in<N: Num>(a: &Brep<N>, b: &Brep<N>, ctx: N::Ctx) -> Result<YinSet3<N>, 
 /// pieces on the other's boundary.) A piece lies on the other's boundary iff it lies in a closed
 /// triangle that overlaps its parent in their plane (the overlap's sides are cuts, so no piece
 /// straddles them: [`piece_in_triangle2`]), on the same or the opposite side as that triangle's
-/// orientation in the parent's chart tells. Every other patch is decided by one ray, from a vertex
+/// orientation in the parent's chart tells; where the other operand has a piece with the same
+/// corners, that piece's parent is such a triangle, and the two pieces' turns tell the side. Every other patch is decided by one ray, from a vertex
 /// off the other's boundary where it has one (an input vertex), else from a piece's centroid.
 fn classify<N: Num>(
     soup: &Soup<N>,
@@ -189,10 +196,31 @@ fn classify<N: Num>(
     type Overlaps<N> = (Chart, Vec<(Triangle2<N>, Side)>);
     let overlap_cells: Vec<OnceCell<Overlaps<N>>> =
         (0..soup.tris.len()).map(|_| OnceCell::new()).collect();
-    // The side of piece `t` of `parent` if it lies in a triangle overlapping its parent.
-    let on_overlap = |t: &[usize; 3], parent: usize| -> Option<Side> {
-        if arrangement.coplanar[parent].is_empty() || !t.iter().all(|&v| contact[v]) {
+    // The pieces that may lie on an overlap (their parents overlap others, their corners are
+    // contacts), by operand and corners in increasing order.
+    let may_overlap = |(t, parent): &([usize; 3], usize)| {
+        !arrangement.coplanar[*parent].is_empty() && t.iter().all(|&v| contact[v])
+    };
+    let by_corners: HashMap<(usize, [usize; 3]), usize> = (0..pieces.len())
+        .filter(|&i| may_overlap(&pieces[i]))
+        .map(|i| ((op(i), sorted(pieces[i].0)), i))
+        .collect();
+    // The side of piece `i`, `t` of `parent`, if it lies in a triangle overlapping its parent:
+    // a piece of the other operand with the same corners lies in its parent, which overlaps
+    // this one (on the same side iff the two pieces turn the same way); else the triangles
+    // overlapping the parent are searched.
+    let on_overlap = |i: usize, t: &[usize; 3], parent: usize| -> Option<Side> {
+        if !may_overlap(&pieces[i]) {
             return None;
+        }
+        if let Some(&j) = by_corners.get(&(1 - op(i), sorted(*t))) {
+            let u = pieces[j].0;
+            let same_turn = (0..3).any(|k| [u[k], u[(k + 1) % 3], u[(k + 2) % 3]] == *t);
+            return Some(if same_turn {
+                Side::Same
+            } else {
+                Side::Opposite
+            });
         }
         let (ch, tris_over) = overlap_cells[parent].get_or_init(|| {
             let [a, b, c] = soup.corners(parent);
@@ -221,7 +249,7 @@ fn classify<N: Num>(
     (0..pieces.len())
         .map(|i| {
             let (t, parent) = &pieces[i];
-            if let Some(side) = on_overlap(t, *parent) {
+            if let Some(side) = on_overlap(i, t, *parent) {
                 return side;
             }
             let o = op(i);
