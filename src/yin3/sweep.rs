@@ -1,9 +1,10 @@
 //! The pairs of boxes that meet (the broad phase of triangle–triangle tests), by sweep and
 //! prune: the boxes sorted by their lower x, each scanned against those that start within its
-//! x-range; where that would scan too many (a surface's boxes, side by side along x), by a
-//! uniform grid of cells about twice the boxes' mean size, each pair tested in the one cell
-//! that holds the lower corner of their common box; an R-tree of the boxes where the grid too
-//! would hold too many (long boxes, infinite coordinates).
+//! x-range; where that would scan too many (a surface's boxes, side by side along x, most
+//! often known before any sorting from a histogram of the lower x's), by a uniform grid of
+//! cells about twice the boxes' mean size, its boxes grouped by cell with a radix sort, each
+//! pair tested in the one cell that holds the lower corner of their common box; an R-tree of
+//! the boxes where the grid too would hold too many (long boxes, infinite coordinates).
 
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
@@ -14,11 +15,20 @@ use rstar::{RTree, AABB};
 /// order, a query of the tree walks a few dozen nodes.
 const SCANS_PER_BOX: usize = 64;
 
+/// The scans of the sweep (or box pairs in the grid's cells) allowed for `n` boxes:
+/// [`SCANS_PER_BOX`] per box, and a few thousand more for a handful of boxes.
+fn budget(n: usize) -> usize {
+    SCANS_PER_BOX * n + 4096
+}
+
 /// The most cells of the grid along one axis.
 const GRID_CELLS: usize = 1024;
 
 /// The most cells a box is in, on average, before the grid gives way to the tree.
 const CELLS_PER_BOX: usize = 16;
+
+/// The most bits of a cell's number that one pass of the grid's radix sort orders by.
+const RADIX_BITS: u32 = 11;
 
 /// The boxes, ready to give the pairs that meet.
 pub(crate) enum MeetingBoxes {
@@ -42,23 +52,20 @@ pub(crate) enum MeetingBoxes {
 pub(crate) struct Grid {
     /// The boxes.
     boxes: Vec<AABB<[f64; 3]>>,
-    /// Each box's lowest cell, by its coordinates on the three axes.
-    first: Vec<[u32; 3]>,
-    /// Each cell's number of cells along y and z, to name a cell by one number.
-    cells: [u32; 3],
-    /// The boxes of every cell they meet, as (cell number) · 2³² + box, sorted.
+    /// The boxes of every cell they meet, cell by cell, as (cell number) · 2³² + box · 2³ +
+    /// the axes (bits x, y, z from the lowest) on which the cell is the box's lowest.
     entries: Vec<u64>,
     /// Where each occupied cell's run of entries starts, then the end of the last.
     runs: Vec<usize>,
 }
 
 impl Grid {
-    /// The grid of `boxes`, or the boxes back if a coordinate is infinite or the boxes are in
-    /// more than [`CELLS_PER_BOX`] cells or have more than [`SCANS_PER_BOX`] pairs in a cell,
-    /// per box on average.
+    /// The grid of `boxes`, or the boxes back if a coordinate is infinite, there are 2²⁹ boxes
+    /// or more, or the boxes are in more than [`CELLS_PER_BOX`] cells or have more than
+    /// [`SCANS_PER_BOX`] pairs in a cell, per box on average.
     fn new(boxes: Vec<AABB<[f64; 3]>>) -> Result<Grid, Vec<AABB<[f64; 3]>>> {
         let n = boxes.len();
-        if n == 0 || u32::try_from(n).is_err() {
+        if n == 0 || n >= 1 << 29 {
             return Err(boxes);
         }
         let (mut lo, mut hi) = (boxes[0].lower(), boxes[0].upper());
@@ -104,21 +111,23 @@ impl Grid {
         if count > CELLS_PER_BOX * n + 4096 {
             return Err(boxes);
         }
+        // Each box in each of its cells, marked with the axes on which that cell is its lowest.
         let mut entries = Vec::with_capacity(count);
-        let mut first = Vec::with_capacity(n);
         for (i, b) in boxes.iter().enumerate() {
             let [(x0, x1), (y0, y1), (z0, z1)] = range(b);
-            first.push([x0, y0, z0]);
             for x in x0..=x1 {
                 for y in y0..=y1 {
                     for z in z0..=z1 {
-                        let c = Grid::number(cells, [x, y, z]);
-                        entries.push(c << 32 | i as u64);
+                        let number = (x as u64 * cells[1] as u64 + y as u64) * cells[2] as u64;
+                        let lowest =
+                            (x == x0) as u64 | ((y == y0) as u64) << 1 | ((z == z0) as u64) << 2;
+                        entries.push((number + z as u64) << 32 | (i as u64) << 3 | lowest);
                     }
                 }
             }
         }
-        entries.par_sort_unstable();
+        let total = cells.iter().map(|&c| c as u64).product::<u64>();
+        let entries = by_cell(entries, u64::BITS - (total - 1).leading_zeros());
         let mut runs: Vec<usize> = (0..entries.len())
             .filter(|&k| k == 0 || entries[k] >> 32 != entries[k - 1] >> 32)
             .collect();
@@ -126,40 +135,98 @@ impl Grid {
         let pairs: usize = (runs.windows(2))
             .map(|w| (w[1] - w[0]) * (w[1] - w[0] - 1) / 2)
             .sum();
-        if pairs > SCANS_PER_BOX * n + 4096 {
+        if pairs > budget(n) {
             return Err(boxes);
         }
         Ok(Grid {
             boxes,
-            first,
-            cells,
             entries,
             runs,
         })
     }
 
-    /// The number of the cell with coordinates `c`.
-    fn number(cells: [u32; 3], c: [u32; 3]) -> u64 {
-        (c[0] as u64 * cells[1] as u64 + c[1] as u64) * cells[2] as u64 + c[2] as u64
-    }
-
     /// True if `f(i, j)` holds for the pairs of distinct boxes that meet and whose common
-    /// box's lower corner lies in the `k`-th occupied cell; stops at the first false.
+    /// box's lower corner lies in the `k`-th occupied cell (for each axis, the cell is the
+    /// lowest of one box or the other); stops at the first false.
     fn pairs_in(&self, k: usize, mut f: impl FnMut(usize, usize) -> bool) -> bool {
         let run = &self.entries[self.runs[k]..self.runs[k + 1]];
-        let cell = run[0] >> 32;
-        let index = |e: u64| (e & u32::MAX as u64) as usize;
+        let index = |e: u64| (e as u32 >> 3) as usize;
         (0..run.len()).all(|a| {
-            let i = index(run[a]);
-            let (bi, fi) = (&self.boxes[i], self.first[i]);
+            let (i, lowest) = (index(run[a]), run[a] & 7);
+            let bi = &self.boxes[i];
             run[a + 1..].iter().all(|&e| {
                 let j = index(e);
-                let (bj, fj) = (&self.boxes[j], self.first[j]);
-                let owner = [0, 1, 2].map(|d| fi[d].max(fj[d]));
-                !(Grid::number(self.cells, owner) == cell && meet(bi, bj)) || f(i, j)
+                !((lowest | e) & 7 == 7 && meet(bi, &self.boxes[j])) || f(i, j)
             })
         })
     }
+}
+
+/// `entries` ordered by their upper 32 bits, numbers below 2^`bits`: a stable radix sort from
+/// the lowest digit up, in as few passes of at most [`RADIX_BITS`] bits as there can be.
+fn by_cell(entries: Vec<u64>, bits: u32) -> Vec<u64> {
+    let passes = bits.div_ceil(RADIX_BITS).max(1);
+    let width = bits.div_ceil(passes);
+    let mut to = vec![0; entries.len()];
+    let mut from = entries;
+    for pass in 0..passes {
+        let digit = |e: u64| (e >> (32 + pass * width)) as usize & ((1 << width) - 1);
+        let mut starts = vec![0usize; 1 << width];
+        for &e in &from {
+            starts[digit(e)] += 1;
+        }
+        let mut sum = 0;
+        for s in &mut starts {
+            (*s, sum) = (sum, sum + *s);
+        }
+        for &e in &from {
+            let s = &mut starts[digit(e)];
+            to[*s] = e;
+            *s += 1;
+        }
+        std::mem::swap(&mut from, &mut to);
+    }
+    from
+}
+
+/// A lower bound on the sweep's scans of `boxes`, or a number past `budget` once the bound
+/// passes it; 0 where an x-coordinate is NaN, a lower one infinite or all lower ones equal.
+/// In O(n): the lower x's counted in n slabs of equal width, each box credited with those in
+/// the slabs strictly between its lower and its upper x's (they start after it and within
+/// its x-range).
+fn fewest_scans(boxes: &[AABB<[f64; 3]>], budget: usize) -> usize {
+    let n = boxes.len();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for b in boxes {
+        let (l, u) = (b.lower()[0], b.upper()[0]);
+        if l.is_nan() || u.is_nan() {
+            return 0;
+        }
+        (lo, hi) = (lo.min(l), hi.max(l));
+    }
+    if !(lo.is_finite() && hi.is_finite()) || lo == hi {
+        return 0;
+    }
+    // Monotone in x, so a box in a higher slab starts above, and one in a lower slab below.
+    let scale = n as f64 / (hi - lo);
+    let slab = |x: f64| (((x - lo) * scale) as usize).min(n - 1);
+    // How many lower x's lie below each slab, then the total.
+    let mut below = vec![0usize; n + 1];
+    for b in boxes {
+        below[slab(b.lower()[0]) + 1] += 1;
+    }
+    for s in 1..=n {
+        below[s] += below[s - 1];
+    }
+    let mut scans = 0;
+    for b in boxes {
+        let (s, t) = (slab(b.lower()[0]), slab(b.upper()[0]));
+        scans += below[t].saturating_sub(below[s + 1]);
+        if scans > budget {
+            break;
+        }
+    }
+    scans
 }
 
 /// True if the closed boxes meet.
@@ -177,26 +244,8 @@ impl MeetingBoxes {
     /// The sweep of `boxes`; past [`SCANS_PER_BOX`] scans per box their grid, or failing
     /// that their tree.
     pub(crate) fn new(boxes: Vec<AABB<[f64; 3]>>) -> MeetingBoxes {
-        let n = boxes.len();
-        let mut order: Vec<usize> = (0..n).collect();
-        order.sort_unstable_by(|&i, &j| boxes[i].lower()[0].total_cmp(&boxes[j].lower()[0]));
-        let lower_x: Vec<f64> = order.iter().map(|&i| boxes[i].lower()[0]).collect();
-        let ends: Vec<usize> = (order.iter())
-            .map(|&i| lower_x.partition_point(|&x| x <= boxes[i].upper()[0]))
-            .collect();
-        // The scans, counted until they pass the budget (each box's own place is in its range).
-        let budget = SCANS_PER_BOX * n + 4096;
-        let within = (ends.iter().enumerate()).try_fold(0usize, |scans, (k, &e)| {
-            Some(scans + e.saturating_sub(k + 1)).filter(|&s| s <= budget)
-        });
-        if within.is_some() {
-            let yz = (order.iter())
-                .map(|&i| {
-                    let (lo, hi) = (boxes[i].lower(), boxes[i].upper());
-                    [lo[1], lo[2], hi[1], hi[2]]
-                })
-                .collect();
-            return MeetingBoxes::Sweep { order, yz, ends };
+        if let Some(sweep) = MeetingBoxes::sweep(&boxes) {
+            return sweep;
         }
         let boxes = match Grid::new(boxes) {
             Ok(grid) => return MeetingBoxes::Grid(grid),
@@ -208,6 +257,38 @@ impl MeetingBoxes {
                 .collect(),
         );
         MeetingBoxes::Tree(boxes, tree)
+    }
+
+    /// The sweep of `boxes`, or `None` if it scans more than [`SCANS_PER_BOX`] boxes per box
+    /// (known without sorting where [`fewest_scans`] passes that).
+    fn sweep(boxes: &[AABB<[f64; 3]>]) -> Option<MeetingBoxes> {
+        let n = boxes.len();
+        let budget = budget(n);
+        if fewest_scans(boxes, budget) > budget {
+            return None;
+        }
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_unstable_by(|&i, &j| boxes[i].lower()[0].total_cmp(&boxes[j].lower()[0]));
+        let lower_x: Vec<f64> = order.iter().map(|&i| boxes[i].lower()[0]).collect();
+        // The scans, counted until they pass the budget (each box's own place is in its range).
+        let mut scans = 0;
+        let ends: Vec<usize> = (order.iter().enumerate())
+            .map_while(|(k, &i)| {
+                let end = lower_x.partition_point(|&x| x <= boxes[i].upper()[0]);
+                scans += end.saturating_sub(k + 1);
+                (scans <= budget).then_some(end)
+            })
+            .collect();
+        if ends.len() < n {
+            return None;
+        }
+        let yz = (order.iter())
+            .map(|&i| {
+                let (lo, hi) = (boxes[i].lower(), boxes[i].upper());
+                [lo[1], lo[2], hi[1], hi[2]]
+            })
+            .collect();
+        Some(MeetingBoxes::Sweep { order, yz, ends })
     }
 
     /// The number of parts the pairs come in: boxes, or the grid's occupied cells.
@@ -343,38 +424,60 @@ mod tests {
         })
     }
 
-    /// 300 to 400 boxes all spanning x ∈ [0, 1000], past the sweep's budget, with corners on
-    /// the integers from −20 to 20 in y and z (zero as −0.0 or 0.0) and sides of 0 to 3 there:
-    /// many touching in a face, an edge or a corner, on and off the grid's cell walls.
-    fn wide_boxes() -> impl Strategy<Value = Vec<AABB<[f64; 3]>>> {
+    /// 300 to 400 boxes past the sweep's budget, all spanning x ∈ [0, 1000], or if
+    /// `staggered` starting at an integer x from 0 to 15 and 0 to 47 long (past the budget by
+    /// [`fewest_scans`], and two cells of the grid along x), with corners on the integers from
+    /// −20 to 20 in y and z (zero as −0.0 or 0.0) and sides of 0 to 3 there: many touching in
+    /// a face, an edge or a corner, on and off the grid's cell walls.
+    fn wide_boxes(staggered: bool) -> impl Strategy<Value = Vec<AABB<[f64; 3]>>> {
         let side = || (-20..20i32, 0..4i32, any::<bool>());
-        proptest::collection::vec((side(), side()), 300..400).prop_map(|drawn| {
+        let x = (0..16i32, 0..48i32);
+        proptest::collection::vec((x, side(), side()), 300..400).prop_map(move |drawn| {
             drawn
                 .into_iter()
-                .map(|((y, dy, ny), (z, dz, nz))| {
+                .map(|((x, dx), (y, dy, ny), (z, dz, nz))| {
                     let v = |k: i32, negative_zero: bool| match (k, negative_zero) {
                         (0, true) => -0.0,
                         _ => k as f64,
                     };
-                    AABB::from_corners(
-                        [0.0, v(y, ny), v(z, nz)],
-                        [1000.0, v(y + dy, nz), v(z + dz, ny)],
-                    )
+                    let (x0, x1) = match staggered {
+                        true => (x as f64, (x + dx) as f64),
+                        false => (0.0, 1000.0),
+                    };
+                    AABB::from_corners([x0, v(y, ny), v(z, nz)], [x1, v(y + dy, nz), v(z + dz, ny)])
                 })
                 .collect()
         })
     }
 
+    /// The sweep's scans of `boxes`, each pair of boxes on its own: a pair is scanned once if
+    /// their lower x's are equal, and otherwise if the higher lower x is within the other
+    /// box's x-range.
+    fn brute_scans(boxes: &[AABB<[f64; 3]>]) -> usize {
+        let mut scans = 0;
+        for (i, a) in boxes.iter().enumerate() {
+            for b in &boxes[i + 1..] {
+                let (a, b) = match a.lower()[0] <= b.lower()[0] {
+                    true => (a, b),
+                    false => (b, a),
+                };
+                scans += (b.lower()[0] <= a.upper()[0]) as usize;
+            }
+        }
+        scans
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
-        /// Every pair of meeting boxes is asked exactly once and no other pair, by the sweep,
-        /// by the grid for finite boxes side by side along x, and by the tree for boxes all
-        /// reaching x = −∞; on one thread and on many.
+        /// Every pair of meeting boxes is asked exactly once and no other pair, by the sweep
+        /// (exactly where it is within its budget), by the grid for finite boxes side by side
+        /// along x, and by the tree for boxes all reaching x = −∞; on one thread and on many.
         #[test]
         fn the_pairs_asked_are_the_pairs_that_meet(
             (boxes, how) in prop_oneof![
                 lattice_boxes(false).prop_map(|b| (b, Kind::Sweep)),
-                wide_boxes().prop_map(|b| (b, Kind::Grid)),
+                wide_boxes(false).prop_map(|b| (b, Kind::Grid)),
+                wide_boxes(true).prop_map(|b| (b, Kind::Grid)),
                 lattice_boxes(true).prop_map(|b| (b, Kind::Tree)),
             ],
             parallel in any::<bool>(),
@@ -382,8 +485,30 @@ mod tests {
             let want = brute(&boxes);
             let (got, kind) = asked(&boxes, parallel);
             prop_assert_eq!(kind, how);
+            prop_assert_eq!(kind == Kind::Sweep, brute_scans(&boxes) <= budget(boxes.len()));
             prop_assert_eq!(got.iter().collect::<BTreeSet<_>>().len(), got.len(), "a pair asked twice");
             prop_assert_eq!(got, want);
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
+        /// The bound on the sweep's scans is at most their number, and passes the budget for
+        /// staggered boxes, which then go to the grid without the sweep's sorting.
+        #[test]
+        fn fewest_scans_is_a_lower_bound(
+            (boxes, staggered) in prop_oneof![
+                lattice_boxes(false).prop_map(|b| (b, false)),
+                lattice_boxes(true).prop_map(|b| (b, false)),
+                wide_boxes(false).prop_map(|b| (b, false)),
+                wide_boxes(true).prop_map(|b| (b, true)),
+            ],
+        ) {
+            let bound = fewest_scans(&boxes, usize::MAX);
+            prop_assert!(bound <= brute_scans(&boxes), "{} scans at least", bound);
+            if staggered {
+                prop_assert!(fewest_scans(&boxes, budget(boxes.len())) > budget(boxes.len()));
+            }
         }
     }
 
