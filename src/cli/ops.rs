@@ -29,17 +29,22 @@ pub enum Op {
 }
 
 impl Op {
-    /// The result on `first` and the `rest` (binary operations fold left over the rest).
-    pub fn apply<S: Set>(self, first: &S, rest: &[S]) -> Result<S, CliError> {
+    /// The result on `sets`, which it consumes (binary operations fold left over those after
+    /// the first); an error if there are none.
+    pub fn apply<S: Set>(self, sets: Vec<S>) -> Result<S, CliError> {
+        let mut sets = sets.into_iter();
+        let Some(first) = sets.next() else {
+            return Err(CliError::Usage("no input set given".to_string()));
+        };
         let step: fn(&S, &S) -> Result<S, CliError> = match self {
             Op::Meet => S::meet,
             Op::Join => S::join,
             Op::Difference => S::difference,
             Op::Xor => S::symmetric_difference,
-            Op::Complement => return Ok(S::complement(first)),
-            Op::Convert => return Ok(first.clone()),
+            Op::Complement => return Ok(S::complement(&first)),
+            Op::Convert => return Ok(first),
         };
-        rest.iter().try_fold(first.clone(), |acc, s| step(&acc, s))
+        sets.try_fold(first, |acc, s| step(&acc, &s))
     }
 }
 
@@ -57,9 +62,6 @@ pub fn operate<S: Set>(
         .iter()
         .map(|p| S::load(p, read, ctx))
         .collect::<Result<Vec<_>, _>>()?;
-    let Some((first, rest)) = sets.split_first() else {
-        return Err(CliError::Usage("no input set given".to_string()));
-    };
     let vertices = sets.iter().map(S::size).sum();
     let message = || {
         format!(
@@ -67,7 +69,7 @@ pub fn operate<S: Set>(
             format!("{op:?}").to_lowercase()
         )
     };
-    let result = progress::while_working(message, vertices, || op.apply(first, rest))?;
+    let result = progress::while_working(message, vertices, || op.apply(sets))?;
     let style = if write.exact {
         NumberStyle::Exact
     } else {
@@ -97,12 +99,18 @@ mod tests {
     #[test]
     fn each_op_is_the_kernel_operation() {
         let (a, b) = (square(0, 0, 2), square(1, 1, 2));
-        let two = [b.clone()];
-        assert_eq!(Op::Meet.apply(&a, &two).unwrap(), &a & &b);
-        assert_eq!(Op::Join.apply(&a, &two).unwrap(), &a | &b);
-        assert_eq!(Op::Difference.apply(&a, &two).unwrap(), &a - &b);
-        assert_eq!(Op::Xor.apply(&a, &two).unwrap(), &a ^ &b);
-        assert_eq!(Op::Complement.apply(&a, &[]).unwrap(), !&a);
-        assert_eq!(Op::Convert.apply(&a, &[]).unwrap(), a);
+        let two = || vec![a.clone(), b.clone()];
+        assert_eq!(Op::Meet.apply(two()).unwrap(), &a & &b);
+        assert_eq!(Op::Join.apply(two()).unwrap(), &a | &b);
+        assert_eq!(Op::Difference.apply(two()).unwrap(), &a - &b);
+        assert_eq!(Op::Xor.apply(two()).unwrap(), &a ^ &b);
+        assert_eq!(Op::Complement.apply(vec![a.clone()]).unwrap(), !&a);
+        assert_eq!(Op::Convert.apply(vec![a.clone()]).unwrap(), a);
+        let three = vec![a.clone(), b.clone(), square(0, 1, 2)];
+        assert_eq!(
+            Op::Meet.apply(three).unwrap(),
+            &(&a & &b) & &square(0, 1, 2)
+        );
+        assert!(Op::Meet.apply(Vec::<YinSet2<Rational>>::new()).is_err());
     }
 }

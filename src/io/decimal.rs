@@ -2,8 +2,9 @@
 //! ([`NumberStyle`]; the nearest `f64`s of the default style are `super::nearest`'s).
 
 use crate::num::Num;
-use num_bigint::BigInt;
+use num_bigint::{BigInt, BigUint};
 use num_traits::{One, Signed, Zero};
+use std::fmt::Write;
 
 /// How the OGC writers (WKT, GeoJSON) spell coordinates: the same rule for both.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -21,110 +22,149 @@ pub enum NumberStyle {
 /// The text of coordinate `n` exactly ([`NumberStyle::Exact`]): a decimal where its expansion
 /// terminates, else the fraction `p/q` if `fractions`, or why it cannot be written.
 pub(crate) fn exact_coordinate_text<N: Num>(n: &N, fractions: bool) -> Result<String, String> {
-    decimal_text(n, || {
-        if fractions {
-            Ok(n.to_string())
-        } else {
-            Err(format!(
-                "the coordinate {n} has no finite decimal expansion, which JSON numbers \
-                 need: write decimals (the default) or another format"
-            ))
-        }
-    })
+    let mut text = String::new();
+    if push_decimal(&mut text, n) {
+        Ok(text)
+    } else if fractions {
+        Ok(n.to_string())
+    } else {
+        Err(format!(
+            "the coordinate {n} has no finite decimal expansion, which JSON numbers \
+             need: write decimals (the default) or another format"
+        ))
+    }
 }
 
 /// `n` exactly: a decimal when its expansion terminates, its `Display` (`p/q`) otherwise.
 pub(crate) fn exact_text<N: Num>(n: &N) -> String {
-    let Ok(text) = decimal_text(n, || Ok::<_, std::convert::Infallible>(n.to_string()));
+    let mut text = String::new();
+    push_exact(&mut text, n);
     text
 }
 
-/// `n` as an exact decimal, or `inexact()` when its expansion does not terminate. A float
-/// backend's `Display` is already its shortest decimal; a fraction of machine integers is
-/// scaled in `i128` where that holds it.
-fn decimal_text<N: Num, E>(
-    n: &N,
-    inexact: impl FnOnce() -> Result<String, E>,
-) -> Result<String, E> {
+/// Append [`exact_text`] of `n` to `out`.
+pub(crate) fn push_exact<N: Num>(out: &mut String, n: &N) {
+    if !push_decimal(out, n) {
+        let _ = write!(out, "{n}");
+    }
+}
+
+/// Append `n` as an exact decimal to `out` and return true, or return false (`out` as it was)
+/// when its expansion does not terminate. A float backend's `Display` is already its shortest
+/// decimal; a fraction of machine integers is scaled in `i128` where that holds it.
+fn push_decimal<N: Num>(out: &mut String, n: &N) -> bool {
     if !N::EXACT {
-        return Ok(n.to_string());
+        let _ = write!(out, "{n}");
+        return true;
     }
     if let Some((p, q)) = n.small_fraction() {
         match small_decimal(p, q) {
-            Some(Some(text)) => return Ok(text),
-            Some(None) => return inexact(),
+            Some(Some((m, k))) => {
+                // itoa spells a `u64` faster than a `u128`.
+                let mut digits = itoa::Buffer::new();
+                let digits = match u64::try_from(m.unsigned_abs()) {
+                    Ok(small) => digits.format(small),
+                    Err(_) => digits.format(m.unsigned_abs()),
+                };
+                push_scaled(out, m < 0, digits, k);
+                return true;
+            }
+            Some(None) => return false,
             None => {}
         }
     }
     let (p, q) = n.fraction();
-    match terminating_scale(&q) {
-        Some(k) => Ok(scaled(p * ten_pow(k) / q, k)),
-        None => inexact(),
-    }
+    let Some(k) = terminating_scale(&q) else {
+        return false;
+    };
+    let m = p * ten_pow(k) / q;
+    push_scaled(out, m.is_negative(), &m.magnitude().to_string(), k);
+    true
 }
 
-/// The decimal text of the reduced fraction `p/q` (`q > 0`): `Some(None)` if its expansion
-/// does not terminate, `None` if `i128` cannot hold the scaled numerator.
-fn small_decimal(p: i64, q: i64) -> Option<Option<String>> {
-    let twos = q.trailing_zeros();
-    let mut rest = q >> twos;
-    let mut fives = 0;
-    while rest % 5 == 0 {
-        rest /= 5;
-        fives += 1;
+/// The powers of five that an `i128` holds, `5^0` to `5^54`.
+const POWERS_OF_FIVE: [i128; 55] = {
+    let mut powers = [1; 55];
+    let mut j = 1;
+    while j < powers.len() {
+        powers[j] = powers[j - 1] * 5;
+        j += 1;
     }
-    if rest != 1 {
+    powers
+};
+
+/// The exponent `f` of the power of five `5^f` below `2^64` of each binary logarithm (rounded
+/// down; they differ, as `5 > 4`), and 0 where none has it.
+const FIVES_BY_LOG2: [u32; 64] = {
+    let mut fives = [0; 64];
+    let mut f = 0;
+    while POWERS_OF_FIVE[f].ilog2() < 64 {
+        fives[POWERS_OF_FIVE[f].ilog2() as usize] = f as u32;
+        f += 1;
+    }
+    fives
+};
+
+/// The reduced fraction `p/q` (`q > 0`) as `(m, k)` with `p/q = m / 10^k`: `Some(None)` if its
+/// expansion does not terminate, `None` if `i128` cannot hold `m`.
+fn small_decimal(p: i64, q: i64) -> Option<Option<(i128, usize)>> {
+    let twos = q.trailing_zeros();
+    let rest = q >> twos;
+    let fives = FIVES_BY_LOG2[rest.ilog2() as usize];
+    if POWERS_OF_FIVE[fives as usize] != i128::from(rest) {
         return Some(None);
     }
-    // p/q = p·2^(k−twos)·5^(k−fives) / 10^k.
+    // p/q = p·2^(k−twos)·5^(k−fives) / 10^k, one of the two exponents 0.
     let k = twos.max(fives);
-    let factor = 2i128
-        .checked_pow(k - twos)?
-        .checked_mul(5i128.checked_pow(k - fives)?)?;
-    Some(Some(scaled(
-        i128::from(p).checked_mul(factor)?,
-        u64::from(k),
-    )))
+    let factor = POWERS_OF_FIVE.get((k - fives) as usize)? << (k - twos);
+    Some(Some((i128::from(p).checked_mul(factor)?, k as usize)))
 }
 
-/// The least `k` with `q | 10^k`, if any (i.e. if `q` has no prime factor but 2 and 5).
-fn terminating_scale(q: &BigInt) -> Option<u64> {
+/// The least `k` with `q | 10^k`, if any (i.e. if `q > 0` has no prime factor but 2 and 5).
+fn terminating_scale(q: &BigInt) -> Option<usize> {
     let twos = q.trailing_zeros().unwrap_or(0);
-    let mut rest = q >> twos;
-    let five = BigInt::from(5);
+    let mut rest = q.magnitude() >> twos;
+    // As 5^f ≥ 4^f, an odd part that is a power of five divides 5^(bits/2): one division
+    // decides, before the fives are divided out one at a time.
+    let five = BigUint::from(5u32);
+    let bound = num_traits::pow(five.clone(), rest.bits() as usize / 2);
+    if !(bound % &rest).is_zero() {
+        return None;
+    }
     let mut fives = 0;
-    while !rest.is_zero() && (&rest % &five).is_zero() {
+    while !rest.is_one() {
         rest /= &five;
         fives += 1;
     }
-    rest.is_one().then_some(twos.max(fives))
+    Some(twos.max(fives) as usize)
 }
 
-/// The decimal text of `m / 10^k` (an integer type's `m`), without trailing zeros after the
-/// point.
-fn scaled<I: Signed + std::fmt::Display>(m: I, k: u64) -> String {
-    let sign = if m.is_negative() { "-" } else { "" };
-    let digits = m.abs().to_string();
-    let k = k as usize;
-    let padded = format!("{digits:0>width$}", width = k + 1);
-    let (int, frac) = padded.split_at(padded.len() - k);
-    let frac = frac.trim_end_matches('0');
-    if frac.is_empty() {
-        format!("{sign}{int}")
-    } else {
-        format!("{sign}{int}.{frac}")
+/// Append the decimal text of `±m / 10^k` to `out`, `digits` those of `m ≥ 0` and `negative`
+/// its sign: no trailing zeros after the point, and no leading zeros but a lone `0` before it.
+fn push_scaled(out: &mut String, negative: bool, digits: &str, k: usize) {
+    if negative {
+        out.push('-');
+    }
+    let (int, fraction) = digits.split_at(digits.len().saturating_sub(k));
+    out.push_str(if int.is_empty() { "0" } else { int });
+    let significant = fraction.trim_end_matches('0');
+    if !significant.is_empty() {
+        out.push('.');
+        out.extend(std::iter::repeat_n('0', k - fraction.len()));
+        out.push_str(significant);
     }
 }
 
 /// `10^k`.
-fn ten_pow(k: u64) -> BigInt {
-    num_traits::pow(BigInt::from(10), k as usize)
+fn ten_pow(k: usize) -> BigInt {
+    num_traits::pow(BigInt::from(10), k)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::num::{Float, Rational};
+    use proptest::test_runner::TestCaseError;
 
     fn q(s: &str) -> Rational {
         Rational::parse(s).unwrap()
@@ -157,11 +197,41 @@ mod tests {
         assert_eq!(texts(&q("1e400"))[1].as_ref().unwrap().len(), 401);
     }
 
+    /// True if the expansion of `x` terminates: its denominator has no prime factor but 2 and 5.
+    fn terminates(x: &Rational) -> bool {
+        let (_, mut d) = x.fraction();
+        for f in [2, 5].map(BigInt::from) {
+            while (&d % &f).is_zero() {
+                d /= &f;
+            }
+        }
+        d.is_one()
+    }
+
+    /// `text` reads back as `x`, and it is a plain decimal where the expansion of `x`
+    /// terminates (no exponent, no leading zeros but a lone `0` before the point, no trailing
+    /// zeros after it, no `-0`), `p/q` otherwise.
+    fn check_exact_text(text: &str, x: &Rational) -> Result<(), TestCaseError> {
+        proptest::prop_assert_eq!(&Rational::parse(text).unwrap(), x);
+        if !terminates(x) {
+            proptest::prop_assert!(text.contains('/'), "{}", text);
+            return Ok(());
+        }
+        let magnitude = text.strip_prefix('-').unwrap_or(text);
+        let negative = x.sign() == std::cmp::Ordering::Less;
+        proptest::prop_assert_eq!(magnitude.len() < text.len(), negative, "{}", text);
+        let (int, fraction) = magnitude.split_once('.').unwrap_or((magnitude, "1"));
+        let digits = |s: &str| !s.is_empty() && s.bytes().all(|c| c.is_ascii_digit());
+        proptest::prop_assert!(digits(int) && digits(fraction), "{}", text);
+        proptest::prop_assert!(int == "0" || !int.starts_with('0'), "{}", text);
+        proptest::prop_assert!(!fraction.ends_with('0'), "{}", text);
+        Ok(())
+    }
+
     proptest::proptest! {
         /// Fractions of machine integers (denominators 2^a·5^b·r, up to 2⁶²) read back from
-        /// their exact text as themselves: a plain decimal, without an exponent or trailing
-        /// zeros, where the expansion terminates (r = 1), `p/q` otherwise; on the `i128` path
-        /// and past it (the denominator 2⁶¹ needs the factor 5⁶¹, which overflows it).
+        /// their exact text as themselves, in its shape; on the `i128` path and past it (the
+        /// denominator 2⁶¹ needs the factor 5⁶¹, which overflows it).
         #[test]
         fn small_fractions_read_back_from_their_text(
             p in -(1i64 << 61)..(1i64 << 61), a in 0u32..62, b in 0u32..27, r in 0usize..3,
@@ -169,15 +239,24 @@ mod tests {
             let q = (BigInt::one() << a) * num_traits::pow(BigInt::from(5), b as usize)
                 * BigInt::from([1, 3, 7][r]);
             let x = Rational::new(BigInt::from(p), q.min(BigInt::from(1i64 << 62)));
-            let text = exact_text(&x);
-            proptest::prop_assert_eq!(Rational::parse(&text).unwrap(), x.clone());
-            let (_, d) = x.fraction();
-            if terminating_scale(&d).is_some() {
-                proptest::prop_assert!(!text.contains(['/', 'e']), "{}", text);
-                proptest::prop_assert!(!text.contains('.') || !text.ends_with('0'), "{}", text);
-            } else {
-                proptest::prop_assert!(text.contains('/'), "{}", text);
-            }
+            check_exact_text(&exact_text(&x), &x)?;
+        }
+
+        /// Fractions of big integers (numerators to 2²⁵⁶, denominators 2^a·5^b·r past 2⁴⁰⁰)
+        /// read back as themselves from their exact text appended after other text.
+        #[test]
+        fn big_fractions_read_back_from_their_appended_text(
+            p in proptest::num::i64::ANY, words in 0usize..4, a in 0u32..200, b in 0usize..90,
+            r in 0usize..3, before in "[a-z ]{0,3}",
+        ) {
+            let p = BigInt::from(p) * num_traits::pow(BigInt::from(u64::MAX), words);
+            let q = (BigInt::one() << a) * num_traits::pow(BigInt::from(5), b)
+                * BigInt::from([1, 3, 7][r]);
+            let x = Rational::new(p, q);
+            let mut text = before.clone();
+            push_exact(&mut text, &x);
+            proptest::prop_assert!(text.starts_with(&before), "{}", text);
+            check_exact_text(&text[before.len()..], &x)?;
         }
     }
 

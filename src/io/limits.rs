@@ -6,18 +6,21 @@ use super::ParseError;
 
 /// An error at the first run of more than `max` ASCII digits in `text` (a number's integer
 /// part, fraction or exponent; digits in names or JSON strings count too), naming its length.
+///
+/// Such a run covers a multiple of `max + 1`, so only the runs at those places are measured:
+/// in their order, the first too long is the first too long of all.
 pub fn check_digit_runs(text: &str, max: usize) -> Result<(), ParseError> {
     let bytes = text.as_bytes();
-    let mut start = 0;
-    while start < bytes.len() {
-        if !bytes[start].is_ascii_digit() {
-            start += 1;
+    let digit = |b: &u8| b.is_ascii_digit();
+    for probe in (0..bytes.len()).step_by(max.saturating_add(1)) {
+        if !digit(&bytes[probe]) {
             continue;
         }
-        let len = bytes[start..]
+        let start = bytes[..probe]
             .iter()
-            .take_while(|b| b.is_ascii_digit())
-            .count();
+            .rposition(|b| !digit(b))
+            .map_or(0, |i| i + 1);
+        let len = bytes[start..].iter().take_while(|b| digit(b)).count();
         if len > max {
             return Err(ParseError::at(
                 text,
@@ -28,7 +31,6 @@ pub fn check_digit_runs(text: &str, max: usize) -> Result<(), ParseError> {
                 ),
             ));
         }
-        start += len;
     }
     Ok(())
 }
@@ -51,6 +53,34 @@ mod tests {
         assert!(check_digit_runs("", 0).is_ok());
         assert!(check_digit_runs("é x", 0).is_ok());
         assert_eq!(check_digit_runs("é 12", 1).unwrap_err().column, 3);
+    }
+
+    proptest::proptest! {
+        /// The first run longer than the limit, as a scan of every byte finds it, wherever the
+        /// probes fall.
+        #[test]
+        fn finds_the_first_long_run_as_a_full_scan_does(
+            text in "[0-9a. \né]{0,80}", max in 0usize..12,
+        ) {
+            let bytes = text.as_bytes();
+            let mut first = None;
+            let mut start = 0;
+            while first.is_none() && start < bytes.len() {
+                let len = bytes[start..].iter().take_while(|b| b.is_ascii_digit()).count();
+                if len > max {
+                    first = Some((start, len));
+                }
+                start += len.max(1);
+            }
+            let found = check_digit_runs(&text, max).err();
+            proptest::prop_assert_eq!(found.is_some(), first.is_some());
+            if let (Some(e), Some((start, len))) = (found, first) {
+                let want = ParseError::at(&text, start, String::new());
+                proptest::prop_assert_eq!((e.line, e.column), (want.line, want.column));
+                let words = format!("{len} digits in a row");
+                proptest::prop_assert!(e.message.contains(&words), "{}", e.message);
+            }
+        }
     }
 
     #[test]

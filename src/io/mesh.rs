@@ -2,12 +2,11 @@
 //! the polygon mesh they read, the error of a malformed file, exact coordinates, and the
 //! vertex bookkeeping of their writers.
 
-use super::decimal::exact_text;
+use super::decimal::push_exact;
 use super::ParseError;
 use crate::kernel::Point3;
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt};
-use std::fmt::Write;
 
 /// A polygon mesh as a file gives it: vertices and faces (0-based vertex indices, any number
 /// ≥ 3 of them), and where each face is in the file.
@@ -160,14 +159,43 @@ pub(crate) fn indexed_text<N: Num>(
 ) -> String {
     let (kept, renumbered) = used(vertices, triangles);
     let mut out = header(kept.len(), renumbered.len());
+    out.reserve(text_size(kept.len(), renumbered.len()));
     for p in kept {
-        let [x, y, z] = p.coords().map(exact_text);
-        let _ = writeln!(out, "{x} {y} {z}");
+        push_coords(&mut out, p);
+        out.push('\n');
     }
-    for [a, b, c] in renumbered {
-        let _ = writeln!(out, "3 {a} {b} {c}");
+    for t in renumbered {
+        push_triangle(&mut out, "3", t);
     }
     out
+}
+
+/// A guess at the length of the text of `vertices` points and `triangles` triangles, to
+/// reserve at once: 20 bytes a coordinate and 8 a vertex number.
+pub(crate) fn text_size(vertices: usize, triangles: usize) -> usize {
+    vertices * 60 + triangles * 24
+}
+
+/// Append the line `head a b c` of the vertex numbers of a triangle to `out`.
+pub(crate) fn push_triangle(out: &mut String, head: &str, triangle: [usize; 3]) {
+    let mut digits = itoa::Buffer::new();
+    out.push_str(head);
+    for i in triangle {
+        out.push(' ');
+        out.push_str(digits.format(i));
+    }
+    out.push('\n');
+}
+
+/// Append the coordinates of `p` to `out`, exactly (see [`push_exact`]) and separated by
+/// blanks: `x y z`.
+pub(crate) fn push_coords<N: Num>(out: &mut String, p: &Point3<N>) {
+    for (k, n) in p.coords().into_iter().enumerate() {
+        if k > 0 {
+            out.push(' ');
+        }
+        push_exact(out, n);
+    }
 }
 
 /// `(line, column, message)` of a reader's text error (a test helper).

@@ -47,8 +47,7 @@
 //! when the expansion terminates, `p/q` otherwise. The `p/q` form is this crate's extension of
 //! OBJ: [`read_obj`] reads it back exactly, other OBJ tools do not.
 
-use super::decimal::exact_text;
-use super::mesh::{coordinate, used, Mesh};
+use super::mesh::{coordinate, push_coords, push_triangle, text_size, used, Mesh};
 use super::{without_bom, ParseError};
 use crate::kernel::Point3;
 use crate::num::Num;
@@ -326,21 +325,18 @@ pub fn surface_groups<N: Num>(set: &YinSet3<N>) -> Vec<(String, Vec<[usize; 3]>)
 /// If a triangle index is out of range of `vertices`.
 pub fn write_obj<N: Num>(vertices: &[Point3<N>], groups: &[(String, Vec<[usize; 3]>)]) -> String {
     let (kept, triangles) = used(vertices, groups.iter().flat_map(|(_, ts)| ts));
-    let mut out = String::from("# yinset\n");
+    let mut out = String::with_capacity(text_size(kept.len(), triangles.len()));
+    out.push_str("# yinset\n");
     for p in kept {
-        let _ = writeln!(
-            out,
-            "v {} {} {}",
-            exact_text(&p.x),
-            exact_text(&p.y),
-            exact_text(&p.z)
-        );
+        out.push_str("v ");
+        push_coords(&mut out, p);
+        out.push('\n');
     }
     let mut triangles = triangles.into_iter();
     for (name, group) in groups.iter().filter(|(_, g)| !g.is_empty()) {
         let _ = writeln!(out, "o {}", name.replace(['\r', '\n'], " "));
-        for [a, b, c] in triangles.by_ref().take(group.len()) {
-            let _ = writeln!(out, "f {} {} {}", a + 1, b + 1, c + 1);
+        for t in triangles.by_ref().take(group.len()) {
+            push_triangle(&mut out, "f", t.map(|i| i + 1));
         }
     }
     out

@@ -41,7 +41,7 @@
 //! set with a coordinate that no `f32` holds exactly.
 
 use super::decimal::exact_text;
-use super::mesh::{binary_coordinate, coordinate, used, Mesh, MeshError, Welder};
+use super::mesh::{binary_coordinate, coordinate, push_coords, used, Mesh, MeshError, Welder};
 use super::{without_bom_bytes, ParseError};
 use crate::kernel::Point3;
 use crate::num::Num;
@@ -309,8 +309,9 @@ pub fn write_stl_ascii<N: Num>(vertices: &[Point3<N>], triangles: &[[usize; 3]])
         let [nx, ny, nz] = normal(corners);
         let _ = writeln!(out, "  facet normal {nx:e} {ny:e} {nz:e}\n    outer loop");
         for p in corners {
-            let [x, y, z] = p.coords().map(exact_text);
-            let _ = writeln!(out, "      vertex {x} {y} {z}");
+            out.push_str("      vertex ");
+            push_coords(&mut out, p);
+            out.push('\n');
         }
         out.push_str("    endloop\n  endfacet\n");
     }
