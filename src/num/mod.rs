@@ -302,6 +302,12 @@ pub(crate) fn filtered_orient_sum<const K: usize>(
     if !det.is_finite() || !bound.is_finite() || reach < 1e-140 {
         return None;
     }
+    outside(det, bound)
+}
+
+/// The sign of `det` if it lies outside [−bound, bound] (then the exact value it approximates
+/// within `bound` has that sign too); `None` inside.
+fn outside(det: f64, bound: f64) -> Option<Ordering> {
     if det > bound {
         Some(Ordering::Greater)
     } else if det < -bound {
@@ -383,13 +389,7 @@ impl NearPlane {
         if !det.is_finite() || !bound.is_finite() || reach < 1e-90 {
             return None;
         }
-        if det > bound {
-            Some(Ordering::Greater)
-        } else if det < -bound {
-            Some(Ordering::Less)
-        } else {
-            None
-        }
+        outside(det, bound)
     }
 }
 
