@@ -133,7 +133,7 @@ pub(crate) fn arrange<N: Num>(
     };
     let mut meeting: Vec<(usize, usize)> = Vec::new();
     let (x, y) = (&trees[0], trees.last().expect("a hierarchy"));
-    each_meeting_pair(x, y, |t, s| match pairs {
+    x.each_meeting_pair(y, |t, s| match pairs {
         Pairs::Across => meeting.push((t.min(s), t.max(s))),
         // Each pair comes twice, once in each order, and each box with itself.
         Pairs::All if t < s => meeting.push((t, s)),
@@ -143,7 +143,7 @@ pub(crate) fn arrange<N: Num>(
     // One R-tree of boxes per group, for the caller's point location.
     let boxes: [TriBoxes; 2] = members
         .each_ref()
-        .map(|m| TriBoxes::of_boxes(m, &f64_boxes));
+        .map(|m| TriBoxes::of_boxes(m.iter().map(|&i| (i, f64_boxes[i]))));
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut coplanar: Vec<Vec<usize>> = vec![Vec::new(); n];
     let mut contact: BTreeSet<usize> = BTreeSet::new();
@@ -195,7 +195,7 @@ pub(crate) fn arrange<N: Num>(
     let at_points = Bvh::new(&(0..contacts.len()).collect::<Vec<_>>(), &point_boxes);
     let mut near: Vec<(usize, usize)> = Vec::new();
     for tree in &trees {
-        each_meeting_pair(&at_points, tree, |k, t| near.push((t, contacts[k])));
+        at_points.each_meeting_pair(tree, |k, t| near.push((t, contacts[k])));
     }
     for (t, v) in near {
         if !soup.tris[t].contains(&v)
@@ -236,16 +236,6 @@ pub(crate) fn arrange<N: Num>(
         coplanar,
         boxes,
     })
-}
-
-/// Calls `f(t, s)` on every pair of a box `t` of `x` and a box `s` of `y` that meet.
-fn each_meeting_pair(x: &Bvh, y: &Bvh, mut f: impl FnMut(usize, usize)) {
-    for piece in x.meeting_nodes(y, 1) {
-        x.meeting_pairs(y, piece, &mut |t, s| {
-            f(t, s);
-            true
-        });
-    }
 }
 
 /// The points `extra` of the closed triangle `tri` (indices into `points`, none a corner),

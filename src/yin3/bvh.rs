@@ -99,6 +99,17 @@ impl Bvh {
         pairs
     }
 
+    /// Calls `f(t, s)` on every pair of a box `t` of `self` and a box `s` of `other` that
+    /// meet.
+    pub(crate) fn each_meeting_pair(&self, other: &Bvh, mut f: impl FnMut(usize, usize)) {
+        for piece in self.meeting_nodes(other, 1) {
+            self.meeting_pairs(other, piece, &mut |t, s| {
+                f(t, s);
+                true
+            });
+        }
+    }
+
     /// Calls `f(t, s)` on each pair of boxes, `t` under the node `x` of `self` and `s` under
     /// the node `y` of `other`, that meet, until `f` returns false; false if it did. The boxes
     /// of `x` and `y` must meet.

@@ -18,18 +18,14 @@ impl TriBoxes {
     pub(crate) fn new<'a, N: Num>(
         tris: impl IntoIterator<Item = (usize, [&'a Point3<N>; 3])>,
     ) -> TriBoxes {
-        TriBoxes(RTree::bulk_load(
-            tris.into_iter()
-                .map(|(i, t)| GeomWithData::new(Rectangle::from_aabb(f64_box(t)), i))
-                .collect(),
-        ))
+        TriBoxes::of_boxes(tris.into_iter().map(|(i, t)| (i, f64_box(t))))
     }
 
-    /// The boxes `boxes[i]` of the triangles `i` in `items`, each named by its index.
-    pub(crate) fn of_boxes(items: &[usize], boxes: &[AABB<[f64; 3]>]) -> TriBoxes {
+    /// The boxes given, each named by the index given with it.
+    pub(crate) fn of_boxes(boxes: impl IntoIterator<Item = (usize, AABB<[f64; 3]>)>) -> TriBoxes {
         TriBoxes(RTree::bulk_load(
-            (items.iter())
-                .map(|&i| GeomWithData::new(Rectangle::from_aabb(boxes[i]), i))
+            (boxes.into_iter())
+                .map(|(i, b)| GeomWithData::new(Rectangle::from_aabb(b), i))
                 .collect(),
         ))
     }

@@ -11,6 +11,7 @@ use super::grid::exact_transversal_meet;
 use super::locate::winding;
 use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
+use super::tri::corners_after;
 use crate::kernel::{orient, Point3};
 use crate::num::Num;
 use crate::union_find::UnionFind;
@@ -155,8 +156,9 @@ fn sorted(mut t: [usize; 3]) -> [usize; 3] {
 /// triangle that overlaps its parent in their plane (the overlap's sides are cuts, so no piece
 /// straddles them: [`piece_in_triangle2`]), on the same or the opposite side as that triangle's
 /// orientation in the parent's chart tells; where the other operand has a piece with the same
-/// corners, that piece's parent is such a triangle, and the two pieces' turns tell the side. Every other patch is decided by one ray, from a vertex
-/// off the other's boundary where it has one (an input vertex), else from a piece's centroid.
+/// corners, that piece's parent is such a triangle, and the two pieces' turns tell the side.
+/// Every other patch is decided by one ray, from a vertex off the other's boundary where it has
+/// one (an input vertex), else from a piece's centroid.
 fn classify<N: Num>(
     soup: &Soup<N>,
     arrangement: &Arrangement,
@@ -205,17 +207,17 @@ fn classify<N: Num>(
         .filter(|&i| may_overlap(&pieces[i]))
         .map(|i| ((op(i), sorted(pieces[i].0)), i))
         .collect();
-    // The side of piece `i`, `t` of `parent`, if it lies in a triangle overlapping its parent:
-    // a piece of the other operand with the same corners lies in its parent, which overlaps
-    // this one (on the same side iff the two pieces turn the same way); else the triangles
-    // overlapping the parent are searched.
-    let on_overlap = |i: usize, t: &[usize; 3], parent: usize| -> Option<Side> {
+    // The side of piece `i` if it lies in a triangle overlapping its parent: a piece of the
+    // other operand with the same corners lies in its parent, which overlaps this one (on the
+    // same side iff the two pieces turn the same way); else the triangles overlapping the
+    // parent are searched.
+    let on_overlap = |i: usize| -> Option<Side> {
+        let (t, parent) = pieces[i];
         if !may_overlap(&pieces[i]) {
             return None;
         }
-        if let Some(&j) = by_corners.get(&(1 - op(i), sorted(*t))) {
-            let u = pieces[j].0;
-            let same_turn = (0..3).any(|k| [u[k], u[(k + 1) % 3], u[(k + 2) % 3]] == *t);
+        if let Some(&j) = by_corners.get(&(1 - op(i), sorted(t))) {
+            let same_turn = corners_after(pieces[j].0, t[0]) == [t[1], t[2]];
             return Some(if same_turn {
                 Side::Same
             } else {
@@ -248,8 +250,8 @@ fn classify<N: Num>(
     let mut memo: HashMap<usize, Side> = HashMap::new();
     (0..pieces.len())
         .map(|i| {
-            let (t, parent) = &pieces[i];
-            if let Some(side) = on_overlap(i, t, *parent) {
+            let t = &pieces[i].0;
+            if let Some(side) = on_overlap(i) {
                 return side;
             }
             let o = op(i);
