@@ -24,7 +24,9 @@ use std::collections::BTreeSet;
 pub(crate) struct Soup<N: Num> {
     /// The points; equal points have one index.
     pub points: Vec<Point3<N>>,
-    index: HashMap<Point3<N>, usize>,
+    /// Each point's index; `None` until the first [`Soup::intern`] of a soup made from
+    /// distinct points ([`Soup::of_distinct`]).
+    index: Option<HashMap<Point3<N>, usize>>,
     /// The triangles, as indices into `points`.
     pub tris: Vec<[usize; 3]>,
     /// The operand (0 or 1) of each triangle.
@@ -36,7 +38,17 @@ impl<N: Num> Soup<N> {
     pub(crate) fn new() -> Soup<N> {
         Soup {
             points: Vec::new(),
-            index: HashMap::default(),
+            index: Some(HashMap::default()),
+            tris: Vec::new(),
+            operand: Vec::new(),
+        }
+    }
+
+    /// A soup of the pairwise distinct `points` and no triangles yet.
+    pub(crate) fn of_distinct(points: Vec<Point3<N>>) -> Soup<N> {
+        Soup {
+            points,
+            index: None,
             tris: Vec::new(),
             operand: Vec::new(),
         }
@@ -44,12 +56,14 @@ impl<N: Num> Soup<N> {
 
     /// The index of `p`, added if new.
     pub(crate) fn intern(&mut self, p: &Point3<N>) -> usize {
-        if let Some(&i) = self.index.get(p) {
+        let points = &mut self.points;
+        let index = (self.index).get_or_insert_with(|| points.iter().cloned().zip(0..).collect());
+        if let Some(&i) = index.get(p) {
             return i;
         }
-        self.points.push(p.clone());
-        self.index.insert(p.clone(), self.points.len() - 1);
-        self.points.len() - 1
+        points.push(p.clone());
+        index.insert(p.clone(), points.len() - 1);
+        points.len() - 1
     }
 
     /// Add the triangle `abc` of operand `operand`.

@@ -40,10 +40,15 @@ pub(crate) fn collinear<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>) -> 
 
 /// The exact orientation of the triangle `abc` projected by dropping coordinate `k`: the sign
 /// of its normal's coordinate `k`.
-fn projected_orient<N: Num>(a: &Point3<N>, b: &Point3<N>, c: &Point3<N>, k: usize) -> Ordering {
+fn projected_orient<'a, N: Num>(
+    a: &'a Point3<N>,
+    b: &'a Point3<N>,
+    c: &'a Point3<N>,
+    k: usize,
+) -> Ordering {
     let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-    let pr = |p: &Point3<N>| Point::new(p.coord(i).clone(), p.coord(j).clone());
-    orient(&pr(a), &pr(b), &pr(c), &N::exact_ctx())
+    let pr = |p: &'a Point3<N>| [p.coord(i), p.coord(j)];
+    N::orient2d(pr(a), pr(b), pr(c), &N::exact_ctx())
 }
 
 /// det[a, b, c] = a · (b × c): six times the signed volume of the tetrahedron (0, a, b, c).

@@ -17,9 +17,11 @@ use super::triangulate::ear_clip;
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, NearPlane, Num, PlaneF64};
 use crate::union_find::UnionFind;
+use foldhash::{HashSet, HashSetExt};
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, RTree, AABB};
+use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering;
 
 impl<N: Num> YinSet3<N> {
@@ -306,16 +308,25 @@ fn build<N: Num>(
     rounded: bool,
 ) -> Result<Brep<N>, Yin3Error> {
     let exact = N::exact_ctx();
-    let mut soup = Soup::new();
     let mut face_of = Vec::new();
-    // Each vertex interned once, where a triangle first uses it (not once per corner).
-    let mut interned: Vec<Option<usize>> = vec![None; vertices.len()];
+    // The triangles over the used vertices, numbered in order of first use.
+    let mut number: Vec<Option<usize>> = vec![None; vertices.len()];
+    let mut used = Vec::new();
+    let mut tris = Vec::with_capacity(faces.len());
     for (f, face) in faces.iter().enumerate() {
         for tri in face_triangles(vertices, face, f, &exact)? {
-            let t = tri.map(|v| *interned[v].get_or_insert_with(|| soup.intern(&vertices[v])));
-            soup.push_interned(t, 0);
+            tris.push(tri.map(|v| {
+                *number[v].get_or_insert_with(|| {
+                    used.push(v);
+                    used.len() - 1
+                })
+            }));
             face_of.push(f);
         }
+    }
+    let mut soup = interned(vertices, &mut used);
+    for t in tris {
+        soup.push_interned(t.map(|k| used[k]), 0);
     }
     // A conforming complex (every two triangles meet only in shared corners and edges: most
     // meshes, and every stored result) is its own arrangement; only others are arranged. The
@@ -365,6 +376,26 @@ fn build<N: Num>(
     Ok(brep)
 }
 
+/// A soup of the vertices `used` (indices into `vertices`), equal ones merged, numbered in
+/// order; each used vertex's index in it is written over its entry of `used`. Where the
+/// vertices' nearest `f64`s are distinct (most meshes) so are the vertices, and no exact value
+/// is hashed.
+fn interned<N: Num>(vertices: &[Point3<N>], used: &mut [usize]) -> Soup<N> {
+    // Adding 0.0 makes −0.0 the key of +0.0: both are the nearest f64 of an exact zero.
+    let key = |v: usize| vertices[v].to_f64().map(|c| (c + 0.0).to_bits());
+    let mut keys: HashSet<[u64; 3]> = HashSet::with_capacity(used.len());
+    if used.iter().all(|&v| keys.insert(key(v))) {
+        let points = used.iter().map(|&v| vertices[v].clone()).collect();
+        used.iter_mut().enumerate().for_each(|(k, v)| *v = k);
+        return Soup::of_distinct(points);
+    }
+    let mut soup = Soup::new();
+    for v in used.iter_mut() {
+        *v = soup.intern(&vertices[*v]);
+    }
+    soup
+}
+
 /// The context `ctx` resolved for `vertices` ([`Num::resolve_ctx`]: float mode's default ε
 /// from the bounding box, or the error that the requested one is too fine for them).
 pub(crate) fn resolve_for<N: Num>(
@@ -384,7 +415,7 @@ fn face_triangles<N: Num>(
     face: &[usize],
     f: usize,
     ctx: &N::Ctx,
-) -> Result<Vec<[usize; 3]>, Yin3Error> {
+) -> Result<SmallVec<[[usize; 3]; 1]>, Yin3Error> {
     let degenerate = |reason: String| Yin3Error::DegenerateFace { face: f, reason };
     if face.len() < 3 {
         return Err(degenerate(format!(
@@ -418,7 +449,7 @@ fn face_triangles<N: Num>(
         });
     }
     if face.len() == 3 {
-        return Ok(vec![[face[0], face[1], face[2]]]);
+        return Ok(smallvec![[face[0], face[1], face[2]]]);
     }
     // The polygon's orientation in the chart of its plane decides how its ears are read.
     let chart = Chart::of_normal(&polygon_normal(vertices, face));
@@ -614,5 +645,43 @@ mod tests {
         assert_eq!(after_moving(&[(corner, [4, 4, 10])]), (false, false));
         // Onto the line of an edge of its own: a degenerate triangle.
         assert_eq!(after_moving(&[(corner, [20, -10, 10])]), (false, false));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(
+            yinset_testkit::cases(256)
+        ))]
+        /// The soup of the used vertices has one point per distinct value, in order of first
+        /// use, and maps each used vertex to its value, against a scan for equal values; the
+        /// values are small fractions and those plus 10⁻³⁰, which share their nearest `f64`s
+        /// (so both the path without hashing and the one with it are taken).
+        #[test]
+        fn interned_merges_equal_vertices_only(
+            coords in proptest::collection::vec((0i64..3, 0i64..3, 0i64..2, proptest::bool::ANY), 1..12),
+            used in proptest::collection::vec(0usize..12, 1..16),
+        ) {
+            let tiny = Rational::new(1.into(), num_bigint::BigInt::from(10).pow(30));
+            let value = |n: i64, nudged: bool| {
+                let v = Rational::new(n.into(), 3.into());
+                if nudged { v + tiny.clone() } else { v }
+            };
+            let vertices: Vec<Point3<Rational>> = coords
+                .iter()
+                .map(|&(x, y, z, nudged)| Point3::new(value(x, false), value(y, false), value(z, nudged)))
+                .collect();
+            let mut used: Vec<usize> = used.into_iter().map(|v| v % vertices.len()).collect();
+            let given = used.clone();
+            let soup = interned(&vertices, &mut used);
+            let mut distinct: Vec<&Point3<Rational>> = Vec::new();
+            for &v in &given {
+                if !distinct.contains(&&vertices[v]) {
+                    distinct.push(&vertices[v]);
+                }
+            }
+            proptest::prop_assert_eq!(soup.points.iter().collect::<Vec<_>>(), distinct);
+            for (k, &v) in given.iter().enumerate() {
+                proptest::prop_assert_eq!(&soup.points[used[k]], &vertices[v]);
+            }
+        }
     }
 }
