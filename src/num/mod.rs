@@ -251,6 +251,31 @@ pub(crate) fn balanced_sum<N: Num>(mut terms: Vec<N>) -> N {
     terms.pop().unwrap_or_else(N::zero)
 }
 
+/// The least positive L such that every one of `values` times L is an integer, if L and each
+/// of those integers lie below `bound` in magnitude.
+pub(crate) fn common_denominator<'a, N: Num + 'a>(
+    values: impl Iterator<Item = &'a N> + Clone,
+    bound: i64,
+) -> Option<i64> {
+    let mut l: i64 = 1;
+    for v in values.clone() {
+        let (_, d) = v.small_fraction()?;
+        if l % d != 0 {
+            l = (l / gcd::binary_u64(l as u64, d as u64) as i64).checked_mul(d)?;
+            if l >= bound {
+                return None;
+            }
+        }
+    }
+    for v in values {
+        let (n, d) = v.small_fraction()?;
+        if n.checked_mul(l / d)?.unsigned_abs() >= bound.unsigned_abs() {
+            return None;
+        }
+    }
+    Some(l)
+}
+
 /// The sign of `(b − a) × (c − a)` evaluated in `f64` from coordinates each within 3 ulps of
 /// the exact ones, if the error bound proves it; `None` if it cannot decide
 /// ([`filtered_orient_sum`] of one point).

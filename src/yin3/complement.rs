@@ -3,10 +3,10 @@
 //! glued surfaces, Hasse diagram and atoms derived combinatorially.
 
 use super::fins::Pairing;
-use super::float::exact_points;
 use super::glue::glued_surfaces;
 use super::hasse::{atoms, hasse, Hasse};
 use super::set::{genera, surfaces, Brep};
+use super::values::exact_points;
 use crate::num::Num;
 use std::sync::OnceLock;
 

@@ -313,7 +313,7 @@ mod tests {
     use super::*;
     use crate::num::Float;
     use crate::yin3::corners::{F64Corners, RationalCorners};
-    use crate::yin3::float::exact_point;
+    use crate::yin3::values::exact_point;
 
     /// The contact of two triangles given by their corners (points 0–2 and 3–5, triangles 0
     /// and 1).

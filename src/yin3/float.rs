@@ -13,6 +13,7 @@ use super::meet::general_meet;
 use super::set::{compact, Brep, Repr3, YinSet3};
 use super::transversal::{transversal_meet, Transversal};
 use super::validate::{check_windings, conforming_after_moves, revalidate};
+use super::values::{exact_point, exact_points};
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
 use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
@@ -55,32 +56,7 @@ pub(crate) fn rounded_exact<N: Num>(
     ctx: N::Ctx,
     op: impl Fn(&YinSet3<Rational>, &YinSet3<Rational>) -> YinSet3<Rational>,
 ) -> Result<YinSet3<N>, Yin3Error> {
-    rounded_set(op(&exact_set(a), &exact_set(b)), ctx)
-}
-
-/// The exact value of a vertex ([`Num::rational`]).
-pub(crate) fn exact_point<N: Num>(p: &Point3<N>) -> Point3<Rational> {
-    Point3::new(p.x.rational(), p.y.rational(), p.z.rational())
-}
-
-/// The exact values of a float set's vertices.
-pub(crate) fn exact_points<N: Num>(points: &[Point3<N>]) -> Vec<Point3<Rational>> {
-    points.iter().map(exact_point).collect()
-}
-
-/// The boundary of a float set over its exact values: the same triangles, which form a valid
-/// boundary because float sets are valid exactly.
-pub(crate) fn exact_brep<N: Num>(b: &Brep<N>) -> Brep<Rational> {
-    b.clone().map_points(exact_point)
-}
-
-/// The exact set of a float set's values ([`exact_brep`]).
-pub(crate) fn exact_set<N: Num>(y: &YinSet3<N>) -> YinSet3<Rational> {
-    match y.brep() {
-        None if y.is_empty() => YinSet3::empty(),
-        None => YinSet3::full(),
-        Some(b) => YinSet3::from_brep(exact_brep(b), ()),
-    }
+    rounded_set(op(&a.exact_values(), &b.exact_values()), ctx)
 }
 
 /// The error that a rounded result is not valid.
@@ -157,7 +133,7 @@ fn rounded_complex<N: Num>(
         return Ok(brep);
     }
     if let Shown::Conforming { .. } = shown {
-        check_windings(&exact_brep(&brep), &()).map_err(|e| unrepresentable(&e))?;
+        check_windings(&brep.exact_values(), &()).map_err(|e| unrepresentable(&e))?;
     }
     let (keep, got) = (keep()?, Topology::of(&brep));
     if got != keep {

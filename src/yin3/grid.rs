@@ -10,7 +10,7 @@ use super::error::Yin3Error;
 use super::set::{compact, Brep, YinSet3};
 use super::transversal::{transversal_meet, Transversal};
 use crate::kernel::Point3;
-use crate::num::{Float, Num, Rational};
+use crate::num::{common_denominator, Float, Num, Rational};
 
 /// Magnitudes below this are integers that an `f64` holds exactly.
 const EXACT_INTEGERS: i64 = 1 << 53;
@@ -21,31 +21,6 @@ fn common_grid<'a, N: Num + 'a>(
     points: impl Iterator<Item = &'a Point3<N>> + Clone,
 ) -> Option<i64> {
     common_denominator(points.flat_map(|p| [&p.x, &p.y, &p.z]), EXACT_INTEGERS)
-}
-
-/// The least positive L such that every one of `values` times L is an integer, if L and each
-/// of those integers lie below `bound` in magnitude.
-pub(super) fn common_denominator<'a, N: Num + 'a>(
-    values: impl Iterator<Item = &'a N> + Clone,
-    bound: i64,
-) -> Option<i64> {
-    let mut l: i64 = 1;
-    for v in values.clone() {
-        let (_, d) = v.small_fraction()?;
-        if l % d != 0 {
-            l = (l / gcd::binary_u64(l as u64, d as u64) as i64).checked_mul(d)?;
-            if l >= bound {
-                return None;
-            }
-        }
-    }
-    for v in values {
-        let (n, d) = v.small_fraction()?;
-        if n.checked_mul(l / d)?.unsigned_abs() >= bound.unsigned_abs() {
-            return None;
-        }
-    }
-    Some(l)
 }
 
 /// The point `p` times `l`, a float point (every coordinate of `p` times `l` an integer below
@@ -114,7 +89,7 @@ fn assembled<N: Num, M: Num>(
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::kernel::orient3d;
     use crate::yin3::meet::general_meet;
@@ -123,7 +98,7 @@ mod tests {
     use std::cmp::Ordering;
 
     /// The point (x, y, z) / d.
-    fn point(x: i64, y: i64, z: i64, d: i64) -> Point3<Rational> {
+    pub(in crate::yin3) fn point(x: i64, y: i64, z: i64, d: i64) -> Point3<Rational> {
         let q = |n: i64| Rational::new(BigInt::from(n), BigInt::from(d));
         Point3::new(q(x), q(y), q(z))
     }
@@ -148,7 +123,7 @@ mod tests {
 
     /// A tetrahedron with corners on the grid of tenths in [0, 2]³, faces outward; `None` if
     /// flat.
-    fn tetrahedron(rng: &mut rand::rngs::StdRng) -> Option<YinSet3<Rational>> {
+    pub(in crate::yin3) fn tetrahedron(rng: &mut rand::rngs::StdRng) -> Option<YinSet3<Rational>> {
         tetrahedron_over(rng, &[10])
     }
 
@@ -201,61 +176,6 @@ mod tests {
                 "taken in {taken:?} of {cases:?}"
             );
         }
-    }
-
-    /// The triangles of two tetrahedra on the grid of tenths, as one soup (equal corners
-    /// shared): they cross, touch or miss. Whether the soup is conforming is the same on the
-    /// rationals and on their images on the common grid, and both verdicts occur often.
-    #[test]
-    fn conformity_is_decided_alike_on_the_grid() {
-        use crate::yin3::arrange::Soup;
-        use crate::yin3::validate::conforming_after_moves;
-        let mut rng = rand::rngs::StdRng::seed_from_u64(11);
-        let mut verdicts = [0usize; 2];
-        for _ in 0..400 {
-            let (Some(t), Some(s)) = (tetrahedron(&mut rng), tetrahedron(&mut rng)) else {
-                continue;
-            };
-            let mut soup = Soup::new();
-            for b in [t.brep().expect("bounded"), s.brep().expect("bounded")] {
-                for k in 0..b.tris.len() {
-                    soup.push(b.corners(k), 0);
-                }
-            }
-            let everything = vec![true; soup.points.len()];
-            let exact = conforming_after_moves(&soup.points, &soup.tris, &everything);
-            let scaled = on_grid(&soup.points).expect("tenths are on a grid");
-            assert_eq!(
-                conforming_after_moves(&scaled, &soup.tris, &everything),
-                exact
-            );
-            verdicts[usize::from(exact)] += 1;
-        }
-        assert!(verdicts.iter().all(|&n| n >= 40), "verdicts {verdicts:?}");
-    }
-
-    /// A corner of one triangle inside an edge of another, at 4/11 of it, the planes
-    /// crossing there: the two meet in that point, which `f64` arithmetic on the grid images
-    /// rounds apart (the constructed ends of the contact miss each other), so conformity must
-    /// be decided on the exact values either way.
-    #[test]
-    fn a_corner_inside_an_edge_is_no_conforming_contact() {
-        use crate::yin3::validate::conforming_after_moves;
-        let corners = [
-            [-57, 35, -165],
-            [88, 231, 187],
-            [209, 286, 297],
-            [-165, 11, -231],
-            [231, 99, 11],
-            [22, -275, -297],
-        ];
-        let points: Vec<Point3<Rational>> =
-            corners.iter().map(|&[x, y, z]| point(x, y, z, 1)).collect();
-        let tris = [[0, 1, 2], [3, 4, 5]];
-        let everything = [true; 6];
-        assert!(!conforming_after_moves(&points, &tris, &everything));
-        let images = on_grid(&points).expect("integers are on a grid");
-        assert!(!conforming_after_moves(&images, &tris, &everything));
     }
 
     /// Operands sharing a face take the general arrangement, on a grid or off every grid of

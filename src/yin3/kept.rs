@@ -291,8 +291,8 @@ mod tests {
     use super::*;
     use crate::kernel::Point3;
     use crate::num::{Float, Tolerance};
-    use crate::yin3::float::exact_points;
     use crate::yin3::shapes::{concat, cuboid};
+    use crate::yin3::values::exact_points;
     use crate::yin3::YinSet3;
 
     /// The float set bounded by the boxes `[lo, hi]` (each reversed if `hi < lo` on x).

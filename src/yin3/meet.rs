@@ -1,15 +1,13 @@
-//! The meet of two 3D Yin sets (yin3 docs: *Selection*, *Meet*; seed 004 steps 1–5; the 3D MRS-b..d
-//! of seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8): arrange both boundaries against each other, keep the
-//! pieces of each that lie in the other (coincident pieces: one copy if equally oriented, none if
-//! opposite), and paste the kept pieces into glued surfaces.
+//! The general meet of two 3D Yin sets (yin3 docs: *Selection*, *Meet*; seed 004 steps 1–5; the 3D
+//! MRS-b..d of seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8), taken where the transversal meet declines
+//! the operands: arrange both boundaries against each other, keep the pieces of each that lie in
+//! the other (coincident pieces: one copy if equally oriented, none if opposite), and paste the
+//! kept pieces into glued surfaces.
 
 use super::arrange::{arrange, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
-use super::float::float_meet;
 use super::geom::{piece_in_triangle2, Chart, Triangle2};
-use super::grid::exact_transversal_meet;
 use super::locate::winding;
-use super::ops::or_panic;
 use super::set::{Brep, YinSet3};
 use super::tri::corners_after;
 use crate::kernel::{orient, Point3};
@@ -32,66 +30,6 @@ enum Side {
     Outside,
 }
 
-impl<N: Num> YinSet3<N> {
-    /// The meet 𝒴 ∧ 𝒵 (seed 000 Def. 4.8 lifted to 3D by seed 004): the regularized
-    /// intersection.
-    ///
-    /// # Panics
-    /// Only in float mode, when the result has no valid `f64` representation
-    /// ([`Yin3Error::Unrepresentable`]); [`YinSet3::try_meet`] returns that error instead.
-    ///
-    /// ```
-    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
-    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
-    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
-    /// };
-    /// let m = cube(0, 0, 0, 2).meet(&cube(1, 1, 1, 2)); // also `&a & &b`
-    /// assert_eq!(m, cube(1, 1, 1, 1));
-    /// // Cubes sharing a face meet in nothing (the sets are open).
-    /// assert!(cube(0, 0, 0, 1).meet(&cube(1, 0, 0, 1)).is_empty());
-    /// ```
-    pub fn meet(&self, other: &YinSet3<N>) -> YinSet3<N> {
-        or_panic(self.try_meet(other), "meet")
-    }
-
-    /// The meet, or in float mode the error that it has no valid `f64` representation
-    /// (exact mode never fails). Float mode follows the contract in the module docs of
-    /// [`crate::yin3`], *Float mode*.
-    ///
-    /// ```
-    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
-    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
-    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
-    /// };
-    /// let m = cube(0, 0, 0, 2).try_meet(&cube(1, 1, 1, 2))?; // exact mode never fails
-    /// assert_eq!(m.volume(), Some(Rational::from_i64(1)));
-    /// # Ok::<(), yinset::yin3::Yin3Error>(())
-    /// ```
-    pub fn try_meet(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
-        let ctx = N::combine_ctx(self.ctx, other.ctx);
-        let (a, b) = match (self.brep(), other.brep()) {
-            _ if self.is_empty() || other.is_empty() => return Ok(YinSet3::empty().with_ctx(ctx)),
-            (None, _) => return Ok(other.clone().with_ctx(ctx)),
-            (_, None) => return Ok(self.clone().with_ctx(ctx)),
-            (Some(a), Some(b)) => (a, b),
-        };
-        if a.bounded
-            && b.bounded
-            && !self
-                .bbox()
-                .zip(other.bbox())
-                .is_some_and(|(x, y)| x.meets(&y))
-        {
-            return Ok(YinSet3::empty().with_ctx(ctx));
-        }
-        if N::EXACT {
-            exact_transversal_meet([self, other], [a, b], ctx).unwrap_or_else(|| meet_in(a, b, ctx))
-        } else {
-            float_meet(self, other, ctx)
-        }
-    }
-}
-
 /// The meet by the general arrangement alone, never by the transversal one: where that one
 /// declined the operands' values, and the oracle of its tests, float and exact.
 pub(crate) fn general_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N> {
@@ -104,7 +42,11 @@ pub(crate) fn general_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N>
 /// The meet of two sets with the boundaries `a` and `b` whose boxes meet where both are
 /// bounded, computed with the predicates of `ctx` (MRS-a..d in 3D); an error if the
 /// arrangement or the kept pieces are inconsistent (never in exact mode).
-fn meet_in<N: Num>(a: &Brep<N>, b: &Brep<N>, ctx: N::Ctx) -> Result<YinSet3<N>, Yin3Error> {
+pub(super) fn meet_in<N: Num>(
+    a: &Brep<N>,
+    b: &Brep<N>,
+    ctx: N::Ctx,
+) -> Result<YinSet3<N>, Yin3Error> {
     let mut soup = Soup::new();
     for (operand, brep) in [a, b].into_iter().enumerate() {
         for t in 0..brep.tris.len() {

@@ -175,6 +175,7 @@ mod geom;
 mod glue;
 mod grid;
 mod hasse;
+mod input;
 mod kept;
 mod link;
 mod locate;
@@ -189,6 +190,7 @@ mod transversal;
 mod tri;
 mod triangulate;
 mod validate;
+mod values;
 
 pub use betti::Betti3;
 pub use error::{Spot, Yin3Error};

@@ -1,14 +1,76 @@
-//! Complement (seed 000 Def. 4.4 in 3D), join by De Morgan (Def. 4.10), difference, symmetric
-//! difference, and the operators `!`, `&`, `|`, `-`, `^` (yin3 docs: *Complement*, *Meet*).
+//! The Boolean operations (yin3 docs: *Meet*, *Complement*): the meet, by the transversal meet
+//! where it applies ([`super::grid`]; float mode: [`super::float`]) and else by the general
+//! arrangement ([`super::meet`]); complement (seed 000 Def. 4.4 in 3D), join by De Morgan
+//! (Def. 4.10), difference, symmetric difference, and the operators `!`, `&`, `|`, `-`, `^`.
 
 use super::error::Yin3Error;
-use super::float::rounded_exact;
+use super::float::{float_meet, rounded_exact};
+use super::grid::exact_transversal_meet;
+use super::meet::meet_in;
 use super::set::{Repr3, YinSet3};
 use crate::num::Num;
 use rayon::prelude::*;
 use std::ops::{BitAnd, BitOr, BitXor, Not, Sub};
 
 impl<N: Num> YinSet3<N> {
+    /// The meet 𝒴 ∧ 𝒵 (seed 000 Def. 4.8 lifted to 3D by seed 004): the regularized
+    /// intersection.
+    ///
+    /// # Panics
+    /// Only in float mode, when the result has no valid `f64` representation
+    /// ([`Yin3Error::Unrepresentable`]); [`YinSet3::try_meet`] returns that error instead.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// let m = cube(0, 0, 0, 2).meet(&cube(1, 1, 1, 2)); // also `&a & &b`
+    /// assert_eq!(m, cube(1, 1, 1, 1));
+    /// // Cubes sharing a face meet in nothing (the sets are open).
+    /// assert!(cube(0, 0, 0, 1).meet(&cube(1, 0, 0, 1)).is_empty());
+    /// ```
+    pub fn meet(&self, other: &YinSet3<N>) -> YinSet3<N> {
+        or_panic(self.try_meet(other), "meet")
+    }
+
+    /// The meet, or in float mode the error that it has no valid `f64` representation
+    /// (exact mode never fails). Float mode follows the contract in the module docs of
+    /// [`crate::yin3`], *Float mode*.
+    ///
+    /// ```
+    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
+    /// let cube = |x: i64, y: i64, z: i64, s: i64| {
+    ///     YinSet3::<Rational>::cuboid(&Point3::int(x, y, z), &Point3::int(x + s, y + s, z + s)).unwrap()
+    /// };
+    /// let m = cube(0, 0, 0, 2).try_meet(&cube(1, 1, 1, 2))?; // exact mode never fails
+    /// assert_eq!(m.volume(), Some(Rational::from_i64(1)));
+    /// # Ok::<(), yinset::yin3::Yin3Error>(())
+    /// ```
+    pub fn try_meet(&self, other: &YinSet3<N>) -> Result<YinSet3<N>, Yin3Error> {
+        let ctx = N::combine_ctx(self.ctx, other.ctx);
+        let (a, b) = match (self.brep(), other.brep()) {
+            _ if self.is_empty() || other.is_empty() => return Ok(YinSet3::empty().with_ctx(ctx)),
+            (None, _) => return Ok(other.clone().with_ctx(ctx)),
+            (_, None) => return Ok(self.clone().with_ctx(ctx)),
+            (Some(a), Some(b)) => (a, b),
+        };
+        if a.bounded
+            && b.bounded
+            && !self
+                .bbox()
+                .zip(other.bbox())
+                .is_some_and(|(x, y)| x.meets(&y))
+        {
+            return Ok(YinSet3::empty().with_ctx(ctx));
+        }
+        if N::EXACT {
+            exact_transversal_meet([self, other], [a, b], ctx).unwrap_or_else(|| meet_in(a, b, ctx))
+        } else {
+            float_meet(self, other, ctx)
+        }
+    }
+
     /// The complement 𝒴' = ℝ³ ∖ closure(𝒴): 0̂ ↔ 1̂, otherwise every triangle reversed and the
     /// glued surfaces regrouped.
     ///

@@ -4,10 +4,9 @@
 //! 384-bit integers on the stack where those integers are narrow enough (every pair of
 //! ../shared/data/3d), on big integers otherwise — the same value either way.
 
-use super::grid::common_denominator;
 use super::link::{cross, dot, Scalar, Vector};
 use crate::kernel::Point3;
-use crate::num::{common_grid, from_words, gcd_u128, Num, Rational};
+use crate::num::{common_denominator, common_grid, from_words, gcd_u128, Num, Rational};
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use ruint::aliases::U256;

@@ -5,11 +5,11 @@ use super::betti::{betti, Betti3};
 use super::canonical::{canonical, Canon};
 use super::error::{Spot, Yin3Error};
 use super::fins::{first_non_alternating, FinTable, Pairing};
-use super::float::{exact_brep, exact_points};
 use super::geom::det3;
 use super::glue::{corner_cycles, glued_surfaces};
 use super::hasse::{hasse, Atom3};
 use super::locate::{on_triangles, winding, TriBoxes};
+use super::values::{exact_point, exact_points};
 use crate::kernel::{BBox3, Point3};
 use crate::num::{balanced_sum, det_sum, lattice_det_sum, Num, Rational};
 use crate::yin2::Location;
@@ -133,6 +133,12 @@ impl<N: Num> Brep<N> {
     pub(crate) fn with_points<M: Num>(self, points: Vec<Point3<M>>) -> Brep<M> {
         let mut points = points.into_iter();
         self.map_points(|_| points.next().expect("one point for each point"))
+    }
+
+    /// The boundary of a float set over its exact values: the same triangles, which form a valid
+    /// boundary because float sets are valid exactly.
+    pub(crate) fn exact_values(&self) -> Brep<Rational> {
+        self.clone().map_points(exact_point)
     }
 
     /// The Betti numbers of the set it bounds (yin3 docs: *Betti numbers*), computed once.
@@ -335,6 +341,15 @@ impl<N: Num> YinSet3<N> {
         }
     }
 
+    /// The exact set of a float set's values ([`Brep::exact_values`]).
+    pub(crate) fn exact_values(&self) -> YinSet3<Rational> {
+        match self.brep() {
+            None if self.is_empty() => YinSet3::empty(),
+            None => YinSet3::full(),
+            Some(b) => YinSet3::from_brep(b.exact_values(), ()),
+        }
+    }
+
     /// The number context in force.
     pub fn ctx(&self) -> N::Ctx {
         self.ctx
@@ -528,7 +543,9 @@ impl<N: Num> PartialEq for YinSet3<N> {
             (Repr3::Empty, Repr3::Empty) | (Repr3::Full, Repr3::Full) => true,
             (Repr3::Brep(a), Repr3::Brep(b)) if N::EXACT => a.canon() == b.canon(),
             // Float sets are equal if their exact values are (plane keys need exact arithmetic).
-            (Repr3::Brep(a), Repr3::Brep(b)) => exact_brep(a).canon() == exact_brep(b).canon(),
+            (Repr3::Brep(a), Repr3::Brep(b)) => {
+                a.exact_values().canon() == b.exact_values().canon()
+            }
             _ => false,
         }
     }
@@ -545,7 +562,7 @@ impl<N: Num> Hash for YinSet3<N> {
                 if N::EXACT {
                     b.canon().hash(state);
                 } else {
-                    exact_brep(b).canon().hash(state);
+                    b.exact_values().canon().hash(state);
                 }
             }
         }

@@ -39,9 +39,9 @@ use super::bvh::Bvh;
 use super::contact::{contact, key, Contact, Edge, End};
 use super::corners::{Corners, F64Corners, RationalCorners};
 use super::fins::Fin;
-use super::float::{exact_point, exact_points};
 use super::locate::{ray_box, winding, TriBoxes};
 use super::set::{compact, Brep};
+use super::values::{exact_point, exact_points};
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
 use crate::union_find::UnionFind;
@@ -730,7 +730,6 @@ mod tests {
     use super::*;
     use crate::num::Float;
     use crate::yin3::bvh::tests::a_box;
-    use crate::yin3::float::exact_set;
     use crate::yin3::meet::general_meet;
     use crate::yin3::set::compact;
     use crate::yin3::shapes::{concat, cuboid, Mesh};
@@ -874,7 +873,7 @@ mod tests {
                 if let Some(Transversal::Apart(_) | Transversal::Operand(_)) = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap()) {
                     // Nothing is rounded where the boundaries are apart: the float meet is exact.
                     let float = fa.try_meet(&fb).expect("a float meet");
-                    prop_assert_eq!(exact_set(&float), exact);
+                    prop_assert_eq!(float.exact_values(), exact);
                 }
             }
         }
@@ -908,7 +907,7 @@ mod tests {
                     Some(Transversal::Apart(_) | Transversal::Operand(_))
                 ));
                 let float = fa.try_meet(&fb).expect("a float meet");
-                assert_eq!(exact_set(&float), general_meet(&ea, &eb));
+                assert_eq!(float.exact_values(), general_meet(&ea, &eb));
             }
         }
     }
@@ -995,7 +994,7 @@ mod tests {
                     let exact = general_meet(&ea, &eb);
                     prop_assert_eq!(fast.unwrap(), exact.clone());
                     // No point is constructed, so nothing is rounded: the float meet is exact.
-                    prop_assert_eq!(exact_set(&fa.try_meet(&fb).expect("a float meet")), exact);
+                    prop_assert_eq!(fa.try_meet(&fb).expect("a float meet").exact_values(), exact);
                 }
             }
         }
@@ -1143,7 +1142,10 @@ mod tests {
             "crossing edges and corners: {kinds:?}"
         );
         let fast = transversal(&ball, &torus).expect("the transversal meet");
-        assert_eq!(fast, general_meet(&exact_set(&ball), &exact_set(&torus)));
+        assert_eq!(
+            fast,
+            general_meet(&ball.exact_values(), &torus.exact_values())
+        );
     }
 
     /// Axis-aligned cubes sharing a corner (their faces at it coplanar) take the touching meet
@@ -1203,7 +1205,7 @@ mod tests {
         assert!(matches!(meet, Some(Transversal::Crossing(_))));
         let exact = general_meet(&solid::<Rational>(&a), &solid::<Rational>(&b));
         assert_eq!(transversal(&fa, &fb).unwrap(), exact);
-        assert_eq!(exact_set(&fa.try_meet(&fb).unwrap()), exact);
+        assert_eq!(fa.try_meet(&fb).unwrap().exact_values(), exact);
         let same_bottom = solid::<Float>(&bipyramid(2.0, 1.0));
         assert!(transversal(&fa, &same_bottom).is_none());
     }

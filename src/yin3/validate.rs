@@ -1,11 +1,11 @@
-//! Construction from user triangles and the public validator (yin3 docs: *Validation*): faces are
-//! checked and triangulated, legal contacts (T-junctions, a vertex or an edge on a face) made
-//! conforming by the arrangement of the faces against each other, and invariants I1–I4
-//! checked, with errors naming the face or edge at fault.
+//! Validation of user triangles ([`YinSet3::from_triangles`]) and the public validator
+//! ([`YinSet3::validate`]) (yin3 docs: *Validation*): faces are checked and triangulated, legal
+//! contacts (T-junctions, a vertex or an edge on a face) made conforming by the arrangement of
+//! the faces against each other, and invariants I1–I4 checked, with errors naming the face or
+//! edge at fault.
 
 use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
 use super::error::{Spot, Yin3Error};
-use super::float::{exact_point, exact_points, rounded_brep};
 use super::geom::{collinear, normal, widened_box, Chart};
 use super::grid::on_grid;
 use super::locate::{ray_box, winding};
@@ -14,6 +14,7 @@ use super::sweep::MeetingBoxes;
 use super::transversal::PARALLEL_FROM;
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
 use super::triangulate::ear_clip;
+use super::values::{exact_point, exact_points};
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
 use crate::num::{Float, NearPlane, Num, PlaneF64};
 use crate::union_find::UnionFind;
@@ -25,66 +26,6 @@ use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering;
 
 impl<N: Num> YinSet3<N> {
-    /// The 3D Yin set bounded by the given faces: `vertices` and, per face, its vertex indices
-    /// (0-based) in counterclockwise order seen from outside (normals point out of the set by
-    /// the right-hand rule). Planar n-gons are triangulated; T-junctions and vertices or edges
-    /// lying on faces are made conforming. Errors name the face or edge at fault.
-    ///
-    /// ```
-    /// use yinset::{kernel::Point3, num::{Num, Rational}, yin3::YinSet3};
-    /// let v: Vec<Point3<Rational>> = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
-    ///     .iter().map(|&(x, y, z)| Point3::int(x, y, z)).collect();
-    /// let faces = vec![vec![0, 3, 2, 1], vec![4, 5, 6, 7], vec![0, 1, 5, 4], vec![1, 2, 6, 5], vec![2, 3, 7, 6], vec![3, 0, 4, 7]];
-    /// let cube = YinSet3::from_triangles(v, faces)?;
-    /// assert_eq!(cube.volume(), Some(Rational::from_i64(1)));
-    /// assert_eq!((cube.betti().b0, cube.betti().b1, cube.betti().b2), (1, 0, 0));
-    /// # Ok::<(), yinset::yin3::Yin3Error>(())
-    /// ```
-    pub fn from_triangles(
-        vertices: Vec<Point3<N>>,
-        faces: Vec<Vec<usize>>,
-    ) -> Result<YinSet3<N>, Yin3Error> {
-        YinSet3::from_triangles_with(vertices, faces, N::Ctx::default())
-    }
-
-    /// As [`YinSet3::from_triangles`], with the given number context.
-    ///
-    /// ```
-    /// use yinset::{kernel::Point3, num::{Float, Tolerance}, yin3::YinSet3};
-    /// let p = |x: f64, y: f64, z: f64| Point3::new(Float::new(x), Float::new(y), Float::new(z));
-    /// // A tetrahedron with f64 corners, faces counterclockwise seen from outside.
-    /// let corners = vec![p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0), p(0.0, 0.0, 1.0)];
-    /// let faces = vec![vec![0, 2, 1], vec![0, 1, 3], vec![0, 3, 2], vec![1, 2, 3]];
-    /// let t = YinSet3::from_triangles_with(corners, faces, Tolerance::new(1e-9))?;
-    /// assert!((t.volume().unwrap().get() - 1.0 / 6.0).abs() < 1e-15);
-    /// t.validate()?;
-    /// # Ok::<(), yinset::yin3::Yin3Error>(())
-    /// ```
-    pub fn from_triangles_with(
-        vertices: Vec<Point3<N>>,
-        faces: Vec<Vec<usize>>,
-        ctx: N::Ctx,
-    ) -> Result<YinSet3<N>, Yin3Error> {
-        if faces.is_empty() {
-            return Err(Yin3Error::NoFaces);
-        }
-        if let Some(v) = vertices
-            .iter()
-            .position(|p| p.coords().iter().any(|c| !c.is_finite()))
-        {
-            return Err(Yin3Error::NotFinite { vertex: v });
-        }
-        let ctx = resolve_for(&vertices, ctx)?;
-        let brep = if N::EXACT {
-            build(&vertices, &faces, false)?
-        } else {
-            // Float mode: validity is decided on the exact values; a vertex that the
-            // conforming boundary adds (edges crossing on a face) is rounded like a result's.
-            rounded_brep(build(&exact_points(&vertices), &faces, true)?)?
-        };
-        Ok(YinSet3::from_brep(brep, ctx))
-    }
-
     /// Check that the stored boundary is a valid boundary representation (I1–I4), as
     /// [`YinSet3::from_triangles`] would accept it unchanged; every operation's output passes.
     /// Float sets are checked exactly, on their `f64` values read as rationals.
@@ -302,7 +243,7 @@ impl Yin3Error {
 /// The boundary bounded by `faces` over `vertices`, every decision exact (float mode too: its
 /// ε applies to operations, not to validity); `rounded` if the vertices are the exact values
 /// of a float-mode input (`f64`s), whose errors show points as `f64`s.
-fn build<N: Num>(
+pub(super) fn build<N: Num>(
     vertices: &[Point3<N>],
     faces: &[Vec<usize>],
     rounded: bool,
@@ -521,7 +462,9 @@ pub(crate) fn check_windings<N: Num>(b: &Brep<N>, ctx: &N::Ctx) -> Result<(), Yi
 mod tests {
     use super::*;
     use crate::num::Rational;
+    use crate::yin3::grid::tests::{point, tetrahedron};
     use crate::yin3::shapes::{concat, cuboid};
+    use rand::SeedableRng;
 
     /// The cubes [0, 10]³ and [15, 25]³ in backend `N`, and `far` unit cubes far from them,
     /// with the corners `moves` moved: the local check and the full validator (on the exact
@@ -683,5 +626,57 @@ mod tests {
                 proptest::prop_assert_eq!(&soup.points[used[k]], &vertices[v]);
             }
         }
+    }
+
+    /// The triangles of two tetrahedra on the grid of tenths, as one soup (equal corners
+    /// shared): they cross, touch or miss. Whether the soup is conforming is the same on the
+    /// rationals and on their images on the common grid, and both verdicts occur often.
+    #[test]
+    fn conformity_is_decided_alike_on_the_grid() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(11);
+        let mut verdicts = [0usize; 2];
+        for _ in 0..400 {
+            let (Some(t), Some(s)) = (tetrahedron(&mut rng), tetrahedron(&mut rng)) else {
+                continue;
+            };
+            let mut soup = Soup::new();
+            for b in [t.brep().expect("bounded"), s.brep().expect("bounded")] {
+                for k in 0..b.tris.len() {
+                    soup.push(b.corners(k), 0);
+                }
+            }
+            let everything = vec![true; soup.points.len()];
+            let exact = conforming_after_moves(&soup.points, &soup.tris, &everything);
+            let scaled = on_grid(&soup.points).expect("tenths are on a grid");
+            assert_eq!(
+                conforming_after_moves(&scaled, &soup.tris, &everything),
+                exact
+            );
+            verdicts[usize::from(exact)] += 1;
+        }
+        assert!(verdicts.iter().all(|&n| n >= 40), "verdicts {verdicts:?}");
+    }
+
+    /// A corner of one triangle inside an edge of another, at 4/11 of it, the planes
+    /// crossing there: the two meet in that point, which `f64` arithmetic on the grid images
+    /// rounds apart (the constructed ends of the contact miss each other), so conformity must
+    /// be decided on the exact values either way.
+    #[test]
+    fn a_corner_inside_an_edge_is_no_conforming_contact() {
+        let corners = [
+            [-57, 35, -165],
+            [88, 231, 187],
+            [209, 286, 297],
+            [-165, 11, -231],
+            [231, 99, 11],
+            [22, -275, -297],
+        ];
+        let points: Vec<Point3<Rational>> =
+            corners.iter().map(|&[x, y, z]| point(x, y, z, 1)).collect();
+        let tris = [[0, 1, 2], [3, 4, 5]];
+        let everything = [true; 6];
+        assert!(!conforming_after_moves(&points, &tris, &everything));
+        let images = on_grid(&points).expect("integers are on a grid");
+        assert!(!conforming_after_moves(&images, &tris, &everything));
     }
 }
