@@ -596,8 +596,8 @@ mod tests {
         ))]
         /// The soup of the used vertices has one point per distinct value, in order of first
         /// use, and maps each used vertex to its value, against a scan for equal values; the
-        /// values are small fractions and those plus 10⁻³⁰, which share their nearest `f64`s
-        /// (so both the path without hashing and the one with it are taken).
+        /// values are thirds, some z's plus 10⁻³⁰ (n/3 + 10⁻³⁰ has the nearest `f64` of n/3
+        /// for n ≠ 0), so both the path without hashing and the one with it are taken.
         #[test]
         fn interned_merges_equal_vertices_only(
             coords in proptest::collection::vec((0i64..3, 0i64..3, 0i64..2, proptest::bool::ANY), 1..12),
