@@ -5,7 +5,8 @@ use super::geom::{det3, widened_box};
 use super::locate::winding;
 use crate::kernel::Point3;
 use crate::num::{balanced_sum, Num};
-use rstar::{Envelope, AABB};
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{Envelope, RTree, AABB};
 use std::cell::OnceCell;
 use std::cmp::Ordering;
 
@@ -60,6 +61,28 @@ pub(crate) fn hasse<N: Num>(
         })
     };
     let inside = |l: usize, k: usize| bbox(k).contains_envelope(bbox(l));
+    // The surfaces whose boxes may contain surface l's, in increasing order (of two equal
+    // volumes the first is the parent): every surface, or past [`MANY_SURFACES`] those whose
+    // boxes an R-tree of the boxes finds meeting l's.
+    let tree = (count > MANY_SURFACES).then(|| {
+        RTree::bulk_load(
+            (0..count)
+                .map(|s| GeomWithData::new(Rectangle::from_aabb(*bbox(s)), s))
+                .collect(),
+        )
+    });
+    let candidates = |l: usize| -> Vec<usize> {
+        match &tree {
+            None => (0..count).collect(),
+            Some(tree) => {
+                let mut near: Vec<usize> = (tree.locate_in_envelope_intersecting(bbox(l)))
+                    .map(|g| g.data)
+                    .collect();
+                near.sort_unstable();
+                near
+            }
+        }
+    };
     let mut parent = vec![None; count];
     for l in 0..count {
         // A point inside the surface's first triangle, made once a larger surface is tried.
@@ -71,7 +94,7 @@ pub(crate) fn hasse<N: Num>(
             })
         };
         let mut best: Option<usize> = None;
-        for (k, member) in members.iter().enumerate() {
+        for k in candidates(l) {
             // The boxes first: comparing volumes may need their exact sums.
             if k == l || !inside(l, k) || volumes.cmp_abs(k, l) != Ordering::Greater {
                 continue;
@@ -79,7 +102,7 @@ pub(crate) fn hasse<N: Num>(
             if best.is_some_and(|b| volumes.cmp_abs(b, k) != Ordering::Greater) {
                 continue;
             }
-            if winding(member.iter().map(|&t| corners(t)), q(), ctx) != 0 {
+            if winding(members[k].iter().map(|&t| corners(t)), q(), ctx) != 0 {
                 best = Some(k);
             }
         }
@@ -95,6 +118,11 @@ pub(crate) fn hasse<N: Num>(
         parent,
     }
 }
+
+/// [`hasse`] looks for each surface's parent among the surfaces whose boxes meet its box, in
+/// an R-tree, past this many surfaces (a checkerboard's meet has hundreds), and among all
+/// below.
+const MANY_SURFACES: usize = 32;
 
 /// The atoms of surfaces with orientations `positive` and Hasse diagram `parent` (seed 003
 /// Thm 7.10): one per positive surface, in increasing order, with the negative surfaces whose
@@ -370,5 +398,60 @@ mod tests {
             .collect();
         assert_eq!(det3_sum_f64(tris.iter().copied()).0, -256.0);
         assert_eq!(decided(&[tris]).1, Ordering::Greater);
+    }
+
+    /// Past [`MANY_SURFACES`] (parents looked up in an R-tree): a cube with 36 cubic cavities,
+    /// half of them holding a cubic island, 55 surfaces. Each surface's parent is the
+    /// smallest other surface whose box holds its box (axis-aligned cubes: the box is the
+    /// bounded complement), found by a scan.
+    #[test]
+    fn parents_of_many_nested_cubes_are_the_smallest_holding_boxes() {
+        use crate::yin3::shapes::{concat, cuboid};
+        use crate::yin3::YinSet3;
+        let p = |x: i64, y: i64, z: i64| Point3::<Rational>::int(x, y, z);
+        let mut cubes = vec![cuboid(&p(0, 0, 0), &p(64, 64, 16))];
+        for i in 0..6 {
+            for j in 0..6 {
+                let (x, y) = (8 * i + 2, 8 * j + 2);
+                let mut cavity = cuboid(&p(x, y, 2), &p(x + 4, y + 4, 6));
+                cavity.1.iter_mut().for_each(|f| f.reverse());
+                cubes.push(cavity);
+                if (i + j) % 2 == 0 {
+                    cubes.push(cuboid(&p(x + 1, y + 1, 3), &p(x + 3, y + 3, 5)));
+                }
+            }
+        }
+        let (v, f) = concat(cubes);
+        let set = YinSet3::from_triangles(v, f).expect("nested cubes");
+        let b = set.brep().expect("bounded");
+        assert_eq!(b.surfaces.len(), 55);
+        assert!(b.surfaces.len() > MANY_SURFACES);
+        let boxes: Vec<[[i64; 3]; 2]> = (b.surfaces.iter())
+            .map(|s| {
+                let corners = s.triangles.iter().flat_map(|&t| b.tris[t]);
+                let c = |v: usize| [0, 1, 2].map(|k| b.points[v].coord(k).to_f64() as i64);
+                corners.fold([[i64::MAX; 3], [i64::MIN; 3]], |[lo, hi], v| {
+                    let q = c(v);
+                    [
+                        [0, 1, 2].map(|k| lo[k].min(q[k])),
+                        [0, 1, 2].map(|k| hi[k].max(q[k])),
+                    ]
+                })
+            })
+            .collect();
+        let holds = |k: usize, l: usize| {
+            (0..3).all(|d| boxes[k][0][d] < boxes[l][0][d] && boxes[l][1][d] < boxes[k][1][d])
+        };
+        let size = |k: usize| {
+            (0..3)
+                .map(|d| boxes[k][1][d] - boxes[k][0][d])
+                .product::<i64>()
+        };
+        for l in 0..boxes.len() {
+            let expected = (0..boxes.len())
+                .filter(|&k| holds(k, l))
+                .min_by_key(|&k| size(k));
+            assert_eq!(b.parent[l], expected, "surface {l}");
+        }
     }
 }
