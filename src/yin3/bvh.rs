@@ -56,21 +56,17 @@ impl Bvh {
         &self.levels[level][i]
     }
 
-    /// The children of a node above level 0.
-    fn children(&self, (level, i): Node) -> impl Iterator<Item = Node> {
-        let end = ((i + 1) * WIDTH).min(self.levels[level - 1].len());
-        (i * WIDTH..end).map(move |c| (level - 1, c))
-    }
-
-    /// What stands for `n` when it is paired with a node at level `beside`: its children if
-    /// it is above level 0 and no lower than that node (the higher node of a pair is split,
-    /// both at equal levels, so nodes of like size are paired), else `n` itself.
-    fn split(&self, n: Node, beside: usize) -> impl Iterator<Item = Node> {
-        let split = n.0 > 0 && n.0 >= beside;
-        let whole = (!split).then_some(n);
-        whole
-            .into_iter()
-            .chain(split.then(|| self.children(n)).into_iter().flatten())
+    /// What stands for `n` when it is paired with a node at level `beside`, as a level and a
+    /// range of places in it: its children if it is above level 0 and no lower than that node
+    /// (the higher node of a pair is split, both at equal levels, so nodes of like size are
+    /// paired), else `n` itself.
+    fn split(&self, (level, i): Node, beside: usize) -> (usize, std::ops::Range<usize>) {
+        if level > 0 && level >= beside {
+            let end = ((i + 1) * WIDTH).min(self.levels[level - 1].len());
+            (level - 1, i * WIDTH..end)
+        } else {
+            (level, i..i + 1)
+        }
     }
 
     /// Pairs of nodes of `self` and `other` whose boxes meet, covering every pair of boxes
@@ -87,11 +83,13 @@ impl Bvh {
         while pairs.len() < enough && pairs.iter().any(|[x, y]| x.0 > 0 || y.0 > 0) {
             let mut split = Vec::new();
             for &[x, y] in &pairs {
-                for cx in self.split(x, y.0) {
-                    let bx = self.node_box(cx);
-                    let meeting =
-                        (other.split(y, x.0)).filter(|&cy| bx.intersects(other.node_box(cy)));
-                    split.extend(meeting.map(|cy| [cx, cy]));
+                let ((lx, xs), (ly, ys)) = (self.split(x, y.0), other.split(y, x.0));
+                for cx in xs {
+                    let bx = &self.levels[lx][cx];
+                    let meeting = ys
+                        .clone()
+                        .filter(|&cy| bx.intersects(&other.levels[ly][cy]));
+                    split.extend(meeting.map(|cy| [(lx, cx), (ly, cy)]));
                 }
             }
             pairs = split;
@@ -122,12 +120,29 @@ impl Bvh {
         if x.0 == 0 && y.0 == 0 {
             return f(self.items[x.1], other.items[y.1]);
         }
+        let ((lx, xs), (ly, ys)) = (self.split(x, y.0), other.split(y, x.0));
+        let (x_boxes, y_boxes) = (&self.levels[lx], &other.levels[ly]);
+        // Only children that meet the other node's box can meet any of its children: each side
+        // is filtered by the other's box first (the pairs left, and their order, are the same).
+        let (bx, by) = (self.node_box(x), other.node_box(y));
+        let mut near_x = [0; WIDTH];
+        let mut count = 0;
+        for cy in ys {
+            if y_boxes[cy].intersects(bx) {
+                near_x[count] = cy;
+                count += 1;
+            }
+        }
         // Loops, not `all` with closures: the closures, with `f` inlined, were calls with
         // large frames on every node visited.
-        for cx in self.split(x, y.0) {
-            let bx = self.node_box(cx);
-            for cy in other.split(y, x.0) {
-                if bx.intersects(other.node_box(cy)) && !self.meeting_pairs(other, [cx, cy], f) {
+        for cx in xs {
+            let b = &x_boxes[cx];
+            if !b.intersects(by) {
+                continue;
+            }
+            for &cy in &near_x[..count] {
+                if b.intersects(&y_boxes[cy]) && !self.meeting_pairs(other, [(lx, cx), (ly, cy)], f)
+                {
                     return false;
                 }
             }
