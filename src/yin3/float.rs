@@ -8,7 +8,7 @@
 //! [`super::transversal`], others the general exact meet.
 
 use super::error::Yin3Error;
-use super::kept::{provably_kept, Topology};
+use super::kept::{provably_kept, Merges, Topology};
 use super::meet::general_meet;
 use super::set::{compact, Brep, Repr3, YinSet3};
 use super::transversal::{transversal_meet, Transversal};
@@ -124,12 +124,17 @@ fn rounded_complex<N: Num>(
         // Every point an `f64` already: the exact boundary itself, valid, with its topology.
         return Brep::assemble(rounded, tris).map_err(|e| unrepresentable(&e));
     }
-    let (brep, shown) = rounded_boundary(rounded, moved, exact, tris)?;
+    let (brep, shown, merges) = rounded_boundary(rounded, moved, exact, tris)?;
     let same_triangles = matches!(
         shown,
         Shown::Conforming { same: true } | Shown::Valid { same: true }
     );
-    if same_triangles && provably_kept(&brep, exact) {
+    let proven = match merges {
+        _ if same_triangles => provably_kept(&brep, exact, &Merges::none()),
+        Some((merges, values)) => provably_kept(&brep, &values, &merges),
+        None => false,
+    };
+    if proven {
         return Ok(brep);
     }
     if let Shown::Conforming { .. } = shown {
@@ -160,14 +165,18 @@ enum Shown {
     Valid { same: bool },
 }
 
-/// The rounded boundary of [`rounded_complex`], before its topology is compared, and how far
-/// it is shown valid.
+/// What [`rounded_boundary`] shows of the vertices it merged, for [`provably_kept`]: the
+/// merges ([`Merges::of`]) and the exact value of each rounded vertex.
+type Merged = Option<(Merges, Vec<Point3<Rational>>)>;
+
+/// The rounded boundary of [`rounded_complex`], before its topology is compared, how far it is
+/// shown valid, and where vertices merged, what is shown of the merges.
 fn rounded_boundary<N: Num>(
     rounded: Vec<Point3<N>>,
     moved: Vec<Option<Point3<Rational>>>,
     exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
-) -> Result<(Brep<N>, Shown), Yin3Error> {
+) -> Result<(Brep<N>, Shown, Merged), Yin3Error> {
     if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
         let flags: Vec<bool> = moved.iter().map(Option::is_some).collect();
         // The rounded points' exact values: those that did not move are the exact points.
@@ -183,6 +192,7 @@ fn rounded_boundary<N: Num>(
             return Ok((
                 on_values.with_points(rounded),
                 Shown::Conforming { same: true },
+                None,
             ));
         }
         let points: Vec<Point3<N>> = (on_values.points.iter())
@@ -191,7 +201,7 @@ fn rounded_boundary<N: Num>(
         let values = on_values.points.clone();
         let brep = on_values.with_points(points);
         revalidate(values, &brep, ()).map_err(|e| unrepresentable(&e))?;
-        return Ok((brep, Shown::Valid { same }));
+        return Ok((brep, Shown::Valid { same }, None));
     }
     let mut index: HashMap<Point3<N>, usize> = HashMap::new();
     let mut points = Vec::new();
@@ -209,23 +219,28 @@ fn rounded_boundary<N: Num>(
         }
         new.push(i);
     }
-    let tris: Vec<[usize; 3]> = tris
+    let kept: Vec<[usize; 3]> = tris
         .iter()
         .map(|t| t.map(|v| new[v]))
         .filter(|[p, q, r]| p != q && q != r && r != p)
         .collect();
-    if tris.is_empty() {
+    if kept.is_empty() {
         return Err(unrepresentable(&"every triangle collapsed when rounded"));
     }
-    let brep = Brep::assemble(points, tris).map_err(|e| unrepresentable(&e))?;
+    let brep = Brep::assemble(points.clone(), kept).map_err(|e| unrepresentable(&e))?;
+    // Assembly renumbers the distinct rounded points by first use.
+    let at: HashMap<&Point3<N>, usize> = brep.points.iter().zip(0..).collect();
+    let merged = (new.iter().map(|&i| at.get(&points[i]).copied()))
+        .collect::<Option<Vec<usize>>>()
+        .and_then(|to| Merges::of(brep.points.len(), &tris, &to, exact));
     // The triangles that are left met only in shared corners and edges before they moved, and
     // merging points gave a shared corner only to triangles at a moved point.
     let flags: Vec<bool> = brep.points.iter().map(|p| reached.contains(p)).collect();
     if conforming_after_moves(&brep.points, &brep.tris, &flags) {
-        return Ok((brep, Shown::Conforming { same: false }));
+        return Ok((brep, Shown::Conforming { same: false }, merged));
     }
     revalidate(exact_points(&brep.points), &brep, ()).map_err(|e| unrepresentable(&e))?;
-    Ok((brep, Shown::Valid { same: false }))
+    Ok((brep, Shown::Valid { same: false }, merged))
 }
 
 /// The exact set `y` rounded ([`rounded_brep`]), under the context `ctx`.
@@ -268,8 +283,9 @@ mod tests {
         let rounded: Vec<Point3<Float>> = rounded_points(&exact).unwrap();
         assert_eq!(rounded[4], rounded[0]);
         let moved = moved(&rounded, &exact);
-        let (brep, shown) = rounded_boundary(rounded, moved, &exact, tris).unwrap();
+        let (brep, shown, merged) = rounded_boundary(rounded, moved, &exact, tris).unwrap();
         assert!(matches!(shown, Shown::Conforming { same: false }));
+        assert!(merged.is_some());
         assert_eq!((brep.points.len(), brep.tris.len()), (4, 4));
     }
 }

@@ -101,7 +101,16 @@ const U: f64 = f64::EPSILON / 2.0;
 /// so that winding number is the one about every other point of the surface: nesting); surfaces
 /// farther apart are nested in neither version; and the link terms are compared exactly where a
 /// vertex has several corner cycles.
-pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> bool {
+///
+/// Where rounding merged vertices, `merges` ([`Merges::of`]) shows the rounded triangles to be
+/// the exact ones after independent edge collapses that keep each surface's topology; the
+/// collapsed triangles are counted in the volume bounds (they end degenerate, their volume
+/// terms 0), and no vertex with several corner cycles may lie in a collapse's star.
+pub(crate) fn provably_kept<N: Num>(
+    b: &Brep<N>,
+    exact: &[Point3<Rational>],
+    merges: &Merges,
+) -> bool {
     // Two fins per edge also make the fin table (built on the rounded points) the exact
     // points' own: with two fins there is no order to sort.
     if b.table.fin_lists().any(|f| f.len() != 2) {
@@ -116,6 +125,9 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> 
             if cycle_at[v] == usize::MAX {
                 cycle_at[v] = c;
             } else if cycle_at[v] != c {
+                if merges.near.get(v).copied().unwrap_or(false) {
+                    return false;
+                }
                 pinched.push(v);
             }
         }
@@ -146,11 +158,109 @@ pub(crate) fn provably_kept<N: Num>(b: &Brep<N>, exact: &[Point3<Rational>]) -> 
     close_pairs(&boxes, gap)
         .iter()
         .all(|&(s, t)| witnessed(&p, near(s), near(t), gap) && witnessed(&p, near(t), near(s), gap))
-        && b.surfaces
-            .iter()
-            .zip(&boxes)
-            .all(|(s, bx)| volume_sign_kept(&p, s.triangles.iter().map(|&t| b.tris[t]), bx, moved))
+        && b.surfaces.iter().zip(&boxes).all(|(s, bx)| {
+            let tris = s.triangles.iter().map(|&t| b.tris[t]);
+            volume_sign_kept(&p, tris, merges.collapsed, bx, moved)
+        })
         && links_kept(b, exact, pinched, cycles)
+}
+
+/// Vertices of an exact boundary that rounding merged, shown to be independent edge collapses
+/// that keep the topology of each glued surface (Dey, Edelsbrunner, Guha, Nekhayev, "Topology
+/// preserving edge contraction", 1999: on a closed surface, contracting the edge ab keeps the
+/// surface's type iff Lk a ∩ Lk b = Lk ab).
+pub(crate) struct Merges {
+    /// How many triangles collapsed (two per merge).
+    collapsed: usize,
+    /// For each vertex of the rounded boundary, whether it is a merged vertex or one of its
+    /// neighbours.
+    near: Vec<bool>,
+}
+
+impl Merges {
+    /// No merges.
+    pub(crate) fn none() -> Merges {
+        Merges {
+            collapsed: 0,
+            near: Vec::new(),
+        }
+    }
+
+    /// The merges that took the exact triangles `tris` (points `exact`) to a rounded boundary
+    /// of `rounded` vertices, vertex `v` becoming its vertex `to[v]`, with the exact value of
+    /// each rounded vertex; `None`
+    /// unless every merge is two vertices a, b joined by an edge with exactly two triangles abc
+    /// and abd, whose common neighbours are c and d alone and that are not both corners of
+    /// triangles acd and bcd (the link condition on a closed surface, where [`provably_kept`]
+    /// shows every rounded edge has two fins and the merged vertex one corner cycle), and no
+    /// two merges share a vertex of their stars (so each keeps the condition for the next).
+    pub(crate) fn of(
+        rounded: usize,
+        tris: &[[usize; 3]],
+        to: &[usize],
+        exact: &[Point3<Rational>],
+    ) -> Option<(Merges, Vec<Point3<Rational>>)> {
+        let mut first = vec![usize::MAX; rounded];
+        let mut pairs = Vec::new();
+        for (v, &w) in to.iter().enumerate() {
+            if first[w] == usize::MAX {
+                first[w] = v;
+            } else {
+                pairs.push((first[w], v));
+            }
+        }
+        let mut with_vertex = vec![Vec::new(); to.len()];
+        for (t, tri) in tris.iter().enumerate() {
+            for &v in tri {
+                with_vertex[v].push(t);
+            }
+        }
+        let neighbours = |v: usize| {
+            let mut n: Vec<usize> = (with_vertex[v].iter())
+                .flat_map(|&t| tris[t])
+                .filter(|&w| w != v)
+                .collect();
+            n.sort_unstable();
+            n.dedup();
+            n
+        };
+        let is_triangle = |[x, y, z]: [usize; 3]| {
+            (with_vertex[x].iter()).any(|&t| tris[t].contains(&y) && tris[t].contains(&z))
+        };
+        let mut near = vec![false; rounded];
+        for &(x, y) in &pairs {
+            let (nx, ny) = (neighbours(x), neighbours(y));
+            let common: Vec<usize> = (nx.iter())
+                .filter(|w| ny.binary_search(w).is_ok())
+                .copied()
+                .collect();
+            let at_edge = (with_vertex[x].iter())
+                .filter(|&&t| tris[t].contains(&y))
+                .count();
+            let [c, d] = common[..] else { return None };
+            if at_edge != 2 || is_triangle([x, c, d]) && is_triangle([y, c, d]) {
+                return None;
+            }
+            let mut star: Vec<usize> = nx.into_iter().chain(ny).map(|w| to[w]).collect();
+            star.sort_unstable();
+            star.dedup();
+            if star
+                .into_iter()
+                .any(|w| std::mem::replace(&mut near[w], true))
+            {
+                return None;
+            }
+        }
+        if first.contains(&usize::MAX) {
+            return None;
+        }
+        let values = first.iter().map(|&v| exact[v].clone()).collect();
+        let merges = Merges {
+            collapsed: 2 * pairs.len(),
+            near,
+        };
+        Some((merges, values))
+    }
 }
 
 /// True if at each of the vertices `pinched` (with several corner cycles; duplicates allowed)
@@ -256,15 +366,17 @@ fn times_pow2(c: f64, k: i32) -> f64 {
 /// determinant moves by at most 6((M + 2δ)³ − (M + δ)³) = 6(3M²δ + 9Mδ² + 7δ³) when its
 /// vectors (at most M in each coordinate) move by δ, and the `f64` sum of n determinants errs
 /// by at most (n + 16)·2u times the sum of the absolute values of their products.
+/// `collapsed` more triangles, degenerate on `p` (their terms 0), count in the geometric bound.
 fn volume_sign_kept(
     p: &[[f64; 3]],
     tris: impl Iterator<Item = [usize; 3]>,
+    collapsed: usize,
     bx: &[[f64; 3]; 2],
     moved: f64,
 ) -> bool {
     let o = bx[0];
     let m = (0..3).fold(0.0f64, |m, k| m.max(bx[1][k] - o[k])) * (1.0 + 4.0 * U);
-    let (mut sum, mut magnitude, mut n) = (0.0, 0.0, 0.0);
+    let (mut sum, mut magnitude, mut n) = (0.0, 0.0, collapsed as f64);
     for [i, j, k] in tris {
         let d = |v: usize| [0, 1, 2].map(|c| p[v][c] - o[c]);
         let (a, b, c) = (d(i), d(j), d(k));
@@ -313,7 +425,7 @@ mod tests {
 
     /// [`provably_kept`] of a boundary whose vertices did not move.
     fn kept(b: &Brep<Float>) -> bool {
-        provably_kept(b, &exact_points(&b.points))
+        provably_kept(b, &exact_points(&b.points), &Merges::none())
     }
 
     /// Unit cubes (0,0,0) and (1,1,0) meet at an edge, joined also through (0,0,1), (0,1,1)
@@ -395,7 +507,7 @@ mod tests {
         let b = boxes(&[([0.0; 3], [s; 3])]);
         let p: Vec<[f64; 3]> = b.points.iter().map(Point3::to_f64).collect();
         let tris = b.surfaces[0].triangles.iter().map(|&t| b.tris[t]);
-        volume_sign_kept(&p, tris, &[[0.0; 3], [s; 3]], moved)
+        volume_sign_kept(&p, tris, 0, &[[0.0; 3], [s; 3]], moved)
     }
 
     /// Moves of up to 1 can flatten the cube [0, 1.5]³ (its top and bottom each moved 0.75 to
@@ -416,9 +528,61 @@ mod tests {
         assert!(volume_sign_kept(
             &p,
             tris.into_iter(),
+            0,
             &[[0.0; 3], [1.0; 3]],
             1e-6
         ));
+    }
+
+    /// The tetrahedron 0123 with 4 on its edge 01.
+    const SPLIT: [[usize; 3]; 6] = [
+        [0, 2, 4],
+        [4, 2, 1],
+        [0, 4, 3],
+        [4, 1, 3],
+        [0, 3, 2],
+        [1, 2, 3],
+    ];
+
+    /// [`Merges::of`] on the triangles `tris` over the vertices 0..5, merging the vertices
+    /// `pairs` (the other vertices numbered in order after).
+    fn merges_of(tris: &[[usize; 3]], pairs: &[(usize, usize)]) -> Option<usize> {
+        let mut to = vec![usize::MAX; 5];
+        for &(x, y) in pairs {
+            to[x] = x.min(y);
+            to[y] = x.min(y);
+        }
+        let mut next = 0;
+        for v in 0..5 {
+            if to[v] == usize::MAX || to[v] == v {
+                to[v] = next;
+                next += 1;
+            } else {
+                to[v] = to[to[v]];
+            }
+        }
+        let exact = vec![Point3::int(0, 0, 0); 5];
+        Merges::of(next, tris, &to, &exact).map(|(m, values)| {
+            assert_eq!(values.len(), next);
+            m.collapsed
+        })
+    }
+
+    /// Merging the split vertex with a corner of its edge collapses two triangles and meets the
+    /// link condition, and so does merging 0 and 2 (sharing the neighbours 3 and 4, which
+    /// the triangle 043 but no triangle 243 joins). Merging two vertices sharing three
+    /// neighbours (2 and 3), two not joined by an edge (0 and 1), two pairs whose stars meet,
+    /// or two corners of a plain tetrahedron (their common neighbours joined to both) does not.
+    #[test]
+    fn only_independent_collapses_under_the_link_condition_are_merges() {
+        assert_eq!(merges_of(&SPLIT, &[(0, 4)]), Some(2));
+        assert_eq!(merges_of(&SPLIT, &[(1, 4)]), Some(2));
+        assert_eq!(merges_of(&SPLIT, &[(0, 2)]), Some(2));
+        assert_eq!(merges_of(&SPLIT, &[(2, 3)]), None);
+        assert_eq!(merges_of(&SPLIT, &[(0, 1)]), None);
+        assert_eq!(merges_of(&SPLIT, &[(0, 4), (2, 3)]), None);
+        let plain = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [2, 1, 3]];
+        assert_eq!(merges_of(&plain, &[(0, 1)]), None);
     }
 
     /// Two boxes sharing only a corner: that vertex has two corner cycles, whose link is
