@@ -84,7 +84,8 @@ impl std::fmt::Display for Invariants {
 const U: f64 = f64::EPSILON / 2.0;
 
 /// True only if the rounded boundary `b` — the exact boundary's very triangles over the points
-/// `exact`, each vertex moved to its nearest `f64` — has the exact boundary's [`Topology`].
+/// `exact`, each vertex moved to its nearest `f64`, or those triangles after the merges
+/// `merges` — has the exact boundary's [`Topology`].
 /// Sufficient: the exact boundary is valid, the rounded one conforming (I1–I3: its windings,
 /// I4, then follow from what is shown here, `float::Shown::Conforming`), and every edge has two
 /// fins, so the glued surfaces and corner cycles are the same, and the topology of the set and
@@ -103,9 +104,12 @@ const U: f64 = f64::EPSILON / 2.0;
 /// vertex has several corner cycles.
 ///
 /// Where rounding merged vertices, `merges` ([`Merges::of`]) shows the rounded triangles to be
-/// the exact ones after independent edge collapses that keep each surface's topology; the
-/// collapsed triangles are counted in the volume bounds (they end degenerate, their volume
-/// terms 0), and no vertex with several corner cycles may lie in a collapse's star.
+/// the exact ones after independent edge collapses that keep each surface's type, its corner
+/// cycles away from the collapses and each Euler characteristic (a collapse takes one vertex,
+/// three edges and two triangles); `exact` then gives a merged vertex one of its two exact
+/// values, read nowhere: no vertex with several corner cycles may lie in a collapse's star.
+/// The collapsed triangles are counted in the volume bounds (they end degenerate, their terms
+/// 0), and a witness stays beyond each of them, which ends inside a kept triangle's box.
 pub(crate) fn provably_kept<N: Num>(
     b: &Brep<N>,
     exact: &[Point3<Rational>],
@@ -172,8 +176,8 @@ pub(crate) fn provably_kept<N: Num>(
 pub(crate) struct Merges {
     /// How many triangles collapsed (two per merge).
     collapsed: usize,
-    /// For each vertex of the rounded boundary, whether it is a merged vertex or one of its
-    /// neighbours.
+    /// For each vertex of the rounded boundary, whether it is in a collapse's star: a merged
+    /// vertex or one of its neighbours.
     near: Vec<bool>,
 }
 
@@ -187,8 +191,8 @@ impl Merges {
     }
 
     /// The merges that took the exact triangles `tris` (points `exact`) to a rounded boundary
-    /// of `rounded` vertices, vertex `v` becoming its vertex `to[v]`, with the exact value of
-    /// each rounded vertex; `None`
+    /// of `rounded` vertices, vertex `v` becoming its vertex `to[v]`, with an exact value of
+    /// each rounded vertex (the first of a merged pair's); `None`
     /// unless every merge is two vertices a, b joined by an edge with exactly two triangles abc
     /// and abd, whose common neighbours are c and d alone and that are not both corners of
     /// triangles acd and bcd (the link condition on a closed surface, where [`provably_kept`]
@@ -250,9 +254,6 @@ impl Merges {
             {
                 return None;
             }
-        }
-        if first.contains(&usize::MAX) {
-            return None;
         }
         let values = first.iter().map(|&v| exact[v].clone()).collect();
         let merges = Merges {
@@ -544,16 +545,34 @@ mod tests {
         [1, 2, 3],
     ];
 
-    /// [`Merges::of`] on the triangles `tris` over the vertices 0..5, merging the vertices
-    /// `pairs` (the other vertices numbered in order after).
-    fn merges_of(tris: &[[usize; 3]], pairs: &[(usize, usize)]) -> Option<usize> {
-        let mut to = vec![usize::MAX; 5];
+    /// The torus grid of `k` × `k` vertices (i, j) numbered k·i + j, each square
+    /// (i, j)–(i + 1, j + 1) cut along that diagonal: the edge (i, j)–(i + 1, j) has the fins at
+    /// (i + 1, j + 1) and (i, j − 1) and no other common neighbours.
+    fn torus(k: usize) -> Vec<[usize; 3]> {
+        let v = |i: usize, j: usize| k * (i % k) + j % k;
+        (0..k * k)
+            .flat_map(|q| {
+                let (i, j) = (q / k, q % k);
+                [
+                    [v(i, j), v(i + 1, j), v(i + 1, j + 1)],
+                    [v(i, j), v(i + 1, j + 1), v(i, j + 1)],
+                ]
+            })
+            .collect()
+    }
+
+    /// [`Merges::of`] on the triangles `tris`, merging the vertices `pairs` (the other vertices
+    /// numbered in order after): the collapsed triangles and how many rounded vertices are in
+    /// a collapse's star.
+    fn merges_of(tris: &[[usize; 3]], pairs: &[(usize, usize)]) -> Option<(usize, usize)> {
+        let n = tris.iter().flatten().max().map_or(0, |m| m + 1);
+        let mut to = vec![usize::MAX; n];
         for &(x, y) in pairs {
             to[x] = x.min(y);
             to[y] = x.min(y);
         }
         let mut next = 0;
-        for v in 0..5 {
+        for v in 0..n {
             if to[v] == usize::MAX || to[v] == v {
                 to[v] = next;
                 next += 1;
@@ -561,28 +580,59 @@ mod tests {
                 to[v] = to[to[v]];
             }
         }
-        let exact = vec![Point3::int(0, 0, 0); 5];
+        let exact = vec![Point3::int(0, 0, 0); n];
         Merges::of(next, tris, &to, &exact).map(|(m, values)| {
             assert_eq!(values.len(), next);
-            m.collapsed
+            (m.collapsed, m.near.iter().filter(|&&x| x).count())
         })
     }
 
     /// Merging the split vertex with a corner of its edge collapses two triangles and meets the
     /// link condition, and so does merging 0 and 2 (sharing the neighbours 3 and 4, which
-    /// the triangle 043 but no triangle 243 joins). Merging two vertices sharing three
-    /// neighbours (2 and 3), two not joined by an edge (0 and 1), two pairs whose stars meet,
-    /// or two corners of a plain tetrahedron (their common neighbours joined to both) does not.
+    /// the triangle 043 but no triangle 243 joins): every rounded vertex is in the star. Merging
+    /// two vertices sharing three neighbours (2 and 3), two not joined by an edge (0 and 1), or
+    /// two corners of a plain tetrahedron (their common neighbours joined to both) does not.
+    /// On a 6 × 6 torus grid two collapses whose stars (nine rounded vertices each) are apart
+    /// are merges, two whose stars share a vertex are not, though each alone is.
     #[test]
     fn only_independent_collapses_under_the_link_condition_are_merges() {
-        assert_eq!(merges_of(&SPLIT, &[(0, 4)]), Some(2));
-        assert_eq!(merges_of(&SPLIT, &[(1, 4)]), Some(2));
-        assert_eq!(merges_of(&SPLIT, &[(0, 2)]), Some(2));
+        assert_eq!(merges_of(&SPLIT, &[(0, 4)]), Some((2, 4)));
+        assert_eq!(merges_of(&SPLIT, &[(1, 4)]), Some((2, 4)));
+        assert_eq!(merges_of(&SPLIT, &[(0, 2)]), Some((2, 4)));
         assert_eq!(merges_of(&SPLIT, &[(2, 3)]), None);
         assert_eq!(merges_of(&SPLIT, &[(0, 1)]), None);
-        assert_eq!(merges_of(&SPLIT, &[(0, 4), (2, 3)]), None);
         let plain = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [2, 1, 3]];
         assert_eq!(merges_of(&plain, &[(0, 1)]), None);
+        let grid = torus(6);
+        let v = |i: usize, j: usize| 6 * i + j;
+        assert_eq!(merges_of(&grid, &[(v(0, 0), v(1, 0))]), Some((2, 9)));
+        assert_eq!(merges_of(&grid, &[(v(2, 1), v(3, 1))]), Some((2, 9)));
+        let apart = [(v(0, 0), v(1, 0)), (v(3, 3), v(4, 3))];
+        assert_eq!(merges_of(&grid, &apart), Some((4, 18)));
+        let touching = [(v(0, 0), v(1, 0)), (v(2, 1), v(3, 1))];
+        assert_eq!(merges_of(&grid, &touching), None);
+    }
+
+    /// Two boxes sharing only a corner are provable ([`boxes_touching_in_a_corner_are_provable`])
+    /// but not where that vertex, with two corner cycles, is in a collapse's star.
+    #[test]
+    fn a_vertex_with_several_corner_cycles_in_a_collapse_is_not_provable() {
+        let b = boxes(&[([0.0; 3], [1.0; 3]), ([1.0; 3], [2.0; 3])]);
+        let exact = exact_points(&b.points);
+        let corner = (b.points.iter())
+            .position(|p| p.to_f64() == [1.0; 3])
+            .expect("the shared corner");
+        let mut near = vec![false; b.points.len()];
+        assert!(provably_kept(
+            &b,
+            &exact,
+            &Merges {
+                collapsed: 0,
+                near: near.clone()
+            }
+        ));
+        near[corner] = true;
+        assert!(!provably_kept(&b, &exact, &Merges { collapsed: 0, near }));
     }
 
     /// Two boxes sharing only a corner: that vertex has two corner cycles, whose link is

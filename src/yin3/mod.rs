@@ -112,11 +112,13 @@
 //!   result's topology and its complement's: boundedness, Betti numbers, and each glued
 //!   surface's orientation, genus and depth in the Hasse diagram. (Two pieces closer than an ulp
 //!   can round to pieces that touch: still the same surfaces, but their complement's cavities
-//!   merge.) Where no point merged, a sufficient test settles this without the exact structure
-//!   (every edge has two fins, each surface's signed volume is farther from 0 than rounding can
-//!   move it, two surfaces within rounding of each other each have a vertex farther than twice
-//!   the rounding from the other, and at vertices where pieces touch the link's faces in the set
-//!   are the same); otherwise both topologies are computed and compared. Failing that, the
+//!   merge.) A sufficient test settles this without the exact structure (every edge has two
+//!   fins, each surface's signed volume is farther from 0 than rounding can move it, two
+//!   surfaces within rounding of each other each have a vertex farther than twice the rounding
+//!   from the other, and at vertices where pieces touch the link's faces in the set are the
+//!   same) where no point merged, or where each merge of two points is the collapse of an edge
+//!   of one surface that keeps its type (the link condition), away from the other merges and
+//!   from where pieces touch; otherwise both topologies are computed and compared. Failing that, the
 //!   operation returns `Yin3Error::Unrepresentable` — never an invalid set, never a panic in the
 //!   `try_` methods — e.g. for a sliver thinner than an ulp, which rounding would turn inside
 //!   out.
