@@ -213,15 +213,18 @@ impl Merges {
                 pairs.push((first[w], v));
             }
         }
-        let mut with_vertex = vec![Vec::new(); to.len()];
-        for (t, tri) in tris.iter().enumerate() {
-            for &v in tri {
-                with_vertex[v].push(t);
-            }
+        // The triangles at each merged vertex (the `2i`th and `2i + 1`st for the `i`th pair).
+        let mut slot = vec![usize::MAX; to.len()];
+        for (i, &(x, y)) in pairs.iter().enumerate() {
+            (slot[x], slot[y]) = (2 * i, 2 * i + 1);
         }
+        let at = corners_at(tris, 2 * pairs.len(), |v| {
+            Some(slot[v]).filter(|&i| i != usize::MAX)
+        });
+        let with_vertex = |v: usize| at[slot[v]].iter().map(|c| c / 3);
         let neighbours = |v: usize| {
-            let mut n: Vec<usize> = (with_vertex[v].iter())
-                .flat_map(|&t| tris[t])
+            let mut n: Vec<usize> = with_vertex(v)
+                .flat_map(|t| tris[t])
                 .filter(|&w| w != v)
                 .collect();
             n.sort_unstable();
@@ -229,7 +232,7 @@ impl Merges {
             n
         };
         let is_triangle = |[x, y, z]: [usize; 3]| {
-            (with_vertex[x].iter()).any(|&t| tris[t].contains(&y) && tris[t].contains(&z))
+            with_vertex(x).any(|t| tris[t].contains(&y) && tris[t].contains(&z))
         };
         let mut near = vec![false; rounded];
         for &(x, y) in &pairs {
@@ -238,9 +241,7 @@ impl Merges {
                 .filter(|w| ny.binary_search(w).is_ok())
                 .copied()
                 .collect();
-            let at_edge = (with_vertex[x].iter())
-                .filter(|&&t| tris[t].contains(&y))
-                .count();
+            let at_edge = with_vertex(x).filter(|&t| tris[t].contains(&y)).count();
             let [c, d] = common[..] else { return None };
             if at_edge != 2 || is_triangle([x, c, d]) && is_triangle([y, c, d]) {
                 return None;
