@@ -157,11 +157,9 @@
 //! * **Speed.** Exact mode takes the same construction-light meet as float mode wherever
 //!   operands cross, touch only in shared corners and edges, or do not meet (*Meet*), so the
 //!   two modes take about the same time there on the crossing spheres and meshes of
-//!   benches/BENCHMARKS.md (float 0.51–1.26× exact; 2.1× where two points round to one and
-//!   the topologies of the exact and the rounded result are compared), float mode paying for
-//!   its rounding check; where operands share faces or meet otherwise degenerately float mode
-//!   takes the general path, the exact meet and then rounding, at 0.99–1.89× exact mode's
-//!   time.
+//!   benches/BENCHMARKS.md (float 0.44–1.36× exact), float mode paying for its rounding check;
+//!   where operands share faces or meet otherwise degenerately float mode takes the general
+//!   path, the exact meet and then rounding, at 0.96–2.04× exact mode's time.
 
 mod arrange;
 mod betti;
