@@ -154,13 +154,14 @@ fn rounded_complex<N: Num>(
 enum Shown {
     /// Conforming (I1–I3): valid once its windings are (I4). `same` if it has the exact
     /// boundary's very triangles, numbering kept; where [`provably_kept`] also holds, of these
-    /// triangles or of those after the merges it is given, its windings are shown. With two fins per edge the glued surfaces are the edge-connected
-    /// surfaces I4 speaks of; each is embedded and splits space in two, so its own winding
-    /// number beside it is 0 on the side its normals point to if it is positive, −1 if
-    /// negative, and it keeps its orientation and the winding number about it of every other
-    /// surface. So the winding number beside each triangle is the exact boundary's, which is
-    /// valid; and the rounded boundedness, recomputed from the rounded volumes, is the exact
-    /// one (the volume is the integral of the winding number).
+    /// triangles or of those after the merges it is given, its windings are shown. With two
+    /// fins per edge the glued surfaces are the edge-connected surfaces I4 speaks of; each is
+    /// embedded and splits space in two, so its own winding number beside it is 0 on the side
+    /// its normals point to if it is positive, −1 if negative, and it keeps its orientation
+    /// and the winding number about it of every other surface. So the winding number beside
+    /// each triangle is the exact boundary's, which is valid; and the rounded boundedness,
+    /// recomputed from the rounded volumes, is the exact one (the volume is the integral of
+    /// the winding number).
     Conforming { same: bool },
     /// Validated in full; `same` as for `Conforming`.
     Valid { same: bool },

@@ -192,12 +192,12 @@ impl Merges {
 
     /// The merges that took the exact triangles `tris` (points `exact`) to a rounded boundary
     /// of `rounded` vertices, vertex `v` becoming its vertex `to[v]`, with an exact value of
-    /// each rounded vertex (the first of a merged pair's); `None`
-    /// unless every merge is two vertices a, b joined by an edge with exactly two triangles abc
-    /// and abd, whose common neighbours are c and d alone and that are not both corners of
-    /// triangles acd and bcd (the link condition on a closed surface, where [`provably_kept`]
-    /// shows every rounded edge has two fins and the merged vertex one corner cycle), and no
-    /// two merges share a vertex of their stars (so each keeps the condition for the next).
+    /// each rounded vertex (the first of a merged pair's); `None` unless every merge is two
+    /// vertices a, b joined by an edge with exactly two triangles abc and abd, whose common
+    /// neighbours are c and d alone and that are not both corners of triangles acd and bcd (the
+    /// link condition on a closed surface, where [`provably_kept`] shows every rounded edge has
+    /// two fins and the merged vertex one corner cycle), and no two merges share a vertex of
+    /// their stars (so each keeps the condition for the next).
     pub(crate) fn of(
         rounded: usize,
         tris: &[[usize; 3]],
