@@ -258,6 +258,7 @@ fn rounded_set<N: Num>(y: YinSet3<Rational>, ctx: N::Ctx) -> Result<YinSet3<N>, 
 mod tests {
     use super::*;
     use crate::num::Float;
+    use crate::yin3::kept::SPLIT_TETRAHEDRON;
 
     /// A tetrahedron whose edge AB carries a vertex M a third of 2⁻⁶⁰ from A, splitting its two
     /// faces at AB: M rounds to A, the two triangles at AM collapse, and the rounded boundary
@@ -286,15 +287,7 @@ mod tests {
             Point3::new(r(1), r(1), r(2)),
             Point3::new(r(1) + d, r(1), r(1)),
         ];
-        let tris = vec![
-            [0, 2, 4],
-            [4, 2, 1],
-            [0, 4, 3],
-            [4, 1, 3],
-            [0, 3, 2],
-            [1, 2, 3],
-        ];
-        (exact, tris)
+        (exact, SPLIT_TETRAHEDRON.to_vec())
     }
 
     /// The merge above is an edge collapse that keeps the tetrahedron's topology, proven

@@ -265,6 +265,18 @@ impl Merges {
     }
 }
 
+/// The tetrahedron 0123 with a vertex 4 on its edge 01: the triangles of the tests of merges
+/// in rounding.
+#[cfg(test)]
+pub(super) const SPLIT_TETRAHEDRON: [[usize; 3]; 6] = [
+    [0, 2, 4],
+    [4, 2, 1],
+    [0, 4, 3],
+    [4, 1, 3],
+    [0, 3, 2],
+    [1, 2, 3],
+];
+
 /// True if at each of the vertices `pinched` (with several corner cycles; duplicates allowed)
 /// the link term 2 r_p − l_p of `b` is the same on its exact points `exact` and on its rounded
 /// ones ([`Links::term`]); everywhere else r_p = l_p on both. `cycles` are `b`'s 𝒴-cycles.
@@ -536,16 +548,6 @@ mod tests {
         ));
     }
 
-    /// The tetrahedron 0123 with 4 on its edge 01.
-    const SPLIT: [[usize; 3]; 6] = [
-        [0, 2, 4],
-        [4, 2, 1],
-        [0, 4, 3],
-        [4, 1, 3],
-        [0, 3, 2],
-        [1, 2, 3],
-    ];
-
     /// The torus grid of `k` × `k` vertices (i, j) numbered k·i + j, each square
     /// (i, j)–(i + 1, j + 1) cut along that diagonal: the edge (i, j)–(i + 1, j) has the fins at
     /// (i + 1, j + 1) and (i, j − 1) and no other common neighbours.
@@ -597,11 +599,11 @@ mod tests {
     /// are merges, two whose stars share a vertex are not, though each alone is.
     #[test]
     fn only_independent_collapses_under_the_link_condition_are_merges() {
-        assert_eq!(merges_of(&SPLIT, &[(0, 4)]), Some((2, 4)));
-        assert_eq!(merges_of(&SPLIT, &[(1, 4)]), Some((2, 4)));
-        assert_eq!(merges_of(&SPLIT, &[(0, 2)]), Some((2, 4)));
-        assert_eq!(merges_of(&SPLIT, &[(2, 3)]), None);
-        assert_eq!(merges_of(&SPLIT, &[(0, 1)]), None);
+        assert_eq!(merges_of(&SPLIT_TETRAHEDRON, &[(0, 4)]), Some((2, 4)));
+        assert_eq!(merges_of(&SPLIT_TETRAHEDRON, &[(1, 4)]), Some((2, 4)));
+        assert_eq!(merges_of(&SPLIT_TETRAHEDRON, &[(0, 2)]), Some((2, 4)));
+        assert_eq!(merges_of(&SPLIT_TETRAHEDRON, &[(2, 3)]), None);
+        assert_eq!(merges_of(&SPLIT_TETRAHEDRON, &[(0, 1)]), None);
         let plain = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [2, 1, 3]];
         assert_eq!(merges_of(&plain, &[(0, 1)]), None);
         let grid = torus(6);
