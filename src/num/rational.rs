@@ -301,6 +301,19 @@ impl Rational {
         }))
     }
 
+    /// True if the value is an `f64` (a dyadic of at most 53 significant bits in `f64`'s
+    /// range): for a small value, an exact numerator over a power of two, both below 2⁶², so
+    /// in range; for a big one, its nearest `f64` read back.
+    pub(crate) fn is_f64(&self) -> bool {
+        match &self.0 {
+            Repr::Small(n, d) => {
+                let n = n.unsigned_abs();
+                d.count_ones() == 1 && (n == 0 || n.leading_zeros() + n.trailing_zeros() >= 11)
+            }
+            Repr::Big(_) => Rational::from_float(Num::to_f64(self)).as_ref() == Some(self),
+        }
+    }
+
     /// The numerator (lowest terms; carries the sign).
     pub fn numer(&self) -> BigInt {
         match &self.0 {
@@ -967,6 +980,26 @@ mod tests {
             let got = Rational::from_literal(&lit);
             proptest::prop_assert!(got == Rational::from(want.clone()));
             proptest::prop_assert_eq!(got.fraction(), (want.numer().clone(), want.denom().clone()));
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(yinset_testkit::cases(1024)))]
+        /// `is_f64` holds exactly where the value is m·2^e with m odd below 2⁵³ and
+        /// −1074 ≤ e ≤ 1023 − (bits of m − 1): on dyadic values of 1 to 58 significant bits
+        /// across and beyond `f64`'s exponents (small and big), and never on a value over 3.
+        #[test]
+        fn is_f64_holds_exactly_for_the_values_of_f64s(
+            m in 1u64..1 << 58, e in -1140i32..1080, negative in proptest::bool::ANY,
+        ) {
+            let (odd, e) = (m >> m.trailing_zeros(), e + m.trailing_zeros() as i32);
+            let bits = 64 - odd.leading_zeros() as i32;
+            let want = odd < 1 << 53 && e >= -1074 && e + bits <= 1024;
+            let n = BigInt::from(m) * BigInt::from(if negative { -1 } else { 1 });
+            let v = Rational::times_power_of_two(n.clone(), BigInt::from(1), e - m.trailing_zeros() as i32);
+            proptest::prop_assert_eq!(v.is_f64(), want);
+            let thirds = Rational::times_power_of_two(n * 3 + 1, BigInt::from(3), e);
+            proptest::prop_assert!(!thirds.is_f64());
         }
     }
 

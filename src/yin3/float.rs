@@ -16,7 +16,7 @@ use super::validate::{check_windings, conforming_after_moves, revalidate};
 use super::values::{exact_point, exact_points};
 use crate::kernel::Point3;
 use crate::num::{Num, Rational};
-use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
+use foldhash::{HashMap, HashMapExt};
 
 /// The meet of two float sets under the combined context `ctx` (module docs): the transversal
 /// meet where it applies, else the general arrangement's exact meet, rounded.
@@ -79,15 +79,16 @@ pub(crate) fn rounded_brep<N: Num>(b: Brep<Rational>) -> Result<Brep<N>, Yin3Err
 }
 
 /// For each exact point, the exact value of its rounding in `rounded` where that differs from
-/// it (where it moved).
+/// it (where it moved: where it is no `f64`, whose nearest `f64` is itself).
 fn moved<N: Num>(
     rounded: &[Point3<N>],
     exact: &[Point3<Rational>],
 ) -> Vec<Option<Point3<Rational>>> {
+    let is_f64 = |p: &Point3<Rational>| p.x.is_f64() && p.y.is_f64() && p.z.is_f64();
     rounded
         .iter()
         .zip(exact)
-        .map(|(q, p)| Some(exact_point(q)).filter(|v| v != p))
+        .map(|(q, p)| (!is_f64(p)).then(|| exact_point(q)))
         .collect()
 }
 
@@ -179,7 +180,13 @@ fn rounded_boundary<N: Num>(
     exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
 ) -> Result<(Brep<N>, Shown, Merged), Yin3Error> {
-    if rounded.iter().collect::<HashSet<_>>().len() == rounded.len() {
+    // Each rounded point's first index among equal ones: itself unless rounding merged it.
+    let mut first: HashMap<&Point3<N>, usize> = HashMap::with_capacity(rounded.len());
+    let rep: Vec<usize> = (rounded.iter().enumerate())
+        .map(|(i, q)| *first.entry(q).or_insert(i))
+        .collect();
+    if first.len() == rounded.len() {
+        drop(first);
         let flags: Vec<bool> = moved.iter().map(Option::is_some).collect();
         // The rounded points' exact values: those that did not move are the exact points.
         let values = (moved.into_iter().zip(exact))
@@ -205,39 +212,53 @@ fn rounded_boundary<N: Num>(
         revalidate(values, &brep, ()).map_err(|e| unrepresentable(&e))?;
         return Ok((brep, Shown::Valid { same }, None));
     }
-    let mut index: HashMap<Point3<N>, usize> = HashMap::new();
-    let mut points = Vec::new();
-    let mut new = Vec::with_capacity(rounded.len());
-    // The rounded points that a moved point became: every triangle at one is checked.
-    let mut reached = HashSet::new();
-    for (q, m) in rounded.into_iter().zip(&moved) {
-        if m.is_some() {
-            reached.insert(q.clone());
-        }
-        let next = points.len();
-        let i = *index.entry(q.clone()).or_insert(next);
-        if i == next {
-            points.push(q);
-        }
-        new.push(i);
-    }
-    let kept: Vec<[usize; 3]> = tris
-        .iter()
-        .map(|t| t.map(|v| new[v]))
+    drop(first);
+    // The triangles that do not collapse, over the merged points numbered by first use (so
+    // that assembly keeps the numbering), and for each exact point its merged number.
+    let mut to = vec![usize::MAX; rounded.len()];
+    let mut order = Vec::new();
+    let kept: Vec<[usize; 3]> = (tris.iter())
+        .map(|t| t.map(|v| rep[v]))
         .filter(|[p, q, r]| p != q && q != r && r != p)
+        .map(|t| {
+            t.map(|v| {
+                if to[v] == usize::MAX {
+                    to[v] = order.len();
+                    order.push(v);
+                }
+                to[v]
+            })
+        })
         .collect();
     if kept.is_empty() {
         return Err(unrepresentable(&"every triangle collapsed when rounded"));
     }
-    let brep = Brep::assemble(points.clone(), kept).map_err(|e| unrepresentable(&e))?;
-    // Assembly renumbers the distinct rounded points by first use.
-    let at: HashMap<&Point3<N>, usize> = brep.points.iter().zip(0..).collect();
-    let merged = (new.iter().map(|&i| at.get(&points[i]).copied()))
+    // Each exact point's merged number, if a kept triangle uses it.
+    let number = |v: usize| Some(to[rep[v]]).filter(|&i| i != usize::MAX);
+    // The merged points that a moved point became: every triangle at one is checked.
+    let mut flags = vec![false; order.len()];
+    for v in (0..moved.len()).filter(|&v| moved[v].is_some()) {
+        if let Some(i) = number(v) {
+            flags[i] = true;
+        }
+    }
+    let merged = ((0..rep.len()).map(number))
         .collect::<Option<Vec<usize>>>()
-        .and_then(|to| Merges::of(brep.points.len(), &tris, &to, exact));
+        .and_then(|to| Merges::of(order.len(), &tris, &to, exact));
+    // Each merged point's exact value is its first exact point's rounding (`moved`, else that
+    // point itself), which assembly reads instead of converting the rounded point again.
+    let values = (order.iter())
+        .map(|&v| moved[v].clone().unwrap_or_else(|| exact[v].clone()))
+        .collect();
+    let mut slots: Vec<Option<Point3<N>>> = rounded.into_iter().map(Some).collect();
+    let points = (order.iter())
+        .map(|&v| slots[v].take().expect("each merged point once"))
+        .collect();
+    let brep = (Brep::<Rational>::assemble(values, kept))
+        .map_err(|e| unrepresentable(&e))?
+        .with_points(points);
     // The triangles that are left met only in shared corners and edges before they moved, and
     // merging points gave a shared corner only to triangles at a moved point.
-    let flags: Vec<bool> = brep.points.iter().map(|p| reached.contains(p)).collect();
     if conforming_after_moves(&brep.points, &brep.tris, &flags) {
         return Ok((brep, Shown::Conforming { same: false }, merged));
     }
