@@ -19,7 +19,7 @@ pub(crate) struct Fin {
 
 /// Every edge of a closed triangle complex with its fins sorted counterclockwise about the
 /// edge's direction (from its smaller to its larger vertex index).
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub(crate) struct FinTable {
     /// The edges `(a, b)` with `a < b`, in order of first appearance in the triangles.
     pub edges: Vec<(usize, usize)>,
@@ -58,6 +58,16 @@ impl FinTable {
     /// The fins of each edge, in the order of `edges`.
     pub(crate) fn fin_lists(&self) -> impl ExactSizeIterator<Item = &[Fin]> + '_ {
         self.start.windows(2).map(|w| &self.all[w[0]..w[1]])
+    }
+
+    /// True if on `points` — the vertices of the same triangles, moved — the fins of every
+    /// edge turn about it in this table's order (an edge of two fins has one order).
+    pub(crate) fn order_kept<N: Num>(&self, points: &[Point3<N>], ctx: &N::Ctx) -> bool {
+        (self.edges.iter().zip(self.fin_lists())).all(|(&(a, b), fins)| {
+            let mut again = fins.to_vec();
+            sort_about(&points[a], &points[b], &mut again, points, ctx);
+            again == fins
+        })
     }
 
     /// The table of the same triangles each reversed (`[p, q, r]` → `[p, r, q]`), without a

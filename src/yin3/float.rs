@@ -8,6 +8,7 @@
 //! [`super::transversal`], others the general exact meet.
 
 use super::error::Yin3Error;
+use super::fins::FinTable;
 use super::kept::{provably_kept, Merges, Topology};
 use super::meet::general_meet;
 use super::set::{compact, Brep, Repr3, YinSet3};
@@ -39,7 +40,7 @@ pub(crate) fn float_meet<N: Num>(
             let moved = moved(&rounded, &points);
             let exact = || Ok(Topology::of(&Brep::assemble(points.clone(), kept.clone())?));
             return Ok(YinSet3::from_brep(
-                rounded_complex(rounded, moved, &points, kept.clone(), exact)?,
+                rounded_complex(rounded, moved, &points, kept.clone(), None, exact)?,
                 ctx,
             ));
         }
@@ -73,9 +74,14 @@ pub(crate) fn rounded_brep<N: Num>(b: Brep<Rational>) -> Result<Brep<N>, Yin3Err
         // Distinct exact points, each an f64 already: the same boundary, no work to redo.
         return Ok(b.with_points(rounded));
     }
-    rounded_complex(rounded, moved, &b.points, b.tris.clone(), || {
-        Ok(Topology::of(&b))
-    })
+    rounded_complex(
+        rounded,
+        moved,
+        &b.points,
+        b.tris.clone(),
+        Some(&b.table),
+        || Ok(Topology::of(&b)),
+    )
 }
 
 /// For each exact point, the exact value of its rounding in `rounded` where that differs from
@@ -105,7 +111,8 @@ fn rounded_points<N: Num>(points: &[Point3<Rational>]) -> Result<Vec<Point3<N>>,
 
 /// The boundary of a valid set — the triangles `tris` over the exact points `exact`, compact
 /// and conforming, as the validator would rebuild it — with each point replaced by its rounding
-/// in `rounded` (`moved`: its exact value where it differs). If none moved, it is the exact
+/// in `rounded` (`moved`: its exact value where it differs; `exact_table`: the exact
+/// boundary's fin table where it was built). If none moved, it is the exact
 /// boundary. Vertices that round to one point are merged, and triangles that collapse to a
 /// segment or a point dropped (each takes a pair of opposite fins off an edge, so closed
 /// surfaces stay closed). Then only the triangles at moved points are checked against their
@@ -120,6 +127,7 @@ fn rounded_complex<N: Num>(
     moved: Vec<Option<Point3<Rational>>>,
     exact: &[Point3<Rational>],
     tris: Vec<[usize; 3]>,
+    exact_table: Option<&FinTable>,
     keep: impl FnOnce() -> Result<Topology, Yin3Error>,
 ) -> Result<Brep<N>, Yin3Error> {
     if moved.iter().all(Option::is_none) {
@@ -132,15 +140,18 @@ fn rounded_complex<N: Num>(
         Shown::Conforming { same: true } | Shown::Valid { same: true }
     );
     let proven = match merges {
-        _ if same_triangles => provably_kept(&brep, exact, &Merges::none()),
-        Some((merges, values)) => provably_kept(&brep, &values, &merges),
+        _ if same_triangles => provably_kept(&brep, exact, exact_table, &Merges::none()),
+        Some((merges, values)) => provably_kept(&brep, &values, None, &merges),
         None => false,
     };
+    // The windings of a conforming boundary are shown where it is proven with two fins at
+    // every edge ([`Shown::Conforming`]), and checked otherwise.
+    let two_fins = || brep.table.fin_lists().all(|f| f.len() == 2);
+    if matches!(shown, Shown::Conforming { .. }) && !(proven && two_fins()) {
+        check_windings(&brep.exact_values(), &()).map_err(|e| unrepresentable(&e))?;
+    }
     if proven {
         return Ok(brep);
-    }
-    if let Shown::Conforming { .. } = shown {
-        check_windings(&brep.exact_values(), &()).map_err(|e| unrepresentable(&e))?;
     }
     let (keep, got) = (keep()?, Topology::of(&brep));
     if got != keep {
@@ -155,8 +166,8 @@ fn rounded_complex<N: Num>(
 enum Shown {
     /// Conforming (I1–I3): valid once its windings are (I4). `same` if it has the exact
     /// boundary's very triangles, numbering kept; where [`provably_kept`] also holds, of these
-    /// triangles or of those after the merges it is given, its windings are shown. With two
-    /// fins per edge the glued surfaces are the edge-connected surfaces I4 speaks of; each is
+    /// triangles or of those after the merges it is given, and every edge has two fins, its
+    /// windings are shown. With two fins per edge the glued surfaces are the edge-connected surfaces I4 speaks of; each is
     /// embedded and splits space in two, so its own winding number beside it is 0 on the side
     /// its normals point to if it is positive, −1 if negative, and it keeps its orientation
     /// and the winding number about it of every other surface. So the winding number beside
@@ -319,7 +330,7 @@ mod tests {
         let rounded: Vec<Point3<Float>> = rounded_points(&exact).unwrap();
         let moved = moved(&rounded, &exact);
         let keep = || -> Result<Topology, Yin3Error> { panic!("the exact topology was computed") };
-        let brep = rounded_complex(rounded, moved, &exact, tris, keep).unwrap();
+        let brep = rounded_complex(rounded, moved, &exact, tris, None, keep).unwrap();
         assert_eq!((brep.points.len(), brep.tris.len()), (4, 4));
     }
 }
