@@ -112,13 +112,16 @@
 //!   result's topology and its complement's: boundedness, Betti numbers, and each glued
 //!   surface's orientation, genus and depth in the Hasse diagram. (Two pieces closer than an ulp
 //!   can round to pieces that touch: still the same surfaces, but their complement's cavities
-//!   merge.) A sufficient test settles this without the exact structure (every edge has two
-//!   fins, each surface's signed volume is farther from 0 than rounding can move it, two
-//!   surfaces within rounding of each other each have a vertex farther than twice the rounding
-//!   from the other, and at vertices where pieces touch the link's faces in the set are the
-//!   same) where no point merged, or where each merge of two points is the collapse of an edge
-//!   of one surface that keeps its type (the link condition), away from the other merges and
-//!   from where pieces touch; otherwise both topologies are computed and compared. Failing that, the
+//!   merge.) A sufficient test settles this without the exact structure (the fins of every
+//!   edge turn about it in the exact order — always, with two fins —, each glued surface's
+//!   signed volume, the set's and, where an edge has more fins, the complement's, is farther
+//!   from 0 than rounding can move it, two surfaces within rounding of each other each have a
+//!   vertex farther than twice the rounding from the other, and at vertices where pieces touch
+//!   the link's faces in the set are the same; with more than two fins at an edge the windings
+//!   are checked by rays) where no point merged, or where each merge of two points is the
+//!   collapse of an edge of one surface that keeps its type (the link condition), away from
+//!   the other merges and from where pieces touch, with two fins at every edge; otherwise both
+//!   topologies are computed and compared. Failing that, the
 //!   operation returns `Yin3Error::Unrepresentable` — never an invalid set, never a panic in the
 //!   `try_` methods — e.g. for a sliver thinner than an ulp, which rounding would turn inside
 //!   out.
@@ -157,9 +160,9 @@
 //! * **Speed.** Exact mode takes the same construction-light meet as float mode wherever
 //!   operands cross, touch only in shared corners and edges, or do not meet (*Meet*), so the
 //!   two modes take about the same time there on the crossing spheres and meshes of
-//!   benches/BENCHMARKS.md (float 0.44–1.36× exact), float mode paying for its rounding check;
+//!   benches/BENCHMARKS.md (float 0.35–1.26× exact), float mode paying for its rounding check;
 //!   where operands share faces or meet otherwise degenerately float mode takes the general
-//!   path, the exact meet and then rounding, at 0.96–2.04× exact mode's time.
+//!   path, the exact meet and then rounding, at 0.97–1.81× exact mode's time.
 
 mod arrange;
 mod betti;
