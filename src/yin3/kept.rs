@@ -524,11 +524,11 @@ mod tests {
         // The apexes of (1,1,0)'s face on y = 1 at the edge x = y = 1, z in [0, 1], moved
         // between the fins of (0,0,0)'s faces: the order about that edge changes.
         let mut exact = exact_points(&b.points);
-        for v in 0..exact.len() {
-            if let [2.0, 1.0, z] = b.points[v].to_f64() {
+        for (e, q) in exact.iter_mut().zip(&b.points) {
+            if let [2.0, 1.0, z] = q.to_f64() {
                 if z <= 1.0 {
                     let p = Point3::new(Float::new(0.5), Float::new(0.25), Float::new(z));
-                    exact[v] = exact_point(&p);
+                    *e = exact_point(&p);
                 }
             }
         }
