@@ -167,13 +167,13 @@ enum Shown {
     /// Conforming (I1–I3): valid once its windings are (I4). `same` if it has the exact
     /// boundary's very triangles, numbering kept; where [`provably_kept`] also holds, of these
     /// triangles or of those after the merges it is given, and every edge has two fins, its
-    /// windings are shown. With two fins per edge the glued surfaces are the edge-connected surfaces I4 speaks of; each is
-    /// embedded and splits space in two, so its own winding number beside it is 0 on the side
-    /// its normals point to if it is positive, −1 if negative, and it keeps its orientation
-    /// and the winding number about it of every other surface. So the winding number beside
-    /// each triangle is the exact boundary's, which is valid; and the rounded boundedness,
-    /// recomputed from the rounded volumes, is the exact one (the volume is the integral of
-    /// the winding number).
+    /// windings are shown. With two fins per edge the glued surfaces are the edge-connected
+    /// surfaces I4 speaks of; each is embedded and splits space in two, so its own winding
+    /// number beside it is 0 on the side its normals point to if it is positive, −1 if
+    /// negative, and it keeps its orientation and the winding number about it of every other
+    /// surface. So the winding number beside each triangle is the exact boundary's, which is
+    /// valid; and the rounded boundedness, recomputed from the rounded volumes, is the exact
+    /// one (the volume is the integral of the winding number).
     Conforming { same: bool },
     /// Validated in full; `same` as for `Conforming`.
     Valid { same: bool },
@@ -192,12 +192,14 @@ fn rounded_boundary<N: Num>(
     tris: Vec<[usize; 3]>,
 ) -> Result<(Brep<N>, Shown, Merged), Yin3Error> {
     // Each rounded point's first index among equal ones: itself unless rounding merged it.
-    let mut first: HashMap<&Point3<N>, usize> = HashMap::with_capacity(rounded.len());
-    let rep: Vec<usize> = (rounded.iter().enumerate())
-        .map(|(i, q)| *first.entry(q).or_insert(i))
-        .collect();
-    if first.len() == rounded.len() {
-        drop(first);
+    let (rep, distinct) = {
+        let mut first: HashMap<&Point3<N>, usize> = HashMap::with_capacity(rounded.len());
+        let rep: Vec<usize> = (rounded.iter().enumerate())
+            .map(|(i, q)| *first.entry(q).or_insert(i))
+            .collect();
+        (rep, first.len())
+    };
+    if distinct == rounded.len() {
         let flags: Vec<bool> = moved.iter().map(Option::is_some).collect();
         // The rounded points' exact values: those that did not move are the exact points.
         let values = (moved.into_iter().zip(exact))
@@ -223,7 +225,6 @@ fn rounded_boundary<N: Num>(
         revalidate(values, &brep, ()).map_err(|e| unrepresentable(&e))?;
         return Ok((brep, Shown::Valid { same }, None));
     }
-    drop(first);
     // The triangles that do not collapse, over the merged points numbered by first use (so
     // that assembly keeps the numbering), and for each exact point its merged number.
     let mut to = vec![usize::MAX; rounded.len()];

@@ -152,16 +152,9 @@ pub(crate) fn provably_kept<N: Num>(
         return false;
     };
     let set: Vec<&[usize]> = b.surfaces.iter().map(|s| &s.triangles[..]).collect();
-    let kept = |surfaces: &[&[usize]]| surfaces_kept(&p, &b.tris, surfaces, merges, moved);
     // With more than two fins at an edge the complement's glued surfaces may not be the set's.
-    kept(&set)
-        && (!many
-            || kept(
-                &complement_surfaces(b)
-                    .iter()
-                    .map(|s| &s[..])
-                    .collect::<Vec<_>>(),
-            ))
+    surfaces_kept(&p, &b.tris, &set, merges, moved)
+        && (!many || surfaces_kept(&p, &b.tris, &complement_surfaces(b), merges, moved))
         && links_kept(b, exact, pinched, cycles)
 }
 
@@ -202,25 +195,25 @@ fn complement_surfaces<N: Num>(b: &Brep<N>) -> Vec<Vec<usize>> {
 /// True if the glued `surfaces` (each its triangles, of `tris` over the scaled rounded points
 /// `p`, which moved by up to `moved` from the exact ones) keep their orientations and which lie
 /// inside which ([`provably_kept`]).
-fn surfaces_kept(
+fn surfaces_kept<S: AsRef<[usize]>>(
     p: &[[f64; 3]],
     tris: &[[usize; 3]],
-    surfaces: &[&[usize]],
+    surfaces: &[S],
     merges: &Merges,
     moved: f64,
 ) -> bool {
     let boxes: Vec<[[f64; 3]; 2]> = (surfaces.iter())
-        .map(|s| corners_box(p, s.iter().flat_map(|&t| tris[t])))
+        .map(|s| corners_box(p, s.as_ref().iter().flat_map(|&t| tris[t])))
         .collect();
     // A difference of f64s above 4·moved is, exactly, above 2·moved.
     let gap = 4.0 * moved;
     let near: Vec<OnceCell<Near>> = surfaces.iter().map(|_| OnceCell::new()).collect();
-    let near = |s: usize| near[s].get_or_init(|| Near::of(p, tris, surfaces[s]));
+    let near = |s: usize| near[s].get_or_init(|| Near::of(p, tris, surfaces[s].as_ref()));
     close_pairs(&boxes, gap)
         .iter()
         .all(|&(s, t)| witnessed(p, near(s), near(t), gap) && witnessed(p, near(t), near(s), gap))
         && surfaces.iter().zip(&boxes).all(|(s, bx)| {
-            let tris = s.iter().map(|&t| tris[t]);
+            let tris = s.as_ref().iter().map(|&t| tris[t]);
             volume_sign_kept(p, tris, merges.collapsed, bx, moved)
         })
 }
@@ -570,9 +563,8 @@ mod tests {
         let b = grid(1e-13);
         let set: Vec<&[usize]> = b.surfaces.iter().map(|s| &s.triangles[..]).collect();
         let complement = complement_surfaces(&b);
-        let complement: Vec<&[usize]> = complement.iter().map(|s| &s[..]).collect();
         assert_eq!((set.len(), complement.len()), (2, 2));
-        assert!(complement.iter().any(|c| !set.contains(c)));
+        assert!(complement.iter().any(|c| !set.contains(&&c[..])));
         let (p, moved) = scaled(&b.points).expect("coordinates off 0");
         assert!(surfaces_kept(&p, &b.tris, &set, &Merges::none(), moved));
         assert!(!surfaces_kept(
