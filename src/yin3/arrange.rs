@@ -1,20 +1,24 @@
 //! The arrangement of triangles against each other (seed 004 steps 1–2; yin3 docs:
-//! *Triangle–triangle*, *Re-triangulation*): every contact of two triangles is computed exactly,
-//! every contact point is given to every triangle that contains it, and each triangle that received
-//! points or cut segments is re-triangulated in its plane. Because a triangle receives *every*
-//! contact point lying on it, two triangles that share a segment split it at the same points: the
-//! pieces form a conforming complex.
+//! *Triangle–triangle*, *Re-triangulation*): every contact of two triangles is computed exactly
+//! (a meet's pairs first by name where [`Named`] settles them), every contact point is given to
+//! every triangle that contains it, and each triangle that received points or cut segments is
+//! re-triangulated in its plane. Because a triangle receives *every* contact point lying on it,
+//! two triangles that share a segment split it at the same points: the pieces form a conforming
+//! complex.
 
 use super::bvh::Bvh;
+use super::corners::{Corners, F64Corners, RationalCorners};
 use super::geom::{f64_box, in_triangle3, Chart};
 use super::locate::TriBoxes;
+use super::named::{Named, Settled};
 use super::tri::{apart_across, corners_after, intersect_with, meet_only_at};
 use super::triangulate::{triangulate, TriangulateError};
+use super::values::exact_points;
 use crate::kernel::{orient, orient3d, Point, Point3};
-use crate::num::Num;
+use crate::num::{Num, Rational};
 use foldhash::HashMap;
 use rstar::AABB;
-use smallvec::SmallVec;
+use smallvec::{smallvec, SmallVec};
 use std::cell::OnceCell;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
@@ -123,11 +127,43 @@ pub(crate) struct Arrangement {
     pub boxes: [TriBoxes; 2],
 }
 
-/// The arrangement of the soup's triangles (`soup.points` gains the contact points).
+/// The segments a triangle is cut along by one contact, as pairs of the soup's points.
+type Cuts = SmallVec<[(usize, usize); 3]>;
+
+/// The arrangement of the soup's triangles (`soup.points` gains the contact points), every
+/// contact constructed.
 pub(crate) fn arrange<N: Num>(
     soup: &mut Soup<N>,
     pairs: Pairs,
     ctx: &N::Ctx,
+) -> Result<Arrangement, ArrangeError<N>> {
+    arrange_on::<N, F64Corners>(soup, pairs, ctx, None)
+}
+
+/// The arrangement of an exact meet's soup ([`Pairs::Across`]) whose pairs are first
+/// classified as the transversal meet does ([`Named`]), on the input vertices' `f64`s where
+/// each is one, and constructed only where that does not settle them.
+pub(crate) fn arrange_named<N: Num>(
+    soup: &mut Soup<N>,
+    ctx: &N::Ctx,
+) -> Result<Arrangement, ArrangeError<N>> {
+    debug_assert!(N::EXACT, "named points are exact");
+    let exact = exact_points(&soup.points);
+    let is_f64 = |p: &Point3<Rational>| p.x.is_f64() && p.y.is_f64() && p.z.is_f64();
+    if exact.iter().all(is_f64) {
+        let f64s = F64Corners(exact.iter().map(Point3::to_f64).collect());
+        arrange_on(soup, Pairs::Across, ctx, Some(f64s))
+    } else {
+        arrange_on(soup, Pairs::Across, ctx, Some(RationalCorners::new(exact)))
+    }
+}
+
+/// [`arrange`], with the pairs classified on the input vertices `named` first where given.
+fn arrange_on<N: Num, C: Corners>(
+    soup: &mut Soup<N>,
+    pairs: Pairs,
+    ctx: &N::Ctx,
+    named: Option<C>,
 ) -> Result<Arrangement, ArrangeError<N>> {
     let n = soup.tris.len();
     let group: Vec<usize> = (0..n)
@@ -167,24 +203,47 @@ pub(crate) fn arrange<N: Num>(
     let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
     // Each triangle's normal, made once where a pair needs it.
     let normals: Vec<OnceCell<Point3<N>>> = (0..n).map(|_| OnceCell::new()).collect();
-    for (i, j) in meeting {
-        if let Some(shared) = shared_only(&soup.points, soup.tris[i], soup.tris[j], ctx) {
-            contact.extend(shared);
-            continue;
-        }
-        let (t, s) = (soup.corners(i), soup.corners(j));
-        let Some(c) = intersect_with(t, s, [&normals[i], &normals[j]], ctx) else {
-            continue;
+    let mut named = named.map(|p| Named::new(p, soup, &meeting));
+    for (k, (i, j)) in meeting.into_iter().enumerate() {
+        // The contact's points in the soup, and the segments each triangle is cut along.
+        let (ids, cut): (SmallVec<[usize; 6]>, [Cuts; 2]) = match named
+            .as_mut()
+            .map_or(Settled::Open, |n| n.settled(k, soup))
+        {
+            Settled::Apart => continue,
+            Settled::Touch(at) => {
+                contact.extend(at);
+                continue;
+            }
+            Settled::Cross([p, q]) if p == q => (smallvec![p], Default::default()),
+            Settled::Cross([p, q]) => (smallvec![p, q], [smallvec![(p, q)], smallvec![(p, q)]]),
+            Settled::Open => {
+                if let Some(shared) = shared_only(&soup.points, soup.tris[i], soup.tris[j], ctx) {
+                    contact.extend(shared);
+                    continue;
+                }
+                let (t, s) = (soup.corners(i), soup.corners(j));
+                let Some(c) = intersect_with(t, s, [&normals[i], &normals[j]], ctx) else {
+                    continue;
+                };
+                if c.interiors_meet && pairs == Pairs::All {
+                    return Err(ArrangeError::Clash {
+                        a: i,
+                        b: j,
+                        coplanar: c.coplanar,
+                        point: c.points[0].clone(),
+                    });
+                }
+                if c.coplanar && c.interiors_meet {
+                    coplanar[i].push(j);
+                    coplanar[j].push(i);
+                }
+                let ids: SmallVec<[usize; 6]> = c.points.iter().map(|p| soup.intern(p)).collect();
+                let cut = [&c.cuts_t, &c.cuts_s]
+                    .map(|cuts| cuts.iter().map(|&(p, q)| (ids[p], ids[q])).collect());
+                (ids, cut)
+            }
         };
-        if c.interiors_meet && pairs == Pairs::All {
-            return Err(ArrangeError::Clash {
-                a: i,
-                b: j,
-                coplanar: c.coplanar,
-                point: c.points[0].clone(),
-            });
-        }
-        let ids: SmallVec<[usize; 6]> = c.points.iter().map(|p| soup.intern(p)).collect();
         for &v in &ids {
             contact.insert(v);
             for t in [i, j] {
@@ -193,12 +252,9 @@ pub(crate) fn arrange<N: Num>(
                 }
             }
         }
-        if c.coplanar && c.interiors_meet {
-            coplanar[i].push(j);
-            coplanar[j].push(i);
-        }
-        cuts[i].extend(c.cuts_t.iter().map(|&(p, q)| (ids[p], ids[q])));
-        cuts[j].extend(c.cuts_s.iter().map(|&(p, q)| (ids[p], ids[q])));
+        let [cut_i, cut_j] = cut;
+        cuts[i].extend(cut_i);
+        cuts[j].extend(cut_j);
     }
     // Every contact point goes to every triangle containing it: the hierarchy of the points'
     // boxes walked with the triangles'.

@@ -25,11 +25,24 @@ pub(super) enum End {
     /// other.
     Pierce(Edge, usize),
     /// Where an edge of operand 0 crosses an edge of operand 1 inside both, with a triangle of
-    /// the second edge (global index), through whose plane the first edge passes there.
+    /// one edge (global index) through whose plane the other edge passes there: of the second
+    /// edge, but in [`Contact::Along`] where the first lies in the second's plane.
     Edges(Edge, Edge, usize),
     /// A corner of operand 0 (global index) equal to a corner of operand 1.
     Corner(usize, usize),
     /// A vertex of one operand (global index) inside a triangle (global index) of the other.
+    Vertex(usize, usize),
+}
+
+/// A point where the boundaries meet, by what defines it ([`End`]; the triangle through which
+/// two edges cross is left out: any of the second edge's serves).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) enum Site {
+    /// An edge through a triangle's interior.
+    Pierce(Edge, usize),
+    /// An edge of operand 0 through an edge of operand 1.
+    Edges(Edge, Edge),
+    /// A vertex inside a triangle (an input point: nothing to construct).
     Vertex(usize, usize),
 }
 
@@ -45,8 +58,13 @@ pub(super) enum Contact {
     /// Meeting only in a shared corner or a shared edge: the pairs of equal corners (t's, s's;
     /// one pair twice for a corner).
     Touch([[usize; 2]; 2]),
-    /// Meeting otherwise (overlapping in a plane, an edge on the other's plane, a vertex on an
-    /// edge of the other, a shared corner with a coplanar edge or face): not handled here.
+    /// An edge of one lying on the other's plane, through the other along the segment between
+    /// two ends ([`along`]): membership need not flip across it, so the transversal meet
+    /// declines it; an arrangement cuts both triangles along it.
+    Along([End; 2]),
+    /// Meeting otherwise (overlapping in a plane, an edge on the other's plane at a vertex or
+    /// an edge of the other, a vertex on an edge of the other, a shared corner with a coplanar
+    /// edge or face): not handled here.
     Degenerate,
 }
 
@@ -218,7 +236,7 @@ fn on_plane(
 ) -> Contact {
     let (Some(t_ends), Some(s_ends)) = (line_ends(t, t_sides, si), line_ends(s, s_sides, ti))
     else {
-        return Contact::Degenerate;
+        return along(p, (ti, t), (si, s), [s_sides, t_sides]);
     };
     let mut ends: SmallVec<[End; 4]> = SmallVec::new();
     for (mine, host) in [(&s_ends, t), (&t_ends, s)] {
@@ -251,6 +269,61 @@ fn on_plane(
         [] => Contact::Apart,
         [x @ (End::Edges(..) | End::Vertex(..))] => Contact::Cross([x, x]),
         [x, y] => Contact::Cross([x, y]),
+        _ => Contact::Degenerate,
+    }
+}
+
+/// Triangles `t` and `s` sharing no corner (`sides` as in [`touch`]), one with an edge ab on
+/// the other's plane and its third corner c off it, the other (the host) with no vertex on the
+/// first's plane. They meet in the part of ab inside the host, found in the host's plane from
+/// orientations against c: its ends are a or b strictly inside the host ([`End::Vertex`]) and
+/// the points where ab crosses the host's edges ([`End::Edges`], constructed where the host's
+/// edge pierces the plane of ab's triangle). A vertex on the line of an edge of the other,
+/// or an edge on the plane in both, is degenerate.
+fn along(
+    p: &impl Corners,
+    (ti, t): (usize, [usize; 3]),
+    (si, s): (usize, [usize; 3]),
+    [s_sides, t_sides]: [&[Ordering; 3]; 2],
+) -> Contact {
+    let on = |sides: &[Ordering; 3]| sides.iter().filter(|&&o| o == Equal).count();
+    // The triangle with the edge, whether it is operand 0's, its sides, and the host.
+    let (mine, first, sides, host) = match (on(t_sides), on(s_sides)) {
+        (2, 0) => ((ti, t), true, t_sides, s),
+        (0, 2) => ((si, s), false, s_sides, t),
+        _ => return Contact::Degenerate,
+    };
+    let k = (0..3)
+        .find(|&k| sides[k] != Equal)
+        .expect("one corner off the plane");
+    let tri = mine.1;
+    let (c, a, b) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
+    let turn = |x: usize, y: usize, z: usize| p.orient3d([x, y, z, c]);
+    let host_turn = turn(host[0], host[1], host[2]);
+    let [at_a, at_b] = [a, b].map(|v| [0, 1, 2].map(|j| turn(host[j], host[(j + 1) % 3], v)));
+    let line = host.map(|h| turn(a, b, h));
+    if at_a.contains(&Equal) || at_b.contains(&Equal) || line.contains(&Equal) {
+        return Contact::Degenerate;
+    }
+    let host_index = if first { si } else { ti };
+    let mut ends: SmallVec<[End; 4]> = SmallVec::new();
+    for (v, at) in [(a, at_a), (b, at_b)] {
+        if at.iter().all(|&o| o == host_turn) {
+            ends.push(End::Vertex(v, host_index));
+        }
+    }
+    for j in 0..3 {
+        if line[j] != line[(j + 1) % 3] && at_a[j] != at_b[j] {
+            let (e, f) = (key(a, b), key(host[j], host[(j + 1) % 3]));
+            ends.push(match first {
+                true => End::Edges(e, f, mine.0),
+                false => End::Edges(f, e, mine.0),
+            });
+        }
+    }
+    match ends[..] {
+        [] => Contact::Apart,
+        [x, y] => Contact::Along([x, y]),
         _ => Contact::Degenerate,
     }
 }
@@ -402,6 +475,40 @@ mod tests {
             contact_of(t, [[0.0; 3], [1.0, 1.0, 0.0], [1.0, 1.0, -1.0]]),
             Contact::Degenerate
         ));
+    }
+
+    /// An edge of t on s's plane (z = 0, s the triangle x, y ≥ −1, x + y ≤ 2): they meet
+    /// along its part inside s, ended by its corners inside s and by its crossings with s's
+    /// edges (constructed through t's plane, t being the first edge's triangle), also with
+    /// the roles of the operands swapped; a corner on the line of s's edge is degenerate, and
+    /// an edge beside s misses it.
+    #[test]
+    fn an_edge_on_the_others_plane_meets_it_along_its_part_inside() {
+        let s = [[-1.0, -1.0, 0.0], [3.0, -1.0, 0.0], [-1.0, 3.0, 0.0]];
+        let t = |x0: f64, x1: f64| [[x0, 0.0, 0.0], [x1, 0.0, 0.0], [0.5, 0.0, 1.0]];
+        let along = |t, s| match contact_of(t, s) {
+            Contact::Along(ends) => ends,
+            other => panic!("not along: {other:?}"),
+        };
+        assert_eq!(
+            along(t(0.0, 1.0), s),
+            [End::Vertex(0, 1), End::Vertex(1, 1)]
+        );
+        assert_eq!(
+            along(t(0.0, 5.0), s),
+            [End::Vertex(0, 1), End::Edges((0, 1), (4, 5), 0)]
+        );
+        assert_eq!(
+            along(t(-2.0, 5.0), s),
+            [End::Edges((0, 1), (4, 5), 0), End::Edges((0, 1), (3, 5), 0)]
+        );
+        // s first: its edge (points 0–1 now) crosses t's edge 3–4 through t's plane.
+        assert_eq!(
+            along(s, t(0.0, 5.0)),
+            [End::Vertex(3, 0), End::Edges((1, 2), (3, 4), 1)]
+        );
+        assert!(matches!(contact_of(t(-1.0, 1.0), s), Contact::Degenerate));
+        assert!(matches!(contact_of(t(5.0, 6.0), s), Contact::Apart));
     }
 
     /// Triangles whose straddling edges cross: t (in z = 0) meets the x-axis in [0, 1], its

@@ -92,7 +92,7 @@ fn assembled<N: Num, M: Num>(
 pub(super) mod tests {
     use super::*;
     use crate::kernel::orient3d;
-    use crate::yin3::meet::general_meet;
+    use crate::yin3::meet::constructed_meet;
     use num_bigint::BigInt;
     use rand::{RngExt, SeedableRng};
     use std::cmp::Ordering;
@@ -129,7 +129,10 @@ pub(super) mod tests {
 
     /// A tetrahedron in [0, 2]³ with each corner on the grid of 1/d for a d of `ds`, faces
     /// outward; `None` if flat.
-    fn tetrahedron_over(rng: &mut rand::rngs::StdRng, ds: &[i64]) -> Option<YinSet3<Rational>> {
+    pub(in crate::yin3) fn tetrahedron_over(
+        rng: &mut rand::rngs::StdRng,
+        ds: &[i64],
+    ) -> Option<YinSet3<Rational>> {
         let mut corner = || {
             let d = ds[rng.random_range(0..ds.len())];
             let mut c = || rng.random_range(0..=2 * d);
@@ -165,7 +168,7 @@ pub(super) mod tests {
                 let off = usize::from(common_grid(a.points.iter().chain(&b.points)).is_none());
                 cases[off] += 1;
                 if let Some(meet) = exact_transversal_meet([x, &y], [a, b], ()) {
-                    assert_eq!(meet.expect("an exact meet"), general_meet(x, &y));
+                    assert_eq!(meet.expect("an exact meet"), constructed_meet(x, &y));
                     taken[off] += 1;
                 }
             }
@@ -197,7 +200,7 @@ pub(super) mod tests {
         let breps = [a.brep().expect("a cube"), far.brep().expect("a box")];
         assert_eq!(common_grid(breps.iter().flat_map(|b| &b.points)), None);
         let meet = exact_transversal_meet([&a, &far], breps, ()).expect("no degenerate contact");
-        assert_eq!(meet.expect("an exact meet"), general_meet(&a, &far));
+        assert_eq!(meet.expect("an exact meet"), constructed_meet(&a, &far));
         // Off every grid too: boxes with sides 1/p, 1/q, 1/7 (p, q about 2⁴⁰) sharing a face.
         let (p, q) = (1_099_511_627_791, 1_099_511_627_689);
         let at = |x: i64| {

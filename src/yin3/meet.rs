@@ -4,7 +4,7 @@
 //! the other (coincident pieces: one copy if equally oriented, none if opposite), and paste the
 //! kept pieces into glued surfaces.
 
-use super::arrange::{arrange, Arrangement, Pairs, Soup};
+use super::arrange::{arrange, arrange_named, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
 use super::geom::{piece_in_triangle2, Chart, Triangle2};
 use super::locate::winding;
@@ -30,22 +30,47 @@ enum Side {
     Outside,
 }
 
-/// The meet by the general arrangement alone, never by the transversal one: where that one
-/// declined the operands' values, and the oracle of its tests, float and exact.
+/// The meet by the general arrangement alone, never by the transversal one: float mode's
+/// where that one declined the operands' values.
 pub(crate) fn general_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N> {
+    arranged_meet(x, y, N::EXACT)
+}
+
+/// The meet by the general arrangement with every contact constructed: the oracle of the
+/// tests of the transversal meet and of [`Named`](super::named::Named), float and exact.
+#[cfg(test)]
+pub(crate) fn constructed_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N> {
+    arranged_meet(x, y, false)
+}
+
+/// The meet by the general arrangement, its pairs first classified by name if `named`.
+fn arranged_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>, named: bool) -> YinSet3<N> {
     match (x.brep(), y.brep()) {
-        (Some(a), Some(b)) => meet_in(a, b, N::combine_ctx(x.ctx, y.ctx)).expect("an exact meet"),
+        (Some(a), Some(b)) => {
+            meet_with(a, b, N::combine_ctx(x.ctx, y.ctx), named).expect("an exact meet")
+        }
         _ => x.meet(y),
     }
 }
 
 /// The meet of two sets with the boundaries `a` and `b` whose boxes meet where both are
 /// bounded, computed with the predicates of `ctx` (MRS-a..d in 3D); an error if the
-/// arrangement or the kept pieces are inconsistent (never in exact mode).
+/// arrangement or the kept pieces are inconsistent (never in exact mode). Exact sets' pairs
+/// are classified by name first ([`arrange_named`]).
 pub(super) fn meet_in<N: Num>(
     a: &Brep<N>,
     b: &Brep<N>,
     ctx: N::Ctx,
+) -> Result<YinSet3<N>, Yin3Error> {
+    meet_with(a, b, ctx, N::EXACT)
+}
+
+/// [`meet_in`], with the pairs classified by name first if `named` (exact sets only).
+fn meet_with<N: Num>(
+    a: &Brep<N>,
+    b: &Brep<N>,
+    ctx: N::Ctx,
+    named: bool,
 ) -> Result<YinSet3<N>, Yin3Error> {
     let mut soup = Soup::new();
     for (operand, brep) in [a, b].into_iter().enumerate() {
@@ -53,7 +78,11 @@ pub(super) fn meet_in<N: Num>(
             soup.push(brep.corners(t), operand as u8);
         }
     }
-    let arrangement = arrange(&mut soup, Pairs::Across, &ctx).map_err(|e| {
+    let arrangement = match named {
+        true => arrange_named(&mut soup, &ctx),
+        false => arrange(&mut soup, Pairs::Across, &ctx),
+    };
+    let arrangement = arrangement.map_err(|e| {
         Yin3Error::Internal(format!(
             "the arrangement of a meet's operands failed: {e:?}"
         ))

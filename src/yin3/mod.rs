@@ -41,9 +41,12 @@
 //!   edge on a face) conforming; then I2, I3 (an odd fin count means an open surface,
 //!   non-alternating fins crossing sheets) and I4 (one ray per edge-connected component) are
 //!   checked. Errors name the face or edge.
-//! * **Triangle–triangle** (seed 004 step 1): box pairs by sweep and prune, then each
-//!   non-coplanar pair by the signs of each triangle's corners against the other's plane and the
-//!   overlap of the two clipped intervals on the planes' line; coplanar pairs in the plane's
+//! * **Triangle–triangle** (seed 004 step 1): box pairs by sweep and prune. A meet's pairs are
+//!   first classified from exact orientations of the input vertices as the transversal meet
+//!   does (*How the exact result is found* below; also an edge on the other's plane, decided in
+//!   that plane against the edge's third corner), each end named and constructed once; every
+//!   other pair by the signs of each triangle's corners against the other's plane and the
+//!   overlap of the two clipped intervals on the planes' line, coplanar pairs in the plane's
 //!   chart. Every contact point is tagged with the feature it lies on in both triangles.
 //! * **Re-triangulation** (seed 004 step 2): each cut triangle with its contact points and
 //!   constraint segments is triangulated exactly in its chart (orientations only, no Delaunay);
@@ -140,6 +143,9 @@
 //!   it is, nothing to round); boundaries that only touch in shared corners and edges by one
 //!   ray per patch, nothing constructed. At the first coplanar overlap, edge in the other's
 //!   plane or vertex on an edge of the other, the meet takes the general exact arrangement.
+//!   There too every pair of the kinds above, and every pair with an edge in the other's plane
+//!   that passes no corner of it and no corner through its edges' lines, is settled and named
+//!   this way; only the remaining pairs construct their contacts.
 //!   Where rounding moved vertices, the triangles at moved vertices are checked against their
 //!   neighbours by the validator's own tests, and the whole result validated where those
 //!   cannot tell; a result whose vertices are all `f64`s already is the exact one.
@@ -183,6 +189,7 @@ mod kept;
 mod link;
 mod locate;
 mod meet;
+mod named;
 mod near;
 mod ops;
 mod pierce;

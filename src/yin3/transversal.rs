@@ -36,7 +36,7 @@
 
 use super::arrange::retriangulate;
 use super::bvh::Bvh;
-use super::contact::{contact, key, Contact, Edge, End};
+use super::contact::{contact, key, Contact, Edge, End, Site};
 use super::corners::{Corners, F64Corners, RationalCorners};
 use super::fins::Fin;
 use super::locate::{ray_box, winding, TriBoxes};
@@ -70,17 +70,6 @@ impl Seams {
         self.same.insert(y, x);
         self.on_other.extend([x, y]);
     }
-}
-
-/// A point where the boundaries meet, by what defines it ([`End`]).
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-enum Site {
-    /// An edge through a triangle's interior.
-    Pierce(Edge, usize),
-    /// An edge of operand 0 through an edge of operand 1.
-    Edges(Edge, Edge),
-    /// A vertex inside a triangle (an input point: nothing to construct).
-    Vertex(usize, usize),
 }
 
 /// The points where the boundaries meet, each once: constructed ones numbered from `first`,
@@ -255,7 +244,7 @@ fn meet_on<N: Num, C: Corners>(a: &Brep<N>, b: &Brep<N>, p: &C) -> Option<Transv
                 Contact::Apart => {}
                 Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
-                Contact::Degenerate => return false,
+                Contact::Along(_) | Contact::Degenerate => return false,
             }
             true
         });
@@ -730,7 +719,7 @@ mod tests {
     use super::*;
     use crate::num::Float;
     use crate::yin3::bvh::tests::a_box;
-    use crate::yin3::meet::general_meet;
+    use crate::yin3::meet::constructed_meet;
     use crate::yin3::set::compact;
     use crate::yin3::shapes::{concat, cuboid, Mesh};
     use crate::yin3::{Yin3Error, YinSet3};
@@ -847,7 +836,7 @@ mod tests {
         /// the transversal meet is taken and equals the general exact meet (a different
         /// algorithm: constructed contacts, point-in-triangle distribution, one ray per patch).
         #[test]
-        fn equals_the_general_meet(
+        fn equals_the_constructed_meet(
             ja in jitter(), jb in jitter(), jc in jitter(),
             offset in [-1.2..1.2, -1.2..1.2, -1.2..1.2f64], size in 0.3..1.6f64,
         ) {
@@ -868,7 +857,7 @@ mod tests {
                 }
                 let fast = transversal(&fa, &fb);
                 prop_assert!(fast.is_some(), "declined a generic pair");
-                let exact = general_meet(&ea, &eb);
+                let exact = constructed_meet(&ea, &eb);
                 prop_assert_eq!(fast.unwrap(), exact.clone());
                 if let Some(Transversal::Apart(_) | Transversal::Operand(_)) = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap()) {
                     // Nothing is rounded where the boundaries are apart: the float meet is exact.
@@ -907,7 +896,7 @@ mod tests {
                     Some(Transversal::Apart(_) | Transversal::Operand(_))
                 ));
                 let float = fa.try_meet(&fb).expect("a float meet");
-                assert_eq!(float.exact_values(), general_meet(&ea, &eb));
+                assert_eq!(float.exact_values(), constructed_meet(&ea, &eb));
             }
         }
     }
@@ -964,7 +953,7 @@ mod tests {
         /// operand also as its complement: the touching meet is taken and equals the general
         /// exact meet, and so does the float meet, unrounded.
         #[test]
-        fn touching_boundaries_meet_as_the_general_meet(
+        fn touching_boundaries_meet_as_the_constructed_meet(
             corner in outward(&[0], true), inner in outward(&[0], false),
             edge in outward(&[0, 4], true),
             size in 0.25..0.75f64,
@@ -991,7 +980,7 @@ mod tests {
                 ] {
                     let fast = transversal(&fa, &fb);
                     prop_assert!(fast.is_some(), "declined a touching pair");
-                    let exact = general_meet(&ea, &eb);
+                    let exact = constructed_meet(&ea, &eb);
                     prop_assert_eq!(fast.unwrap(), exact.clone());
                     // No point is constructed, so nothing is rounded: the float meet is exact.
                     prop_assert_eq!(fa.try_meet(&fb).expect("a float meet").exact_values(), exact);
@@ -1077,7 +1066,7 @@ mod tests {
     /// tenth of the cases — unrepresentable; it is taken with crossing edges, through shared corners, with pairs meeting in one
     /// point and with shared edges beside crossings, each in many cases.
     #[test]
-    fn lattice_solids_meet_as_the_general_meet() {
+    fn lattice_solids_meet_as_the_constructed_meet() {
         use rand::{RngExt, SeedableRng};
         let mut rng = rand::rngs::StdRng::seed_from_u64(18);
         let cube = jittered_cube([0.0; 3], 2.0, &[[0.0; 3]; 8]);
@@ -1099,7 +1088,7 @@ mod tests {
                 let Some(fast) = transversal(&fa, &fb) else {
                     continue;
                 };
-                let exact = general_meet(&ea, &eb);
+                let exact = constructed_meet(&ea, &eb);
                 assert_eq!(fast, exact, "{:?} ∧ {:?}", a.0, b.0);
                 meets += 1;
                 match fa.try_meet(&fb) {
@@ -1126,7 +1115,7 @@ mod tests {
     /// ballmid and torus of ../shared/data/3d, on one lattice, cross in edges through edges and
     /// through shared corners: the transversal meet is taken and equals the general exact meet.
     #[test]
-    fn ballmid_and_torus_meet_as_the_general_meet() {
+    fn ballmid_and_torus_meet_as_the_constructed_meet() {
         if !crate::io::testdata::available() {
             return;
         }
@@ -1144,7 +1133,7 @@ mod tests {
         let fast = transversal(&ball, &torus).expect("the transversal meet");
         assert_eq!(
             fast,
-            general_meet(&ball.exact_values(), &torus.exact_values())
+            constructed_meet(&ball.exact_values(), &torus.exact_values())
         );
     }
 
@@ -1203,7 +1192,7 @@ mod tests {
         let (fa, fb) = (solid::<Float>(&a), solid::<Float>(&b));
         let meet = transversal_meet(fa.brep().unwrap(), fb.brep().unwrap());
         assert!(matches!(meet, Some(Transversal::Crossing(_))));
-        let exact = general_meet(&solid::<Rational>(&a), &solid::<Rational>(&b));
+        let exact = constructed_meet(&solid::<Rational>(&a), &solid::<Rational>(&b));
         assert_eq!(transversal(&fa, &fb).unwrap(), exact);
         assert_eq!(fa.try_meet(&fb).unwrap().exact_values(), exact);
         let same_bottom = solid::<Float>(&bipyramid(2.0, 1.0));
