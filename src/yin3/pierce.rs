@@ -136,7 +136,12 @@ pub(super) fn pierce_rational(corners: [&Point3<Rational>; 5]) -> Point3<Rationa
         }
         None => {
             let fractions = coords.map(|v| v.fraction());
-            let l = (fractions.iter()).fold(BigInt::from(1), |l, (_, d)| l.lcm(d));
+            // Most denominators repeat (decimals of a few lengths): a remainder, not a gcd.
+            let l =
+                (fractions.iter()).fold(BigInt::from(1), |l, (_, d)| match l.is_multiple_of(d) {
+                    true => l,
+                    false => l.lcm(d),
+                });
             let ints = fractions.map(|(n, d)| n * (&l / d));
             let [pu, pv, a, b, c] = points(ints);
             let (du, dv) = plane_values([&pu, &pv], [a, b, c]);
