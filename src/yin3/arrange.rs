@@ -15,7 +15,7 @@ use super::tri::{apart_across, corners_after, intersect_with, meet_only_at};
 use super::triangulate::{triangulate, TriangulateError};
 use super::values::exact_points;
 use crate::kernel::{orient, orient3d, Point, Point3};
-use crate::num::{Num, Rational};
+use crate::num::{Float, Num, Rational};
 use foldhash::HashMap;
 use rstar::AABB;
 use smallvec::{smallvec, SmallVec};
@@ -137,7 +137,7 @@ pub(crate) fn arrange<N: Num>(
     pairs: Pairs,
     ctx: &N::Ctx,
 ) -> Result<Arrangement, ArrangeError<N>> {
-    arrange_on::<N, F64Corners>(soup, pairs, ctx, None)
+    arrange_on::<N, F64Corners, N>(soup, pairs, ctx, None)
 }
 
 /// The arrangement of an exact meet's soup ([`Pairs::Across`]) whose pairs are first
@@ -151,19 +151,30 @@ pub(crate) fn arrange_named<N: Num>(
     let exact = exact_points(&soup.points);
     let is_f64 = |p: &Point3<Rational>| p.x.is_f64() && p.y.is_f64() && p.z.is_f64();
     if exact.iter().all(is_f64) {
-        let f64s = F64Corners(exact.iter().map(Point3::to_f64).collect());
-        arrange_on(soup, Pairs::Across, ctx, Some(f64s))
+        let (f64s, floats) = f64_values(&exact);
+        arrange_on(soup, Pairs::Across, ctx, Some((F64Corners(f64s), floats)))
     } else {
-        arrange_on(soup, Pairs::Across, ctx, Some(RationalCorners::new(exact)))
+        let corners = RationalCorners::new(exact.clone());
+        arrange_on(soup, Pairs::Across, ctx, Some((corners, exact)))
     }
 }
 
-/// [`arrange`], with the pairs classified on the input vertices `named` first where given.
-fn arrange_on<N: Num, C: Corners>(
+/// Points whose coordinates are `f64`s, as `f64` triples and as float points.
+pub(super) fn f64_values(exact: &[Point3<Rational>]) -> (Vec<[f64; 3]>, Vec<Point3<Float>>) {
+    let f64s: Vec<[f64; 3]> = exact.iter().map(Point3::to_f64).collect();
+    let floats = (f64s.iter())
+        .map(|&[x, y, z]| Point3::new(Float::new(x), Float::new(y), Float::new(z)))
+        .collect();
+    (f64s, floats)
+}
+
+/// [`arrange`], with the pairs classified first where `named` gives the input vertices' exact
+/// tests and values ([`Named::new`]).
+fn arrange_on<N: Num, C: Corners, M: Num>(
     soup: &mut Soup<N>,
     pairs: Pairs,
     ctx: &N::Ctx,
-    named: Option<C>,
+    named: Option<(C, Vec<Point3<M>>)>,
 ) -> Result<Arrangement, ArrangeError<N>> {
     let n = soup.tris.len();
     let group: Vec<usize> = (0..n)
@@ -203,7 +214,7 @@ fn arrange_on<N: Num, C: Corners>(
     let mut extra: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
     // Each triangle's normal, made once where a pair needs it.
     let normals: Vec<OnceCell<Point3<N>>> = (0..n).map(|_| OnceCell::new()).collect();
-    let mut named = named.map(|p| Named::new(p, soup, &meeting));
+    let mut named = named.map(|(p, values)| Named::new(p, &values, soup, &meeting));
     for (k, (i, j)) in meeting.into_iter().enumerate() {
         // The contact's points in the soup, and the segments each triangle is cut along.
         let (ids, cut): (SmallVec<[usize; 6]>, [Cuts; 2]) = match named

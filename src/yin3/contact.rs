@@ -1,12 +1,13 @@
 //! How two triangles of different operands meet, decided from exact orientations of their
 //! corners ([`super::corners`]; seed 004 step 1 for the cases [`super::transversal`]
-//! constructs without the general arrangement). Where two triangles cross, each meets the line
-//! of the two planes in a segment — from one straddling edge's pierce point to the other's, or
-//! from a shared corner or a vertex on the other's plane to the opposite edge's — and the
-//! triangles meet in the overlap of the two segments. Each end of the overlap is an end of one segment strictly
-//! inside the other (a pierce point or a vertex inside the other triangle) or an end of both
-//! (an edge of one operand through an edge of the other, or the shared corner), and is named
-//! by what defines it, so that every pair that finds it finds the same point.
+//! constructs without the general arrangement, and that the general arrangement of a meet
+//! settles by name, [`super::named`]). Where two triangles cross, each meets the line of the
+//! two planes in a segment — from one straddling edge's pierce point to the other's, or from a
+//! shared corner or a vertex on the other's plane to the opposite edge's — and the triangles
+//! meet in the overlap of the two segments. Each end of the overlap is an end of one segment
+//! strictly inside the other (a pierce point or a vertex inside the other triangle) or an end
+//! of both (an edge of one operand through an edge of the other, or the shared corner), and is
+//! named by what defines it, so that every pair that finds it finds the same point.
 
 use super::corners::Corners;
 use super::tri::{self, apart_across, corners_after, meet_only_at_given};
@@ -34,8 +35,8 @@ pub(super) enum End {
     Vertex(usize, usize),
 }
 
-/// A point where the boundaries meet, by what defines it ([`End`]; the triangle through which
-/// two edges cross is left out: any of the second edge's serves).
+/// A point where the boundaries meet, by what defines it ([`End`]; the triangle through whose
+/// plane two crossing edges' point is constructed is left out: the point is the same).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(super) enum Site {
     /// An edge through a triangle's interior.
@@ -47,7 +48,7 @@ pub(super) enum Site {
 }
 
 /// How two triangles of different operands meet.
-#[derive(Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Contact {
     /// Disjoint.
     Apart,
@@ -62,9 +63,10 @@ pub(super) enum Contact {
     /// two ends ([`along`]): membership need not flip across it, so the transversal meet
     /// declines it; an arrangement cuts both triangles along it.
     Along([End; 2]),
-    /// Meeting otherwise (overlapping in a plane, an edge on the other's plane at a vertex or
-    /// an edge of the other, a vertex on an edge of the other, a shared corner with a coplanar
-    /// edge or face): not handled here.
+    /// Meeting otherwise (overlapping in a plane; an edge on the other's plane where a corner
+    /// of either lies on the line of an edge of the other, or the other has a corner on that
+    /// plane too; a vertex on an edge of the other; a shared corner with a coplanar edge or
+    /// face): not handled here.
     Degenerate,
 }
 
@@ -480,8 +482,8 @@ mod tests {
     /// An edge of t on s's plane (z = 0, s the triangle x, y ≥ −1, x + y ≤ 2): they meet
     /// along its part inside s, ended by its corners inside s and by its crossings with s's
     /// edges (constructed through t's plane, t being the first edge's triangle), also with
-    /// the roles of the operands swapped; a corner on the line of s's edge is degenerate, and
-    /// an edge beside s misses it.
+    /// the roles of the operands swapped; a corner on the line of s's edge, or a corner of s on
+    /// the line of t's edge, is degenerate, and an edge beside s misses it.
     #[test]
     fn an_edge_on_the_others_plane_meets_it_along_its_part_inside() {
         let s = [[-1.0, -1.0, 0.0], [3.0, -1.0, 0.0], [-1.0, 3.0, 0.0]];
@@ -508,6 +510,12 @@ mod tests {
             [End::Vertex(3, 0), End::Edges((1, 2), (3, 4), 1)]
         );
         assert!(matches!(contact_of(t(-1.0, 1.0), s), Contact::Degenerate));
+        // s with a corner on the line of t's edge (and so on t's plane).
+        let on_line = [[-1.0, 0.0, 0.0], [3.0, -1.0, 0.0], [0.0, 3.0, 0.0]];
+        assert!(matches!(
+            contact_of(t(0.0, 1.0), on_line),
+            Contact::Degenerate
+        ));
         assert!(matches!(contact_of(t(5.0, 6.0), s), Contact::Apart));
     }
 

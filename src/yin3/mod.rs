@@ -143,9 +143,11 @@
 //!   it is, nothing to round); boundaries that only touch in shared corners and edges by one
 //!   ray per patch, nothing constructed. At the first coplanar overlap, edge in the other's
 //!   plane or vertex on an edge of the other, the meet takes the general exact arrangement.
-//!   There too every pair of the kinds above, and every pair with an edge in the other's plane
-//!   that passes no corner of it and no corner through its edges' lines, is settled and named
-//!   this way; only the remaining pairs construct their contacts.
+//!   There too every pair of the kinds above is settled and named this way, and so is every
+//!   pair sharing no corner where one triangle has an edge in the other's plane and no corner
+//!   of either lies on the line of an edge of the other in that plane; only the remaining
+//!   pairs construct their contacts (all of them where the first pairs classified settle
+//!   almost none, as with operands sharing faces throughout).
 //!   Where rounding moved vertices, the triangles at moved vertices are checked against their
 //!   neighbours by the validator's own tests, and the whole result validated where those
 //!   cannot tell; a result whose vertices are all `f64`s already is the exact one.

@@ -1,22 +1,21 @@
 //! The contacts of a meet's arrangement that the transversal meet's classification settles
-//! ([`super::contact`]; yin3 docs: *Meet*): decided from exact orientations of the input
-//! vertices alone (`f64` filters and stack integers where every vertex is an `f64`, filtered
-//! rational orientations otherwise), each end of a crossing named by what defines it
-//! ([`Site`]) and constructed once however many pairs find it. The other pairs — coplanar, an
-//! edge on the other's plane, a vertex on an edge — are left to the arrangement's constructed
-//! contacts ([`super::tri`]); both give exact points, interned by value into one table.
+//! ([`super::contact`]; yin3 docs: *Meet*), and those with an edge in the other's plane
+//! ([`Contact::Along`], which the transversal meet declines): decided from exact orientations
+//! of the input vertices alone (`f64` filters and stack integers where every vertex is an
+//! `f64`, filtered rational orientations otherwise), each end named by what defines it
+//! ([`Site`]) and constructed once however many pairs find it. The other pairs — coplanar, a
+//! vertex on an edge or on an edge's line, a shared corner with a coplanar edge — are left to
+//! the arrangement's constructed contacts ([`super::tri`]); both give exact points, interned
+//! by value into one table.
 
 use super::arrange::Soup;
 use super::contact::{contact, Contact, End, Site};
 use super::corners::Corners;
+use super::transversal::{map_all, PARALLEL_FROM};
 use crate::kernel::Point3;
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt};
-use rayon::prelude::*;
-
-/// Pairs handed to one of rayon's threads at least: fewer cost more to hand over than to
-/// classify.
-const PAIRS_PER_TASK: usize = 512;
+use std::cmp::Ordering;
 
 /// What the classification settled about a pair of triangles, in the soup's points.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,6 +30,11 @@ pub(super) enum Settled {
     Open,
 }
 
+/// Pairs classified at a time; classification stops once the open pairs of the chunks so far
+/// outnumber a chunk plus sixteen times the pairs settled as crossing (operands that share faces
+/// throughout, where it would only add work), and the remaining pairs are left open.
+const CHUNK: usize = 2048;
+
 /// The meeting pairs' contacts as the transversal meet's classification finds them, with
 /// each constructed end's index in the soup once made.
 pub(super) struct Named<C: Corners> {
@@ -41,22 +45,51 @@ pub(super) struct Named<C: Corners> {
 
 impl<C: Corners> Named<C> {
     /// The contacts of the pairs `meeting` of the soup's triangles (of different operands),
-    /// on `corners`, the soup's points so far (its input vertices) with their exact tests.
-    pub(super) fn new<N: Num>(corners: C, soup: &Soup<N>, meeting: &[(usize, usize)]) -> Self {
-        let points: Vec<&Point3<N>> = soup.points.iter().collect();
+    /// on `corners`, the soup's points so far (its input vertices) with their exact tests, and
+    /// `values`, the same points as numbers whose exact predicates are as cheap (their `f64`s
+    /// where they are `f64`s). Coplanar pairs are left open at once: the classification never
+    /// settles them. Pairs past the classified ones ([`CHUNK`]) are open.
+    pub(super) fn new<N: Num, M: Num>(
+        corners: C,
+        values: &[Point3<M>],
+        soup: &Soup<N>,
+        meeting: &[(usize, usize)],
+    ) -> Self {
+        let points: Vec<&Point3<M>> = values.iter().collect();
         let tris = &soup.tris;
-        let planes: Vec<C::Plane> = tris.par_iter().map(|&t| corners.plane(t)).collect();
-        let contacts = (meeting.par_iter().with_min_len(PAIRS_PER_TASK))
-            .map(|&(i, j)| {
-                // Operand 0's triangle first, so that ends are named alike by every pair.
-                let (t, s) = match soup.operand[i] {
-                    0 => (i, j),
-                    _ => (j, i),
-                };
-                let both = [&planes[t], &planes[s]];
-                contact(&corners, both, &points, (t, tris[t]), (s, tris[s]))
-            })
-            .collect();
+        let parallel = tris.len() >= PARALLEL_FROM;
+        let planes: Vec<C::Plane> = map_all(tris, parallel, |&t| corners.plane(t));
+        let classify = |&(i, j): &(usize, usize)| {
+            // Operand 0's triangle first, so that ends are named alike by every pair.
+            let (t, s) = match soup.operand[i] {
+                0 => (i, j),
+                _ => (j, i),
+            };
+            if tris[s]
+                .iter()
+                .all(|&v| corners.side(&planes[t], v) == Ordering::Equal)
+            {
+                return Contact::Degenerate;
+            }
+            let both = [&planes[t], &planes[s]];
+            contact(&corners, both, &points, (t, tris[t]), (s, tris[s]))
+        };
+        // Chunk by chunk, until open pairs outnumber the settled crossings by far.
+        let mut contacts: Vec<Contact> = Vec::with_capacity(meeting.len());
+        let (mut open, mut crossed) = (0, 0);
+        for chunk in meeting.chunks(CHUNK) {
+            if open > CHUNK + 16 * crossed {
+                break;
+            }
+            for c in map_all(chunk, parallel, classify) {
+                match c {
+                    Contact::Degenerate => open += 1,
+                    Contact::Cross(_) | Contact::Along(_) => crossed += 1,
+                    _ => {}
+                }
+                contacts.push(c);
+            }
+        }
         Named {
             corners,
             made: HashMap::with_capacity(meeting.len()),
@@ -67,7 +100,10 @@ impl<C: Corners> Named<C> {
     /// What the classification settled about the `k`th meeting pair, its constructed ends
     /// made and interned into `soup` on first sight.
     pub(super) fn settled<N: Num>(&mut self, k: usize, soup: &mut Soup<N>) -> Settled {
-        match self.contacts[k] {
+        let Some(&contact) = self.contacts.get(k) else {
+            return Settled::Open;
+        };
+        match contact {
             Contact::Apart => Settled::Apart,
             Contact::Touch([x, y]) => Settled::Touch([x[0], y[0]]),
             Contact::Cross(ends) | Contact::Along(ends) => {
@@ -110,6 +146,7 @@ impl<C: Corners> Named<C> {
 mod tests {
     use super::*;
     use crate::num::Rational;
+    use crate::yin3::arrange::f64_values;
     use crate::yin3::corners::{F64Corners, RationalCorners};
     use crate::yin3::grid::tests::{point, tetrahedron_over};
     use crate::yin3::meet::{constructed_meet, general_meet};
@@ -163,10 +200,13 @@ mod tests {
             .all(|p| p.x.is_f64() && p.y.is_f64() && p.z.is_f64())
         {
             true => {
-                let f64s = F64Corners(exact.iter().map(Point3::to_f64).collect());
-                Named::new(f64s, &soup, &pairs).contacts
+                let (f64s, floats) = f64_values(&exact);
+                Named::new(F64Corners(f64s), &floats, &soup, &pairs).contacts
             }
-            false => Named::new(RationalCorners::new(exact), &soup, &pairs).contacts,
+            false => {
+                let corners = RationalCorners::new(exact.clone());
+                Named::new(corners, &exact, &soup, &pairs).contacts
+            }
         };
         let mut counts = [0; 3];
         for c in contacts {
@@ -178,6 +218,34 @@ mod tests {
             }
         }
         counts
+    }
+
+    /// A soup of two fans of 100 triangles about the origin, operand 1's in the plane z = 0
+    /// with operand 0's (`flat`) or tilted through it, and every pair of them.
+    fn fans(flat: bool) -> (Soup<Rational>, Vec<(usize, usize)>) {
+        let mut soup = Soup::new();
+        for operand in 0..2u8 {
+            let lift = i64::from(operand == 1 && !flat);
+            for k in 0..100 {
+                let rim = |k: i64| point(100 + k, 1 + k * k, lift * (k - 50), 1);
+                let (a, b) = (rim(k), rim(k + 1));
+                soup.push([&point(0, 0, 0, 1), &a, &b], operand);
+            }
+        }
+        let pairs = (0..100).flat_map(|i| (100..200).map(move |j| (i, j)));
+        (soup, pairs.collect())
+    }
+
+    /// Classification stops where open pairs outnumber the crossings by far (two coplanar
+    /// fans: all open, two chunks classified of 10⁴ pairs), and goes on where they cross.
+    #[test]
+    fn classification_stops_where_it_settles_nothing() {
+        for (flat, classified) in [(true, 2 * CHUNK), (false, 10_000)] {
+            let (soup, pairs) = fans(flat);
+            let (f64s, floats) = f64_values(&soup.points);
+            let named = Named::new(F64Corners(f64s), &floats, &soup, &pairs);
+            assert_eq!(named.contacts.len(), classified, "flat {flat}");
+        }
     }
 
     /// Operands with coplanar faces, edges in each other's planes and crossings, on the grid

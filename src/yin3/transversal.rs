@@ -143,7 +143,7 @@ pub(crate) const PARALLEL_FROM: usize = if cfg!(test) { 16 } else { 8192 };
 const PIECES: usize = 64;
 
 /// `f` on each of `items`, in order, on rayon's threads if `parallel`.
-fn map_all<T: Sync, R: Send>(
+pub(super) fn map_all<T: Sync, R: Send>(
     items: &[T],
     parallel: bool,
     f: impl Fn(&T) -> R + Sync + Send,
