@@ -1,6 +1,6 @@
 //! Points of space, the 3D orientation test and 3D bounding boxes (yin3 docs: *Primitives*).
 
-use crate::num::Num;
+use crate::num::{Num, Rational};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -13,6 +13,13 @@ pub struct Point3<N> {
     pub y: N,
     /// Third coordinate.
     pub z: N,
+}
+
+impl Point3<Rational> {
+    /// True if every coordinate is an `f64` ([`Rational::is_f64`]).
+    pub(crate) fn is_f64(&self) -> bool {
+        self.x.is_f64() && self.y.is_f64() && self.z.is_f64()
+    }
 }
 
 impl<N: Num> Point3<N> {

@@ -11,6 +11,7 @@ use super::corners::{Corners, F64Corners, RationalCorners};
 use super::geom::{f64_box, in_triangle3, Chart};
 use super::locate::TriBoxes;
 use super::named::{Named, Settled};
+use super::set::Brep;
 use super::tri::{apart_across, corners_after, intersect_with, meet_only_at};
 use super::triangulate::{triangulate, TriangulateError};
 use super::values::exact_points;
@@ -68,6 +69,18 @@ impl<N: Num> Soup<N> {
         points.push(p.clone());
         index.insert(p.clone(), points.len() - 1);
         points.len() - 1
+    }
+
+    /// The soup of a meet's operands: the triangles of the boundary `a` (operand 0), then
+    /// those of `b` (operand 1).
+    pub(crate) fn of_operands(a: &Brep<N>, b: &Brep<N>) -> Soup<N> {
+        let mut soup = Soup::new();
+        for (operand, brep) in [a, b].into_iter().enumerate() {
+            for t in 0..brep.tris.len() {
+                soup.push(brep.corners(t), operand as u8);
+            }
+        }
+        soup
     }
 
     /// Add the triangle `abc` of operand `operand`.
@@ -149,8 +162,7 @@ pub(crate) fn arrange_named<N: Num>(
 ) -> Result<Arrangement, ArrangeError<N>> {
     debug_assert!(N::EXACT, "named points are exact");
     let exact = exact_points(&soup.points);
-    let is_f64 = |p: &Point3<Rational>| p.x.is_f64() && p.y.is_f64() && p.z.is_f64();
-    if exact.iter().all(is_f64) {
+    if exact.iter().all(Point3::is_f64) {
         let (f64s, floats) = f64_values(&exact);
         arrange_on(soup, Pairs::Across, ctx, Some((F64Corners(f64s), floats)))
     } else {

@@ -90,11 +90,10 @@ fn moved<N: Num>(
     rounded: &[Point3<N>],
     exact: &[Point3<Rational>],
 ) -> Vec<Option<Point3<Rational>>> {
-    let is_f64 = |p: &Point3<Rational>| p.x.is_f64() && p.y.is_f64() && p.z.is_f64();
     rounded
         .iter()
         .zip(exact)
-        .map(|(q, p)| (!is_f64(p)).then(|| exact_point(q)))
+        .map(|(q, p)| (!p.is_f64()).then(|| exact_point(q)))
         .collect()
 }
 

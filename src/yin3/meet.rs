@@ -72,12 +72,7 @@ fn meet_with<N: Num>(
     ctx: N::Ctx,
     named: bool,
 ) -> Result<YinSet3<N>, Yin3Error> {
-    let mut soup = Soup::new();
-    for (operand, brep) in [a, b].into_iter().enumerate() {
-        for t in 0..brep.tris.len() {
-            soup.push(brep.corners(t), operand as u8);
-        }
-    }
+    let mut soup = Soup::of_operands(a, b);
     let arrangement = match named {
         true => arrange_named(&mut soup, &ctx),
         false => arrange(&mut soup, Pairs::Across, &ctx),

@@ -183,22 +183,14 @@ mod tests {
     /// How the classification takes the pairs of triangles of `a` and `b` (all of them):
     /// counts of crossing pairs, pairs with an edge on the other's plane, and open pairs.
     fn contact_counts(a: &YinSet3<Rational>, b: &YinSet3<Rational>) -> [usize; 3] {
-        let mut soup = Soup::new();
-        for (operand, s) in [a, b].into_iter().enumerate() {
-            let brep = s.brep().expect("a boundary");
-            for t in 0..brep.tris.len() {
-                soup.push(brep.corners(t), operand as u8);
-            }
-        }
+        let [a_brep, b_brep] = [a, b].map(|s| s.brep().expect("a boundary"));
+        let soup = Soup::of_operands(a_brep, b_brep);
         let first_b = a.triangles().len();
         let pairs: Vec<(usize, usize)> = (0..first_b)
             .flat_map(|i| (first_b..soup.tris.len()).map(move |j| (i, j)))
             .collect();
         let exact = exact_points(&soup.points);
-        let contacts = match exact
-            .iter()
-            .all(|p| p.x.is_f64() && p.y.is_f64() && p.z.is_f64())
-        {
+        let contacts = match exact.iter().all(Point3::is_f64) {
             true => {
                 let (f64s, floats) = f64_values(&exact);
                 Named::new(F64Corners(f64s), &floats, &soup, &pairs).contacts
