@@ -231,7 +231,7 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
         // The contact's points in the soup, and the segments each triangle is cut along.
         let (ids, cut): (SmallVec<[usize; 6]>, [Cuts; 2]) = match named
             .as_mut()
-            .map_or(Settled::Open, |n| n.settled(k, soup))
+            .map_or(Settled::Open, |n| n.settled(k, (i, j), soup))
         {
             Settled::Apart => continue,
             Settled::Touch(at) => {
@@ -240,6 +240,13 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
             }
             Settled::Cross([p, q]) if p == q => (smallvec![p], Default::default()),
             Settled::Cross([p, q]) => (smallvec![p, q], [smallvec![(p, q)], smallvec![(p, q)]]),
+            Settled::InPlane { points, cuts, area } => {
+                if area {
+                    coplanar[i].push(j);
+                    coplanar[j].push(i);
+                }
+                (points, cuts)
+            }
             Settled::Open => {
                 if let Some(shared) = shared_only(&soup.points, soup.tris[i], soup.tris[j], ctx) {
                     contact.extend(shared);

@@ -3,10 +3,14 @@
 //! integer grid) on static filters and stack integers, or the exact rationals of any other
 //! exact set on their own filtered predicates.
 
+use super::contact::Edge;
 use super::geom::{widened_box, Chart};
-use super::pierce::{pierce, pierce_rational};
+use super::pierce::{pierce, pierce_f64, pierce_rational};
 use crate::kernel::{orient3d, Point3};
-use crate::num::{exact_orient3d_f64, filtered_orient3d, PlaneF64, Rational};
+use crate::num::{
+    exact_orient, exact_orient3d_f64, exact_orient_f64, filtered_orient, filtered_orient3d, Num,
+    PlaneF64, Rational,
+};
 use rstar::AABB;
 use std::cmp::Ordering;
 
@@ -36,6 +40,30 @@ pub(super) trait Corners: Sync {
 
     /// The chart in which the triangle `t` is counterclockwise; `None` if it is degenerate.
     fn chart(&self, t: [usize; 3]) -> Option<Chart>;
+
+    /// The orientation of the images of the vertices `[a, b, c]` in `chart`.
+    fn orient2d(&self, chart: &Chart, v: [usize; 3]) -> Ordering;
+
+    /// The point where the coplanar edges `e` and `f` cross, their images in `chart` crossing
+    /// properly: where `f` pierces the plane through `e` along the coordinate the chart drops
+    /// ([`off_along`]), the same value however the pair is met.
+    fn crossing(&self, chart: &Chart, e: Edge, f: Edge) -> Point3<Rational>;
+}
+
+/// The corner `a` moved along coordinate `k` to a value of that coordinate's own grid: to its
+/// negative, or to 1 from 0 (a third point of a plane through `a` along that axis).
+fn off_along<T: Clone + PartialEq + std::ops::Neg<Output = T>>(
+    a: [T; 3],
+    k: usize,
+    zero: T,
+    one: T,
+) -> [T; 3] {
+    let mut c = a;
+    c[k] = match c[k] == zero {
+        true => one,
+        false => -c[k].clone(),
+    };
+    c
 }
 
 /// Vertices that are `f64` points, read exactly.
@@ -71,6 +99,17 @@ impl Corners for F64Corners {
 
     fn chart(&self, t: [usize; 3]) -> Option<Chart> {
         Chart::of_f64_triangle(t.map(|v| self.0[v]))
+    }
+
+    fn orient2d(&self, chart: &Chart, v: [usize; 3]) -> Ordering {
+        let [a, b, c] = v.map(|v| chart.image_f64(self.0[v]));
+        exact_orient_f64(a, b, c)
+    }
+
+    fn crossing(&self, chart: &Chart, e: Edge, f: Edge) -> Point3<Rational> {
+        let p = &self.0;
+        let c = off_along(p[e.0], chart.dropped(), 0.0, 1.0);
+        pierce_f64([p[f.0], p[f.1], p[e.0], p[e.1], c])
     }
 }
 
@@ -123,5 +162,21 @@ impl Corners for RationalCorners {
     fn chart(&self, t: [usize; 3]) -> Option<Chart> {
         let [a, b, c] = t.map(|v| &self.points[v]);
         Chart::checked_of_triangle(a, b, c)
+    }
+
+    fn orient2d(&self, chart: &Chart, v: [usize; 3]) -> Ordering {
+        let [a, b, c] = v.map(|v| chart.image_f64(self.near[v]));
+        filtered_orient(a, b, c).unwrap_or_else(|| {
+            let [a, b, c] = v.map(|v| chart.image_of(&self.points[v]));
+            exact_orient(a, b, c)
+        })
+    }
+
+    fn crossing(&self, chart: &Chart, e: Edge, f: Edge) -> Point3<Rational> {
+        let p = &self.points;
+        let a = [0, 1, 2].map(|k| p[e.0].coord(k).clone());
+        let [x, y, z] = off_along(a, chart.dropped(), Rational::zero(), Rational::from_i64(1));
+        let c = Point3::new(x, y, z);
+        pierce_rational([&p[f.0], &p[f.1], &p[e.0], &p[e.1], &c])
     }
 }

@@ -175,6 +175,21 @@ impl Chart {
         Chart::of_signed_axes(normal_sizes([a, b, c].map(|p| p.to_f64())), sign)
     }
 
+    /// The coordinate the chart drops.
+    pub(crate) fn dropped(&self) -> usize {
+        3 - self.keep[0] - self.keep[1]
+    }
+
+    /// The image of the `f64` point `p`.
+    pub(crate) fn image_f64(&self, p: [f64; 3]) -> [f64; 2] {
+        self.keep.map(|k| p[k])
+    }
+
+    /// The image of `p`, as references to its coordinates.
+    pub(crate) fn image_of<'a, N: Num>(&self, p: &'a Point3<N>) -> [&'a N; 2] {
+        self.keep.map(|k| p.coord(k))
+    }
+
     /// The image of `p`.
     pub(crate) fn project<N: Num>(&self, p: &Point3<N>) -> Point<N> {
         Point::new(p.coord(self.keep[0]).clone(), p.coord(self.keep[1]).clone())

@@ -44,10 +44,11 @@
 //! * **Triangle–triangle** (seed 004 step 1): box pairs by sweep and prune. A meet's pairs are
 //!   first classified from exact orientations of the input vertices as the transversal meet
 //!   does (*How the exact result is found* below; also an edge on the other's plane, decided in
-//!   that plane against the edge's third corner), each end named and constructed once; every
-//!   other pair by the signs of each triangle's corners against the other's plane and the
-//!   overlap of the two clipped intervals on the planes' line, coplanar pairs in the plane's
-//!   chart. Every contact point is tagged with the feature it lies on in both triangles.
+//!   that plane against the edge's third corner), and coplanar pairs by orientations of their
+//!   corners' images in the plane's chart (corners in the other, edges crossing), each end
+//!   named and constructed once; every other pair by the signs of each triangle's corners
+//!   against the other's plane and the overlap of the two clipped intervals on the planes'
+//!   line. Every contact point is tagged with the feature it lies on in both triangles.
 //! * **Re-triangulation** (seed 004 step 2): each cut triangle with its contact points and
 //!   constraint segments is triangulated exactly in its chart (orientations only, no Delaunay);
 //!   a point on an edge goes into every triangle on that edge, and coplanar triangles of both
@@ -145,9 +146,11 @@
 //!   plane or vertex on an edge of the other, the meet takes the general exact arrangement.
 //!   There too every pair of the kinds above is settled and named this way, and so is every
 //!   pair sharing no corner where one triangle has an edge in the other's plane and no corner
-//!   of either lies on the line of an edge of the other in that plane; only the remaining
-//!   pairs construct their contacts (all of them where the first pairs classified settle
-//!   almost none, as with operands sharing faces throughout).
+//!   of either lies on the line of an edge of the other in that plane, and every coplanar
+//!   pair (its common polygon's corners: corners of either in the other, and edges crossing,
+//!   constructed where one edge pierces the plane through the other along the chart's dropped
+//!   axis); only the remaining pairs construct their contacts (all such pairs across two
+//!   planes where the first ones classified settle almost none).
 //!   Where rounding moved vertices, the triangles at moved vertices are checked against their
 //!   neighbours by the validator's own tests, and the whole result validated where those
 //!   cannot tell; a result whose vertices are all `f64`s already is the exact one.
@@ -186,6 +189,7 @@ mod geom;
 mod glue;
 mod grid;
 mod hasse;
+mod in_plane;
 mod input;
 mod kept;
 mod link;

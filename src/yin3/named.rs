@@ -1,24 +1,26 @@
 //! The contacts of a meet's arrangement that the transversal meet's classification settles
-//! ([`super::contact`]; yin3 docs: *Meet*), and those with an edge in the other's plane
-//! ([`Contact::Along`], which the transversal meet declines): decided from exact orientations
-//! of the input vertices alone (`f64` filters and stack integers where every vertex is an
-//! `f64`, filtered rational orientations otherwise), each end named by what defines it
-//! ([`Site`]) and constructed once however many pairs find it. The other pairs — coplanar, a
-//! vertex on an edge or on an edge's line, a shared corner with a coplanar edge — are left to
-//! the arrangement's constructed contacts ([`super::tri`]); both give exact points, interned
-//! by value into one table.
+//! ([`super::contact`]; yin3 docs: *Meet*), those with an edge in the other's plane
+//! ([`Contact::Along`], which the transversal meet declines), and coplanar pairs, classified in
+//! their plane ([`super::in_plane`]): decided from exact orientations of the input vertices
+//! alone (`f64` filters and stack integers where every vertex is an `f64`, filtered rational
+//! orientations otherwise), each end named by what defines it ([`Site`]) and constructed once
+//! however many pairs find it. The other pairs — a vertex on an edge or on an edge's line, a
+//! shared corner with a coplanar edge — are left to the arrangement's constructed contacts
+//! ([`super::tri`]); both give exact points, interned by value into one table.
 
 use super::arrange::Soup;
 use super::contact::{contact, Contact, End, Site};
 use super::corners::Corners;
+use super::in_plane::{overlap, InPlane, Overlap};
 use super::transversal::{map_all, PARALLEL_FROM};
 use crate::kernel::Point3;
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt};
+use smallvec::SmallVec;
 use std::cmp::Ordering;
 
 /// What the classification settled about a pair of triangles, in the soup's points.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub(super) enum Settled {
     /// Disjoint.
     Apart,
@@ -26,20 +28,38 @@ pub(super) enum Settled {
     Touch([usize; 2]),
     /// Crossing between these two points (one twice where they meet in one point).
     Cross([usize; 2]),
+    /// Coplanar, meeting in the convex polygon of these points, the first triangle of the pair
+    /// cut along the segments `cuts[0]` and the second along `cuts[1]`, overlapping in an area
+    /// where `area`.
+    InPlane {
+        points: SmallVec<[usize; 6]>,
+        cuts: [SmallVec<[(usize, usize); 3]>; 2],
+        area: bool,
+    },
     /// Not settled: the arrangement's constructed contacts decide.
     Open,
 }
 
-/// Pairs classified at a time; classification stops once the open pairs of the chunks so far
-/// outnumber a chunk plus sixteen times the pairs settled as crossing (operands that share faces
-/// throughout, where it would only add work), and the remaining pairs are left open.
+/// Pairs classified at a time; the classification of pairs across two planes stops once the
+/// open ones of the chunks so far outnumber a chunk plus sixteen times those settled as
+/// crossing (operands whose faces meet in degenerate ways throughout, where it would only add
+/// work), and the remaining such pairs are left open. Coplanar pairs are always classified.
 const CHUNK: usize = 2048;
 
-/// The meeting pairs' contacts as the transversal meet's classification finds them, with
-/// each constructed end's index in the soup once made.
+/// How a pair was classified: as the transversal meet does, in their common plane, or not at
+/// all (across planes, past the stop of [`CHUNK`]).
+enum Class {
+    Of(Contact),
+    InPlane(Option<Box<Overlap>>),
+    Unclassified,
+}
+
+/// The meeting pairs' contacts as the transversal meet's classification finds them, or
+/// [`overlap`] where they are coplanar, with each constructed end's index in the soup once
+/// made.
 pub(super) struct Named<C: Corners> {
     corners: C,
-    contacts: Vec<Contact>,
+    contacts: Vec<Class>,
     made: HashMap<Site, usize>,
 }
 
@@ -47,8 +67,8 @@ impl<C: Corners> Named<C> {
     /// The contacts of the pairs `meeting` of the soup's triangles (of different operands),
     /// on `corners`, the soup's points so far (its input vertices) with their exact tests, and
     /// `values`, the same points as numbers whose exact predicates are as cheap (their `f64`s
-    /// where they are `f64`s). Coplanar pairs are left open at once: the classification never
-    /// settles them. Pairs past the classified ones ([`CHUNK`]) are open.
+    /// where they are `f64`s). Coplanar pairs are classified in their plane ([`overlap`]).
+    /// Pairs across planes past the classified ones ([`CHUNK`]) are open.
     pub(super) fn new<N: Num, M: Num>(
         corners: C,
         values: &[Point3<M>],
@@ -59,7 +79,7 @@ impl<C: Corners> Named<C> {
         let tris = &soup.tris;
         let parallel = tris.len() >= PARALLEL_FROM;
         let planes: Vec<C::Plane> = map_all(tris, parallel, |&t| corners.plane(t));
-        let classify = |&(i, j): &(usize, usize)| {
+        let classify = |(i, j): (usize, usize), across: bool| {
             // Operand 0's triangle first, so that ends are named alike by every pair.
             let (t, s) = match soup.operand[i] {
                 0 => (i, j),
@@ -69,22 +89,23 @@ impl<C: Corners> Named<C> {
                 .iter()
                 .all(|&v| corners.side(&planes[t], v) == Ordering::Equal)
             {
-                return Contact::Degenerate;
+                return Class::InPlane(overlap(&corners, tris[t], tris[s]).map(Box::new));
+            }
+            if !across {
+                return Class::Unclassified;
             }
             let both = [&planes[t], &planes[s]];
-            contact(&corners, both, &points, (t, tris[t]), (s, tris[s]))
+            Class::Of(contact(&corners, both, &points, (t, tris[t]), (s, tris[s])))
         };
-        // Chunk by chunk, until open pairs outnumber the settled crossings by far.
-        let mut contacts: Vec<Contact> = Vec::with_capacity(meeting.len());
+        // Chunk by chunk, across planes until open pairs outnumber settled crossings by far.
+        let mut contacts: Vec<Class> = Vec::with_capacity(meeting.len());
         let (mut open, mut crossed) = (0, 0);
         for chunk in meeting.chunks(CHUNK) {
-            if open > CHUNK + 16 * crossed {
-                break;
-            }
-            for c in map_all(chunk, parallel, classify) {
-                match c {
-                    Contact::Degenerate => open += 1,
-                    Contact::Cross(_) | Contact::Along(_) => crossed += 1,
+            let across = open <= CHUNK + 16 * crossed;
+            for c in map_all(chunk, parallel, |&pair| classify(pair, across)) {
+                match &c {
+                    Class::Of(Contact::Degenerate) => open += 1,
+                    Class::Of(Contact::Cross(_) | Contact::Along(_)) => crossed += 1,
                     _ => {}
                 }
                 contacts.push(c);
@@ -97,11 +118,22 @@ impl<C: Corners> Named<C> {
         }
     }
 
-    /// What the classification settled about the `k`th meeting pair, its constructed ends
-    /// made and interned into `soup` on first sight.
-    pub(super) fn settled<N: Num>(&mut self, k: usize, soup: &mut Soup<N>) -> Settled {
-        let Some(&contact) = self.contacts.get(k) else {
-            return Settled::Open;
+    /// What the classification settled about the `k`th meeting pair, the triangles `pair`,
+    /// its constructed ends made and interned into `soup` on first sight.
+    pub(super) fn settled<N: Num>(
+        &mut self,
+        k: usize,
+        pair: (usize, usize),
+        soup: &mut Soup<N>,
+    ) -> Settled {
+        let contact = match self.contacts.get_mut(k) {
+            Some(Class::Of(contact)) => *contact,
+            Some(Class::InPlane(o)) => match o.take() {
+                // Each pair is settled once: its overlap is not kept.
+                Some(o) => return self.in_plane(*o, soup.operand[pair.0] != 0, soup),
+                None => return Settled::Open,
+            },
+            Some(Class::Unclassified) | None => return Settled::Open,
         };
         match contact {
             Contact::Apart => Settled::Apart,
@@ -110,6 +142,43 @@ impl<C: Corners> Named<C> {
                 Settled::Cross(ends.map(|end| self.point(end, soup)))
             }
             Contact::Degenerate => Settled::Open,
+        }
+    }
+
+    /// A coplanar pair's [`Overlap`] (operand 0's triangle first) in the soup's points, its
+    /// cuts in the pair's order (operand 1's triangle first where `swap`).
+    fn in_plane<N: Num>(&mut self, o: Overlap, swap: bool, soup: &mut Soup<N>) -> Settled {
+        if o.points.is_empty() {
+            return Settled::Apart;
+        }
+        let points: SmallVec<[usize; 6]> = (o.points.iter())
+            .map(|&x| match x {
+                InPlane::Corner(v) => v,
+                InPlane::Edges(e, f) => match self.made.get(&Site::Edges(e, f)) {
+                    Some(&v) => v,
+                    None => {
+                        let p = self.corners.crossing(&o.chart, e, f);
+                        let v = soup.intern(&Point3::new(
+                            N::nearest(&p.x),
+                            N::nearest(&p.y),
+                            N::nearest(&p.z),
+                        ));
+                        self.made.insert(Site::Edges(e, f), v);
+                        v
+                    }
+                },
+            })
+            .collect();
+        let mut cuts = o
+            .cuts
+            .map(|cuts| cuts.iter().map(|&(a, b)| (points[a], points[b])).collect());
+        if swap {
+            cuts.swap(0, 1);
+        }
+        Settled::InPlane {
+            points,
+            cuts,
+            area: o.area,
         }
     }
 
@@ -181,8 +250,9 @@ mod tests {
     }
 
     /// How the classification takes the pairs of triangles of `a` and `b` (all of them):
-    /// counts of crossing pairs, pairs with an edge on the other's plane, and open pairs.
-    fn contact_counts(a: &YinSet3<Rational>, b: &YinSet3<Rational>) -> [usize; 3] {
+    /// counts of crossing pairs, pairs with an edge on the other's plane, coplanar pairs
+    /// overlapping in an area, coplanar pairs whose edges cross, and open pairs.
+    fn contact_counts(a: &YinSet3<Rational>, b: &YinSet3<Rational>) -> [usize; 5] {
         let [a_brep, b_brep] = [a, b].map(|s| s.brep().expect("a boundary"));
         let soup = Soup::of_operands(a_brep, b_brep);
         let first_b = a.triangles().len();
@@ -200,57 +270,71 @@ mod tests {
                 Named::new(corners, &exact, &soup, &pairs).contacts
             }
         };
-        let mut counts = [0; 3];
-        for c in contacts {
+        let mut counts = [0; 5];
+        for c in &contacts {
             match c {
-                Contact::Cross(_) => counts[0] += 1,
-                Contact::Along(_) => counts[1] += 1,
-                Contact::Degenerate => counts[2] += 1,
+                Class::Of(Contact::Cross(_)) => counts[0] += 1,
+                Class::Of(Contact::Along(_)) => counts[1] += 1,
+                Class::InPlane(Some(o)) if o.area => counts[2] += 1,
+                Class::Of(Contact::Degenerate) | Class::InPlane(None) => counts[4] += 1,
                 _ => {}
+            }
+            if let Class::InPlane(Some(o)) = c {
+                if o.points.iter().any(|x| matches!(x, InPlane::Edges(..))) {
+                    counts[3] += 1;
+                }
             }
         }
         counts
     }
 
-    /// A soup of two fans of 100 triangles about the origin, operand 1's in the plane z = 0
-    /// with operand 0's (`flat`) or tilted through it, and every pair of them.
-    fn fans(flat: bool) -> (Soup<Rational>, Vec<(usize, usize)>) {
+    /// A soup of the triangle (0, 0, 0), (4, 0, 0), (0, 4, 0) of operand 0 and the triangle
+    /// `s` of operand 1, with the pair of them 10⁴ times over.
+    fn pair_repeated(s: [[i64; 3]; 3]) -> (Soup<Rational>, Vec<(usize, usize)>) {
         let mut soup = Soup::new();
-        for operand in 0..2u8 {
-            let lift = i64::from(operand == 1 && !flat);
-            for k in 0..100 {
-                let rim = |k: i64| point(100 + k, 1 + k * k, lift * (k - 50), 1);
-                let (a, b) = (rim(k), rim(k + 1));
-                soup.push([&point(0, 0, 0, 1), &a, &b], operand);
-            }
+        let t = [[0, 0, 0], [4, 0, 0], [0, 4, 0]];
+        for (operand, tri) in [(0, t), (1, s)] {
+            let [a, b, c] = tri.map(|[x, y, z]| point(x, y, z, 1));
+            soup.push([&a, &b, &c], operand);
         }
-        let pairs = (0..100).flat_map(|i| (100..200).map(move |j| (i, j)));
-        (soup, pairs.collect())
+        (soup, vec![(0, 1); 10_000])
     }
 
-    /// Classification stops where open pairs outnumber the crossings by far (two coplanar
-    /// fans: all open, two chunks classified of 10⁴ pairs), and goes on where they cross.
+    /// Classification across planes stops where open pairs outnumber the crossings by far
+    /// (a vertex on an edge of the other: two chunks classified of 10⁴ pairs), and goes on
+    /// where they cross; coplanar pairs are classified throughout.
     #[test]
     fn classification_stops_where_it_settles_nothing() {
-        for (flat, classified) in [(true, 2 * CHUNK), (false, 10_000)] {
-            let (soup, pairs) = fans(flat);
+        let on_edge = [[2, 0, 0], [2, -1, 1], [2, -1, -1]];
+        let crossing = [[1, 1, -1], [1, 1, 1], [2, -3, 0]];
+        let coplanar = [[1, 1, 0], [3, 1, 0], [1, 3, 0]];
+        for (s, unclassified, open) in [
+            (on_edge, 10_000 - 2 * CHUNK, 2 * CHUNK),
+            (crossing, 0, 0),
+            (coplanar, 0, 0),
+        ] {
+            let (soup, pairs) = pair_repeated(s);
             let (f64s, floats) = f64_values(&soup.points);
             let named = Named::new(F64Corners(f64s), &floats, &soup, &pairs);
-            assert_eq!(named.contacts.len(), classified, "flat {flat}");
+            let count = |f: fn(&Class) -> bool| named.contacts.iter().filter(|c| f(c)).count();
+            let skipped = count(|c| matches!(c, Class::Unclassified));
+            let degenerate = count(|c| matches!(c, Class::Of(Contact::Degenerate)));
+            assert_eq!((skipped, degenerate), (unclassified, open), "{s:?}");
         }
     }
 
     /// Operands with coplanar faces, edges in each other's planes and crossings, on the grid
     /// of halves (classified on `f64`s) and turned by a rational rotation (on rationals), and
     /// their complements: the meet with pairs settled by name equals the meet with every
-    /// contact constructed, and crossing pairs and open pairs occur together in many of the
-    /// meets, pairs with an edge on the other's plane in many too.
+    /// contact constructed; crossing pairs and open pairs occur together in many of the meets,
+    /// and pairs with an edge on the other's plane, coplanar pairs overlapping in an area and
+    /// coplanar pairs whose edges cross each in many.
     #[test]
     fn named_contacts_meet_as_constructed_ones() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(53);
-        // Meets with crossing and open pairs, and with pairs along a plane, on f64s and on
-        // rationals.
-        let (mut mixed, mut alongs) = ([0; 2], [0; 2]);
+        // Meets with crossing and open pairs, with pairs along a plane, with coplanar overlaps
+        // and with coplanar edges crossing, on f64s and on rationals.
+        let mut seen = [[0; 2]; 4];
         for round in 0..600 {
             let (Some(a), Some(b)) = (operand(&mut rng), operand(&mut rng)) else {
                 continue;
@@ -269,16 +353,13 @@ mod tests {
                     constructed_meet(x, &y),
                     "round {round}"
                 );
-                let [cross, along, open] = contact_counts(x, &y);
-                if cross > 0 && open > 0 {
-                    mixed[on_rationals] += 1;
-                }
-                if along > 0 {
-                    alongs[on_rationals] += 1;
+                let [cross, along, area, edges, open] = contact_counts(x, &y);
+                let kinds = [cross > 0 && open > 0, along > 0, area > 0, edges > 0];
+                for (k, _) in kinds.iter().enumerate().filter(|(_, &on)| on) {
+                    seen[k][on_rationals] += 1;
                 }
             }
         }
-        let many = |n: &[usize; 2]| n.iter().all(|&n| n >= 40);
-        assert!(many(&mixed) && many(&alongs), "{mixed:?} {alongs:?}");
+        assert!(seen.iter().flatten().all(|&n| n >= 40), "{seen:?}");
     }
 }

@@ -105,8 +105,12 @@ impl<const BITS: usize, const LIMBS: usize> Scalar for Twos<BITS, LIMBS> {
 /// V, in integers after scaling every coordinate by one power of two; the same value whichever
 /// triangle of the edge asks.
 pub(super) fn pierce(p: &[[f64; 3]], (u, v): (usize, usize), tri: [usize; 3]) -> Point3<Rational> {
-    let corners = [u, v, tri[0], tri[1], tri[2]];
-    let (parts, low) = common_grid::<15>(std::array::from_fn(|k| p[corners[k / 3]][k % 3]));
+    pierce_f64([u, v, tri[0], tri[1], tri[2]].map(|i| p[i]))
+}
+
+/// [`pierce`] for the `f64` points `[U, V, A, B, C]`: where the line UV meets the plane ABC.
+pub(super) fn pierce_f64(corners: [[f64; 3]; 5]) -> Point3<Rational> {
+    let (parts, low) = common_grid::<15>(std::array::from_fn(|k| corners[k / 3][k % 3]));
     let [x, y, z] = match width(&parts) {
         w if w <= narrow(256) => on_stack::<256, 4>(parts, low),
         w if w <= narrow(384) => on_stack::<384, 6>(parts, low),
