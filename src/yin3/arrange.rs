@@ -9,7 +9,6 @@
 use super::bvh::Bvh;
 use super::corners::{Corners, F64Corners, RationalCorners};
 use super::geom::{f64_box, in_triangle3, Chart};
-use super::locate::TriBoxes;
 use super::named::{Named, Settled};
 use super::set::Brep;
 use super::tri::{apart_across, corners_after, intersect_with, meet_only_at};
@@ -135,9 +134,9 @@ pub(crate) struct Arrangement {
     /// For each triangle, the triangles it was intersected with that overlap it in an area
     /// of their common plane.
     pub coplanar: Vec<Vec<usize>>,
-    /// The boxes of the soup's triangles: for [`Pairs::Across`] each operand's, for
-    /// [`Pairs::All`] all of them, then none.
-    pub boxes: [TriBoxes; 2],
+    /// The hierarchies of the soup's triangles' boxes: for [`Pairs::Across`] each operand's,
+    /// for [`Pairs::All`] one of all of them.
+    pub trees: Vec<Bvh>,
 }
 
 /// The segments a triangle is cut along by one contact, as pairs of the soup's points.
@@ -213,10 +212,6 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
         Pairs::All => {}
     });
     meeting.sort_unstable();
-    // One R-tree of boxes per group, for the caller's point location.
-    let boxes: [TriBoxes; 2] = members
-        .each_ref()
-        .map(|m| TriBoxes::of_boxes(m.iter().map(|&i| (i, f64_boxes[i]))));
     let mut cuts: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut coplanar: Vec<Vec<usize>> = vec![Vec::new(); n];
     let mut contact: BTreeSet<usize> = BTreeSet::new();
@@ -334,7 +329,7 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
         pieces,
         contact: on_contact,
         coplanar,
-        boxes,
+        trees,
     })
 }
 

@@ -69,6 +69,24 @@ impl Bvh {
         }
     }
 
+    /// The boxes of the set (their indices in the caller's numbering) that meet `query`.
+    pub(crate) fn meeting(&self, query: &AABB<[f64; 3]>) -> Vec<usize> {
+        let mut found = Vec::new();
+        let mut stack: Vec<Node> = self.root().into_iter().collect();
+        while let Some(node) = stack.pop() {
+            if !self.node_box(node).intersects(query) {
+                continue;
+            }
+            if node.0 == 0 {
+                found.push(self.items[node.1]);
+                continue;
+            }
+            let (level, places) = self.split(node, 0);
+            stack.extend(places.map(|i| (level, i)));
+        }
+        found
+    }
+
     /// Pairs of nodes of `self` and `other` whose boxes meet, covering every pair of boxes
     /// that meet exactly once: the roots' pairs, split down until there are at least `enough`
     /// or every pair is of boxes of the sets. The pieces of work of [`Bvh::meeting_pairs`].
@@ -233,6 +251,25 @@ pub(super) mod tests {
             for &t in &ia {
                 expected.extend(ib.iter().filter(|&&s| boxes[t].intersects(&boxes[s])).map(|&s| (t, s)));
             }
+            prop_assert_eq!(found, expected);
+        }
+
+        /// A query box finds the boxes that meet it, touching ones included, each once.
+        #[test]
+        fn a_query_finds_the_boxes_that_meet_it(
+            a in prop::collection::vec(
+                ([0.0..16.0, 0.0..16.0, 0.0..16.0f64], [0.0..3.0, 0.0..3.0, 0.0..3.0f64]), 0..300),
+            corner in [0.0..16.0, 0.0..16.0, 0.0..16.0f64],
+            sides in [0.0..8.0, 0.0..8.0, 0.0..8.0f64],
+        ) {
+            let boxes: Vec<AABB<[f64; 3]>> = (a.iter())
+                .map(|(c, s)| a_box(c.map(f64::floor), s.map(f64::floor)))
+                .collect();
+            let items: Vec<usize> = (0..boxes.len()).rev().collect();
+            let query = a_box(corner.map(f64::floor), sides.map(f64::floor));
+            let mut found = Bvh::new(&items, &boxes).meeting(&query);
+            found.sort_unstable();
+            let expected: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i].intersects(&query)).collect();
             prop_assert_eq!(found, expected);
         }
     }

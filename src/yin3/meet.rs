@@ -7,7 +7,7 @@
 use super::arrange::{arrange, arrange_named, Arrangement, Pairs, Soup};
 use super::error::Yin3Error;
 use super::geom::{piece_in_triangle2, Chart, Triangle2};
-use super::locate::winding;
+use super::locate::{ray_box, winding};
 use super::set::{Brep, YinSet3};
 use super::tri::corners_after;
 use crate::kernel::{orient, Point3};
@@ -232,7 +232,8 @@ fn classify<N: Num>(
                         &centroid
                     }
                 };
-                let others = arrangement.boxes[1 - o].along_x(q).map(|s| soup.corners(s));
+                let along = arrangement.trees[1 - o].meeting(&ray_box(q));
+                let others = along.into_iter().map(|s| soup.corners(s));
                 if winding(others, q, ctx) + i64::from(!bounded[1 - o]) == 1 {
                     Side::Inside
                 } else {
