@@ -3,7 +3,6 @@
 //! integer grid) on static filters and stack integers, or the exact rationals of any other
 //! exact set on their own filtered predicates.
 
-use super::contact::Edge;
 use super::geom::{widened_box, Chart};
 use super::pierce::{pierce, pierce_f64, pierce_rational};
 use crate::kernel::{orient3d, Point3};
@@ -47,7 +46,7 @@ pub(super) trait Corners: Sync {
     /// The point where the coplanar edges `e` and `f` cross, their images in `chart` crossing
     /// properly: where `f` pierces the plane through `e` along the coordinate the chart drops
     /// ([`off_along`]), the same value however the pair is met.
-    fn crossing(&self, chart: &Chart, e: Edge, f: Edge) -> Point3<Rational>;
+    fn crossing(&self, chart: &Chart, e: (usize, usize), f: (usize, usize)) -> Point3<Rational>;
 }
 
 /// The corner `a` moved along coordinate `k` to a value of that coordinate's own grid: to its
@@ -106,7 +105,7 @@ impl Corners for F64Corners {
         exact_orient_f64(a, b, c)
     }
 
-    fn crossing(&self, chart: &Chart, e: Edge, f: Edge) -> Point3<Rational> {
+    fn crossing(&self, chart: &Chart, e: (usize, usize), f: (usize, usize)) -> Point3<Rational> {
         let p = &self.0;
         let c = off_along(p[e.0], chart.dropped(), 0.0, 1.0);
         pierce_f64([p[f.0], p[f.1], p[e.0], p[e.1], c])
@@ -172,7 +171,7 @@ impl Corners for RationalCorners {
         })
     }
 
-    fn crossing(&self, chart: &Chart, e: Edge, f: Edge) -> Point3<Rational> {
+    fn crossing(&self, chart: &Chart, e: (usize, usize), f: (usize, usize)) -> Point3<Rational> {
         let p = &self.points;
         let a = [0, 1, 2].map(|k| p[e.0].coord(k).clone());
         let [x, y, z] = off_along(a, chart.dropped(), Rational::zero(), Rational::from_i64(1));

@@ -4,11 +4,12 @@
 //! the other (coincident pieces: one copy if equally oriented, none if opposite), and paste the
 //! kept pieces into glued surfaces.
 
-use super::arrange::{arrange, arrange_named, Arrangement, Pairs, Soup};
+use super::arrange::{arrange, arrange_named, Arrangement, Pairs};
 use super::error::Yin3Error;
 use super::geom::{piece_in_triangle2, Chart, Triangle2};
 use super::locate::{ray_box, winding};
 use super::set::{Brep, YinSet3};
+use super::soup::Soup;
 use super::tri::corners_after;
 use crate::kernel::{orient, Point3};
 use crate::num::Num;

@@ -8,11 +8,11 @@
 //! shared corner with a coplanar edge — are left to the arrangement's constructed contacts
 //! ([`super::tri`]); both give exact points, interned by value into one table.
 
-use super::arrange::Soup;
 use super::contact::{contact, Contact, End, Site};
 use super::corners::Corners;
 use super::in_plane::{overlap, InPlane, Overlap};
-use super::transversal::{map_all, PARALLEL_FROM};
+use super::parallel::{map_all, PARALLEL_FROM};
+use super::soup::Soup;
 use crate::kernel::Point3;
 use crate::num::Num;
 use foldhash::{HashMap, HashMapExt};

@@ -40,6 +40,7 @@ use super::contact::{contact, key, Contact, Edge, End, Site};
 use super::corners::{Corners, F64Corners, RationalCorners};
 use super::fins::Fin;
 use super::locate::{ray_box, winding, TriBoxes};
+use super::parallel::{map_all, PARALLEL_FROM};
 use super::set::{compact, Brep};
 use super::values::{exact_point, exact_points};
 use crate::kernel::Point3;
@@ -134,26 +135,8 @@ impl Sites {
 /// built (one in unit tests, so that they take both ways).
 const SCANNED_RAYS: usize = if cfg!(test) { 1 } else { 8 };
 
-/// Triangles (of both operands, or of a rounded result) from which the meet and the rounding
-/// check run on rayon's threads (16 in unit tests, so that they take both ways): handing small
-/// work over costs more than it saves.
-pub(crate) const PARALLEL_FROM: usize = if cfg!(test) { 16 } else { 8192 };
-
 /// The contact search on rayon's threads is split into at least this many pieces.
 const PIECES: usize = 64;
-
-/// `f` on each of `items`, in order, on rayon's threads if `parallel`.
-pub(super) fn map_all<T: Sync, R: Send>(
-    items: &[T],
-    parallel: bool,
-    f: impl Fn(&T) -> R + Sync + Send,
-) -> Vec<R> {
-    if parallel {
-        items.par_iter().map(f).collect()
-    } else {
-        items.iter().map(f).collect()
-    }
-}
 
 /// Triangles over a table of exact points.
 type Complex = (Vec<Point3<Rational>>, Vec<[usize; 3]>);

@@ -4,14 +4,15 @@
 //! the faces against each other, and invariants I1–I4 checked, with errors naming the face or
 //! edge at fault.
 
-use super::arrange::{arrange, shared_only, ArrangeError, Pairs, Soup};
+use super::arrange::{arrange, shared_only, ArrangeError, Pairs};
 use super::error::{Spot, Yin3Error};
 use super::geom::{collinear, normal, widened_box, Chart};
 use super::grid::on_grid;
 use super::locate::{ray_box, winding};
+use super::parallel::PARALLEL_FROM;
 use super::set::{Brep, YinSet3};
+use super::soup::Soup;
 use super::sweep::MeetingBoxes;
-use super::transversal::PARALLEL_FROM;
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
 use super::triangulate::ear_clip;
 use super::values::{exact_point, exact_points};
