@@ -269,7 +269,8 @@ pub(super) mod tests {
             let query = a_box(corner.map(f64::floor), sides.map(f64::floor));
             let mut found = Bvh::new(&items, &boxes).meeting(&query);
             found.sort_unstable();
-            let expected: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i].intersects(&query)).collect();
+            let expected: Vec<usize> =
+                (0..boxes.len()).filter(|&i| boxes[i].intersects(&query)).collect();
             prop_assert_eq!(found, expected);
         }
     }

@@ -1,15 +1,16 @@
 //! How two coplanar triangles of different operands meet (seed 004 step 1, the coplanar case;
 //! yin3 docs: *Triangle–triangle*), decided from orientations of their corners' images in a
 //! chart of the plane ([`Corners::orient2d`]), each point named by what defines it: a corner
-//! of one in the closed other, or an edge of each crossing the other's inside both (constructed
-//! once, where it is first needed, by [`Corners::crossing`]). The closed triangles meet in a convex
-//! polygon whose corners are those points; each triangle is cut along the part of each of the
-//! other's edges inside it, whose ends are the points on that edge.
+//! of one in the closed other, or an edge of each crossing the other's inside both
+//! (constructed once, where it is first needed, by [`Corners::crossing`]). The closed
+//! triangles meet in a convex polygon whose corners are those points; each triangle is cut
+//! along the part of each of the other's edges inside it, whose ends are the points on that
+//! edge.
 
 use super::contact::{key, Edge};
 use super::corners::Corners;
 use super::geom::Chart;
-use smallvec::SmallVec;
+use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering::{self, Equal, Less};
 
 /// A point where two coplanar triangles meet, by what defines it.
@@ -38,7 +39,9 @@ pub(super) struct Overlap {
 }
 
 /// How the coplanar triangles `t` and `s` (global vertex indices, distinct indices being
-/// distinct points; shared corners are corners of both) meet; `None` if either is degenerate.
+/// distinct points; shared corners are corners of both) meet; `None` if either is degenerate,
+/// or if an edge were found to hold more than the two ends of its part inside the other (which
+/// convexity rules out), so that the arrangement constructs the pair's contact instead.
 pub(super) fn overlap(p: &impl Corners, t: [usize; 3], s: [usize; 3]) -> Option<Overlap> {
     let chart = p.chart(t)?;
     let o = |a: usize, b: usize, c: usize| p.orient2d(&chart, [a, b, c]);
@@ -68,7 +71,7 @@ pub(super) fn overlap(p: &impl Corners, t: [usize; 3], s: [usize; 3]) -> Option<
     let area = !outside(&sides[0], false) && !outside(&sides[1], false);
     let tris = [t, s];
     let mut points: SmallVec<[InPlane; 6]> = SmallVec::new();
-    // The points on each edge of either triangle: on edges[m][i], edge i of triangle m.
+    // The points on each edge of either triangle: on[m][i] for edge i of triangle m.
     let mut on: [[SmallVec<[usize; 2]>; 3]; 2] = Default::default();
     let mut add = |x: InPlane, edges: &[(usize, usize)]| {
         let k = points.iter().position(|&y| y == x).unwrap_or_else(|| {
@@ -87,19 +90,19 @@ pub(super) fn overlap(p: &impl Corners, t: [usize; 3], s: [usize; 3]) -> Option<
             // Corner j of triangle m in the closed other: on its two edges, and on each edge of
             // the other whose line passes through it.
             if rows.iter().all(|row| row[j] != Less) {
-                let mut edges: SmallVec<[(usize, usize); 4]> =
-                    smallvec::smallvec![(m, j), (m, (j + 2) % 3)];
+                let mut edges: SmallVec<[(usize, usize); 4]> = smallvec![(m, j), (m, (j + 2) % 3)];
                 edges.extend((0..3).filter(|&i| rows[i][j] == Equal).map(|i| (1 - m, i)));
                 add(InPlane::Corner(corners[j]), &edges);
             }
         }
     }
+    // Edge k of a triangle strictly across a line, by its corners' sides `row` of it.
+    let straddles = |row: &[Ordering; 3], k: usize| {
+        let (a, b) = (row[k], row[(k + 1) % 3]);
+        a != Equal && b != Equal && a != b
+    };
     for i in 0..3 {
         for j in 0..3 {
-            let straddles = |row: &[Ordering; 3], k: usize| {
-                let (a, b) = (row[k], row[(k + 1) % 3]);
-                a != Equal && b != Equal && a != b
-            };
             if straddles(&sides[0][i], j) && straddles(&sides[1][j], i) {
                 let (e, f) = ((t[i], t[(i + 1) % 3]), (s[j], s[(j + 1) % 3]));
                 add(
@@ -141,8 +144,8 @@ mod tests {
     /// A point as an exact rational point.
     type P = Point3<Rational>;
 
-    /// The contact `o` on the corners `p` (exact values `corners`) in exact points: the points sorted,
-    /// and each triangle's cuts as sorted pairs, sorted.
+    /// The contact `o` on the corners `p` (exact values `corners`) in exact points: the points
+    /// sorted, and each triangle's cuts as sorted pairs, sorted.
     fn resolved(o: &Overlap, p: &impl Corners, corners: &[P]) -> (Vec<P>, [Vec<[P; 2]>; 2]) {
         let at = |x: &InPlane| match *x {
             InPlane::Corner(v) => corners[v].clone(),

@@ -14,7 +14,7 @@ use super::in_plane::{overlap, InPlane, Overlap};
 use super::parallel::{map_all, PARALLEL_FROM};
 use super::soup::Soup;
 use crate::kernel::Point3;
-use crate::num::Num;
+use crate::num::{Num, Rational};
 use foldhash::{HashMap, HashMapExt};
 use smallvec::SmallVec;
 use std::cmp::Ordering;
@@ -151,24 +151,15 @@ impl<C: Corners> Named<C> {
         if o.points.is_empty() {
             return Settled::Apart;
         }
-        let points: SmallVec<[usize; 6]> = (o.points.iter())
-            .map(|&x| match x {
+        let mut points: SmallVec<[usize; 6]> = SmallVec::new();
+        for &x in &o.points {
+            points.push(match x {
                 InPlane::Corner(v) => v,
-                InPlane::Edges(e, f) => match self.made.get(&Site::Edges(e, f)) {
-                    Some(&v) => v,
-                    None => {
-                        let p = self.corners.crossing(&o.chart, e, f);
-                        let v = soup.intern(&Point3::new(
-                            N::nearest(&p.x),
-                            N::nearest(&p.y),
-                            N::nearest(&p.z),
-                        ));
-                        self.made.insert(Site::Edges(e, f), v);
-                        v
-                    }
-                },
-            })
-            .collect();
+                InPlane::Edges(e, f) => self.constructed(Site::Edges(e, f), soup, |corners| {
+                    corners.crossing(&o.chart, e, f)
+                }),
+            });
+        }
         let mut cuts = o
             .cuts
             .map(|cuts| cuts.iter().map(|&(a, b)| (points[a], points[b])).collect());
@@ -197,10 +188,22 @@ impl<C: Corners> Named<C> {
                 }
             }
         };
+        let tri = soup.tris[tri];
+        self.constructed(site, soup, |corners| corners.pierce(edge, tri))
+    }
+
+    /// The soup's index of the constructed point `site`, made by `make` from the corners and
+    /// interned on first sight.
+    fn constructed<N: Num>(
+        &mut self,
+        site: Site,
+        soup: &mut Soup<N>,
+        make: impl FnOnce(&C) -> Point3<Rational>,
+    ) -> usize {
         if let Some(&v) = self.made.get(&site) {
             return v;
         }
-        let p = self.corners.pierce(edge, soup.tris[tri]);
+        let p = make(&self.corners);
         let v = soup.intern(&Point3::new(
             N::nearest(&p.x),
             N::nearest(&p.y),
@@ -223,8 +226,8 @@ mod tests {
     use crate::yin3::YinSet3;
     use rand::{RngExt, SeedableRng};
 
-    /// A box with corners on the grid of halves in [0, 2]³ joined with a tetrahedron on it where that is
-    /// not flat: coplanar faces, edges in the other's planes and crossings in one operand.
+    /// A box with corners on the grid of halves in [0, 2]³ joined with a tetrahedron on it where
+    /// that is not flat: coplanar faces, edges in the other's planes and crossings in one operand.
     fn operand(rng: &mut rand::rngs::StdRng) -> Option<YinSet3<Rational>> {
         let [x, y] = [0; 2].map(|_| [0; 3].map(|_| rng.random_range(0..=4)));
         let lo = point(x[0].min(y[0]), x[1].min(y[1]), x[2].min(y[2]), 2);
