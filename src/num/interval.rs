@@ -90,6 +90,11 @@ impl Interval {
         }
     }
 
+    /// The ends `(lo, hi)`.
+    pub fn bounds(self) -> (f64, f64) {
+        (self.lo, self.hi)
+    }
+
     /// The smallest interval holding two exact values (`a` and `b` of a segment's ends).
     pub fn span(a: Interval, b: Interval) -> Interval {
         Interval {

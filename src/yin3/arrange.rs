@@ -7,6 +7,7 @@
 //! complex.
 
 use super::bvh::Bvh;
+use super::contact::{key, Edge};
 use super::corners::{Corners, F64Corners, RationalCorners};
 use super::geom::{f64_box, in_triangle3, Chart};
 use super::named::{Named, Settled};
@@ -16,6 +17,7 @@ use super::triangulate::{triangulate, TriangulateError};
 use super::values::exact_points;
 use crate::kernel::{orient, orient3d, Point, Point3};
 use crate::num::{Float, Num, Rational};
+use foldhash::{HashMap, HashMapExt};
 use rstar::AABB;
 use smallvec::{smallvec, SmallVec};
 use std::cell::OnceCell;
@@ -222,6 +224,9 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
             extra[t].insert(v);
         }
     }
+    let through = named.map_or_else(HashMap::new, |n| n.edges_through());
+    let no_edges: &[Edge] = &[];
+    let named_edges = |v: usize| through.get(&v).map_or(no_edges, |e| &e[..]);
     let mut pieces = Vec::with_capacity(n);
     for t in 0..n {
         if extra[t].is_empty() {
@@ -230,7 +235,14 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
         }
         let [a, b, c] = soup.corners(t);
         let chart = Chart::of_triangle(a, b, c);
-        let (sides, others) = by_side(&soup.points, soup.tris[t], &chart, &extra[t], ctx);
+        let (sides, others) = by_side(
+            &soup.points,
+            soup.tris[t],
+            &chart,
+            &extra[t],
+            named_edges,
+            ctx,
+        );
         let cut = retriangulate(
             &soup.points,
             soup.tris[t],
@@ -258,25 +270,36 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
 /// The points `extra` of the closed triangle `tri` (indices into `points`, none a corner),
 /// as those inside each side (side k from corner k to corner k + 1) and the others, where the
 /// predicates are exact (a tolerance could put a point on a side that is not); else all as
-/// others. Re-triangulation splits the sides at the former without locating them, and may
-/// then cut the triangle along chains of cuts without any predicate.
-fn by_side<N: Num>(
+/// others. A point inside an edge by its name (`named`: the edges, smaller end first, each
+/// point lies inside) that is a side is on it without a predicate; the others are told by
+/// orientations, exact and unfiltered where they are zero. Re-triangulation splits the sides
+/// at the former without locating them, and may then cut the triangle along chains of cuts
+/// without any predicate.
+fn by_side<'a, N: Num>(
     points: &[Point3<N>],
     tri: [usize; 3],
     chart: &Chart,
     extra: &BTreeSet<usize>,
+    named: impl Fn(usize) -> &'a [Edge],
     ctx: &N::Ctx,
 ) -> ([SmallVec<[usize; 4]>; 3], SmallVec<[usize; 8]>) {
     let mut sides: [SmallVec<[usize; 4]>; 3] = Default::default();
     if !N::EXACT {
         return (sides, extra.iter().copied().collect());
     }
+    let side_edges = [0, 1, 2].map(|k| key(tri[k], tri[(k + 1) % 3]));
     let corners = tri.map(|v| chart.project(&points[v]));
     let mut others = SmallVec::new();
     for &v in extra {
-        let p = chart.project(&points[v]);
+        let edges = named(v);
         let on = (0..3)
-            .find(|&k| orient(&corners[k], &corners[(k + 1) % 3], &p, ctx) == Ordering::Equal);
+            .find(|&k| edges.contains(&side_edges[k]))
+            .or_else(|| {
+                let p = chart.project(&points[v]);
+                (0..3).find(|&k| {
+                    orient(&corners[k], &corners[(k + 1) % 3], &p, ctx) == Ordering::Equal
+                })
+            });
         match on {
             Some(k) => sides[k].push(v),
             None => others.push(v),
@@ -383,7 +406,7 @@ mod tests {
         let tri = [0, 1, 2];
         let chart = Chart::of_triangle(&points[0], &points[1], &points[2]);
         let extra: BTreeSet<usize> = (3..points.len()).collect();
-        let (sides, others) = by_side(&points, tri, &chart, &extra, &());
+        let (sides, others) = by_side(&points, tri, &chart, &extra, |_| &[], &());
         assert_eq!(
             sides.each_ref().map(|s| s.to_vec()),
             [vec![3], vec![4, 7], vec![5]]

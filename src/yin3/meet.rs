@@ -5,6 +5,7 @@
 //! kept pieces into glued surfaces.
 
 use super::arrange::{arrange, arrange_named, Arrangement, Pairs};
+use super::contact::key;
 use super::error::Yin3Error;
 use super::geom::{piece_in_triangle2, Chart, Triangle2};
 use super::locate::{ray_box, winding};
@@ -134,22 +135,22 @@ fn classify<N: Num>(
 ) -> Vec<Side> {
     let (pieces, contact) = (&arrangement.pieces, &arrangement.contact);
     let op = |i: usize| soup.operand[pieces[i].1] as usize;
-    // Patches across edges that are no edge of the other operand's pieces: the pieces at
-    // each edge, grouped by sorting.
-    let mut at_edge: Vec<((usize, usize), usize)> = Vec::with_capacity(3 * pieces.len());
+    // Patches across edges that are no edge of the other operand's pieces: for each edge its
+    // first piece and the operands of all its pieces (bit o for operand o), then every piece
+    // joined to the first at each edge that only one operand's pieces have.
+    let edges = |t: &[usize; 3]| [0, 1, 2].map(|k| key(t[k], t[(k + 1) % 3]));
+    let mut at_edge: HashMap<(usize, usize), (usize, u8)> =
+        HashMap::with_capacity(2 * pieces.len());
     for (i, (t, _)) in pieces.iter().enumerate() {
-        for k in 0..3 {
-            let (u, v) = (t[k], t[(k + 1) % 3]);
-            at_edge.push(((u.min(v), u.max(v)), i));
+        for e in edges(t) {
+            at_edge.entry(e).or_insert((i, 0)).1 |= 1 << op(i);
         }
     }
-    at_edge.sort_unstable();
     let mut uf = UnionFind::new(pieces.len());
-    for at in at_edge.chunk_by(|x, y| x.0 == y.0) {
-        let o = op(at[0].1);
-        if at.len() > 1 && at.iter().all(|&(_, i)| op(i) == o) {
-            for &(_, w) in &at[1..] {
-                uf.union(at[0].1, w);
+    for (i, (t, _)) in pieces.iter().enumerate() {
+        for e in edges(t) {
+            if let (first, 1 | 2) = at_edge[&e] {
+                uf.union(first, i);
             }
         }
     }

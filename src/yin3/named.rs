@@ -8,7 +8,7 @@
 //! shared corner with a coplanar edge — are left to the arrangement's constructed contacts
 //! ([`super::tri`]); both give exact points, interned by value into one table.
 
-use super::contact::{contact, Contact, End, Site};
+use super::contact::{contact, Contact, Edge, End, Site};
 use super::corners::Corners;
 use super::in_plane::{overlap, InPlane, Overlap};
 use super::parallel::{map_all, PARALLEL_FROM};
@@ -173,6 +173,23 @@ impl<C: Corners> Named<C> {
         }
     }
 
+    /// The edges (each by its ends, the smaller first) inside whose open segment each
+    /// constructed point lies by its names: a pierce point inside its edge, two edges'
+    /// crossing inside both.
+    pub(super) fn edges_through(&self) -> HashMap<usize, SmallVec<[Edge; 2]>> {
+        let mut through: HashMap<usize, SmallVec<[Edge; 2]>> =
+            HashMap::with_capacity(self.made.len());
+        for (site, &v) in &self.made {
+            let edges = through.entry(v).or_default();
+            match *site {
+                Site::Pierce(e, _) => edges.push(e),
+                Site::Edges(e, f) => edges.extend([e, f]),
+                Site::Vertex(..) => {}
+            }
+        }
+        through
+    }
+
     /// The soup's index of the point `end`: an input vertex's own, a constructed point's
     /// made on first sight.
     fn point<N: Num>(&mut self, end: End, soup: &mut Soup<N>) -> usize {
@@ -289,6 +306,97 @@ mod tests {
             }
         }
         counts
+    }
+
+    /// Every point constructed by name lies inside each edge that [`Named::edges_through`]
+    /// gives it, by exact rational arithmetic on the constructed point (collinear with the
+    /// edge's ends and strictly between them), on operands with coplanar faces, edges in each
+    /// other's planes and crossings, on `f64`s and on rationals; many points lie inside two
+    /// edges.
+    #[test]
+    fn named_points_lie_inside_their_edges() {
+        /// The number of (point, edge) facts checked, and of points inside two edges.
+        fn check<C: Corners>(mut named: Named<C>, mut soup: Soup<Rational>) -> [usize; 2] {
+            for (k, &pair) in named_pairs(&soup).iter().enumerate() {
+                named.settled(k, pair, &mut soup);
+            }
+            let mut counts = [0; 2];
+            for (v, edges) in named.edges_through() {
+                let x = &soup.points[v];
+                for &(p, q) in &edges {
+                    let (p, q) = (&soup.points[p], &soup.points[q]);
+                    let d = |a: &Point3<Rational>, b: &Point3<Rational>| {
+                        [
+                            b.x.clone() - a.x.clone(),
+                            b.y.clone() - a.y.clone(),
+                            b.z.clone() - a.z.clone(),
+                        ]
+                    };
+                    let (u, w) = (d(p, q), d(p, x));
+                    let cross = [0, 1, 2].map(|k| {
+                        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+                        u[i].clone() * w[j].clone() - u[j].clone() * w[i].clone()
+                    });
+                    let along =
+                        (0..3).fold(Rational::zero(), |s, k| s + u[k].clone() * w[k].clone());
+                    let length =
+                        (0..3).fold(Rational::zero(), |s, k| s + u[k].clone() * u[k].clone());
+                    assert!(
+                        cross.iter().all(|c| *c == Rational::zero()),
+                        "off the edge's line"
+                    );
+                    assert!(
+                        along > Rational::zero() && along < length,
+                        "not inside the edge"
+                    );
+                    counts[0] += 1;
+                }
+                counts[1] += usize::from(edges.len() == 2);
+            }
+            counts
+        }
+        let mut rng = rand::rngs::StdRng::seed_from_u64(7);
+        let mut seen = [[0; 2]; 2];
+        for round in 0..200 {
+            let (Some(a), Some(b)) = (operand(&mut rng), operand(&mut rng)) else {
+                continue;
+            };
+            let on_rationals = round % 2;
+            let (a, b) = match on_rationals {
+                1 => (turned(&a), turned(&b)),
+                _ => (a, b),
+            };
+            let [a, b] = [&a, &b].map(|s| s.brep().expect("a boundary"));
+            let soup = Soup::of_operands(a, b);
+            let pairs = named_pairs(&soup);
+            let exact = exact_points(&soup.points);
+            let counts = match exact.iter().all(Point3::is_f64) {
+                true => {
+                    let (f64s, floats) = f64_values(&exact);
+                    check(Named::new(F64Corners(f64s), &floats, &soup, &pairs), soup)
+                }
+                false => {
+                    let corners = RationalCorners::new(exact.clone());
+                    check(Named::new(corners, &exact, &soup, &pairs), soup)
+                }
+            };
+            for k in 0..2 {
+                seen[k][on_rationals] += counts[k];
+            }
+        }
+        assert!(seen.iter().flatten().all(|&n| n >= 100), "{seen:?}");
+    }
+
+    /// Every pair of a soup's triangles of different operands, the smaller index first.
+    fn named_pairs(soup: &Soup<Rational>) -> Vec<(usize, usize)> {
+        let first_b = soup
+            .operand
+            .iter()
+            .position(|&o| o == 1)
+            .unwrap_or(soup.tris.len());
+        (0..first_b)
+            .flat_map(|i| (first_b..soup.tris.len()).map(move |j| (i, j)))
+            .collect()
     }
 
     /// A soup of the triangle (0, 0, 0), (4, 0, 0), (0, 4, 0) of operand 0 and the triangle

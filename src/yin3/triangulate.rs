@@ -74,9 +74,9 @@ pub(crate) fn triangulate<N: Num>(
     }
     let mut owner = HashMap::new();
     let mut pieces = Vec::new();
-    let near = enclosures(points);
+    let (near, by_axis) = enclosed(points);
     for (c, &(u, v)) in constraints.iter().enumerate() {
-        for (a, b) in split(points, &near, u, v, ctx) {
+        for (a, b) in split(points, &near, by_axis.as_ref(), u, v, ctx) {
             if let Entry::Vacant(e) = owner.entry(key(a, b)) {
                 e.insert(c);
                 pieces.push((a, b, c));
@@ -274,18 +274,81 @@ fn enclosures<N: Num>(points: &[Point<N>]) -> Vec<[Interval; 2]> {
         .collect()
 }
 
+/// The points' [`enclosures`], and their orders on each axis where the predicates are exact
+/// (a tolerance's orientation may take points beside a segment's box): what [`split`] needs.
+fn enclosed<N: Num>(points: &[Point<N>]) -> (Vec<[Interval; 2]>, Option<ByAxis>) {
+    let near = enclosures(points);
+    let by_axis = N::EXACT.then(|| ByAxis::new(&near));
+    (near, by_axis)
+}
+
+/// The points in the order of their enclosures' lower ends on each axis, with the widest
+/// enclosure on it: the points whose enclosure meets a range of an axis are a run of its
+/// order.
+struct ByAxis {
+    /// Each axis's order of the points.
+    order: [Vec<usize>; 2],
+    /// The lower ends along each order.
+    lo: [Vec<f64>; 2],
+    /// The widest enclosure on each axis (infinite if one is unbounded).
+    width: [f64; 2],
+}
+
+impl ByAxis {
+    /// The orders of the points with the enclosures `near`.
+    fn new(near: &[[Interval; 2]]) -> ByAxis {
+        let axis = |k: usize| {
+            let mut order: Vec<usize> = (0..near.len()).collect();
+            order.sort_by(|&p, &q| near[p][k].bounds().0.total_cmp(&near[q][k].bounds().0));
+            let lo: Vec<f64> = order.iter().map(|&p| near[p][k].bounds().0).collect();
+            let width = (near.iter())
+                .map(|n| n[k].bounds().1 - n[k].bounds().0)
+                .fold(0.0, f64::max);
+            (order, lo, width)
+        };
+        let [(ox, lx, wx), (oy, ly, wy)] = [0, 1].map(axis);
+        ByAxis {
+            order: [ox, oy],
+            lo: [lx, ly],
+            width: [wx, wy],
+        }
+    }
+
+    /// A superset of the points whose enclosures meet the hull of those of `u` and `v` on both
+    /// axes: the shorter of the runs whose enclosures meet it on one axis.
+    fn near_segment(&self, near: &[[Interval; 2]], u: usize, v: usize) -> &[usize] {
+        let run = |k: usize| {
+            let (lo, hi) = Interval::span(near[u][k], near[v][k]).bounds();
+            // An enclosure meets [lo, hi] only if its lower end is at most hi and at least lo
+            // less the widest enclosure.
+            let ends = &self.lo[k];
+            let from = ends.partition_point(|&x| x < lo - self.width[k]);
+            let to = ends.partition_point(|&x| x <= hi);
+            &self.order[k][from..to.max(from)]
+        };
+        let (x, y) = (run(0), run(1));
+        if x.len() <= y.len() {
+            x
+        } else {
+            y
+        }
+    }
+}
+
 /// The pieces of the segment `uv` between consecutive points lying on it (its ends by index:
 /// the points are distinct, and an equal point is where the exact tests cost most).
 fn split<N: Num>(
     points: &[Point<N>],
     near: &[[Interval; 2]],
+    by_axis: Option<&ByAxis>,
     u: usize,
     v: usize,
     ctx: &N::Ctx,
 ) -> Vec<(usize, usize)> {
     let (a, b) = (&points[u], &points[v]);
-    // With exact predicates the segment's box first: most points lie beyond it, which their
-    // enclosures `near` mostly show without exact comparisons, and comparisons cost less than
+    // With exact predicates (`by_axis` given) the segment's box first: only points whose
+    // enclosures `near` may meet it on one axis are looked at, most of those beyond it are
+    // shown so by their enclosures without exact comparisons, and comparisons cost less than
     // an orientation (which no filter decides where it is zero, as on the segment). A
     // tolerance's orientation may take points beside the box.
     let beyond = |w: usize, k: usize| {
@@ -308,9 +371,11 @@ fn split<N: Num>(
     let on_segment = |w: usize| {
         in_box(w) && orient(a, b, &points[w], ctx) == Equal && on_closed_segment(a, b, &points[w])
     };
-    let mut on: Vec<usize> = (0..points.len())
-        .filter(|&w| w == u || w == v || on_segment(w))
-        .collect();
+    let mut on: Vec<usize> = match by_axis {
+        Some(by_axis) => by_axis.near_segment(near, u, v).to_vec(),
+        None => (0..points.len()).collect(),
+    };
+    on.retain(|&w| w == u || w == v || on_segment(w));
     on.sort_by(|&x, &y| points[x].cmp(&points[y]));
     on.windows(2).map(|w| (w[0], w[1])).collect()
 }
@@ -671,32 +736,58 @@ mod tests {
     /// zero width) and a slanted one, in both backends.
     #[test]
     fn a_segment_splits_at_the_points_on_it() {
+        fn split<N: Num>(
+            points: &[Point<N>],
+            u: usize,
+            v: usize,
+            ctx: &N::Ctx,
+        ) -> Vec<(usize, usize)> {
+            let (near, by_axis) = enclosed(points);
+            super::split(points, &near, by_axis.as_ref(), u, v, ctx)
+        }
         fn splits<N: Num>(ctx: &N::Ctx) {
             // Horizontal: 0 → 1 through 2; 3 and 4 collinear beyond the ends; 5 beside.
             let flat = pts::<N>(&[(0, 0), (4, 0), (2, 0), (6, 0), (-1, 0), (2, 1)]);
-            assert_eq!(
-                split(&flat, &enclosures(&flat), 0, 1, ctx),
-                [(0, 2), (2, 1)]
-            );
-            assert_eq!(
-                split(&flat, &enclosures(&flat), 1, 0, ctx),
-                [(0, 2), (2, 1)]
-            );
+            assert_eq!(split(&flat, 0, 1, ctx), [(0, 2), (2, 1)]);
+            assert_eq!(split(&flat, 1, 0, ctx), [(0, 2), (2, 1)]);
             // Vertical, the same points turned.
             let upright = pts::<N>(&[(0, 0), (0, 4), (0, 2), (0, 6), (0, -1), (1, 2)]);
-            assert_eq!(
-                split(&upright, &enclosures(&upright), 0, 1, ctx),
-                [(0, 2), (2, 1)]
-            );
+            assert_eq!(split(&upright, 0, 1, ctx), [(0, 2), (2, 1)]);
             // Slanted: (3, 3) past the end, (1, 2) beside, (1, 1) and (2, 2) on it.
             let slant = pts::<N>(&[(0, 0), (2, 2), (3, 3), (1, 2), (1, 1)]);
-            assert_eq!(
-                split(&slant, &enclosures(&slant), 0, 1, ctx),
-                [(0, 4), (4, 1)]
-            );
+            assert_eq!(split(&slant, 0, 1, ctx), [(0, 4), (4, 1)]);
         }
         splits::<Rational>(&());
         splits::<Float>(&Tolerance::default().resolve(8.0, 8.0).expect("a tolerance"));
+    }
+
+    /// Looking only at the points whose enclosures may meet a segment's box ([`ByAxis`])
+    /// finds the same points on it as looking at all: segments between points of a grid of
+    /// thirds (no `f64`s, so enclosures have width), many through other grid points, on
+    /// each axis, diagonal and slanted.
+    #[test]
+    fn a_split_by_axis_finds_every_point_on_the_segment() {
+        let third = |k: i64| Rational::from_i64(k) / Rational::from_i64(3);
+        let points: Vec<Point<Rational>> = (0..49)
+            .map(|i| Point::new(third(i % 7 - 3), third(i / 7 - 3)))
+            .collect();
+        let (near, by_axis) = enclosed(&points);
+        let by_axis = by_axis.expect("exact predicates");
+        let (mut through, mut pruned) = (0, 0);
+        for u in 0..points.len() {
+            for v in 0..points.len() {
+                if u == v {
+                    continue;
+                }
+                let all = split(&points, &near, None, u, v, &());
+                let some = split(&points, &near, Some(&by_axis), u, v, &());
+                assert_eq!(some, all, "segment {u}-{v}");
+                through += usize::from(all.len() > 1);
+                pruned += usize::from(by_axis.near_segment(&near, u, v).len() < points.len());
+            }
+        }
+        // Segments through other points, and candidate runs shorter than all points.
+        assert!(through >= 400 && pruned >= 1500, "{through} {pruned}");
     }
 
     #[test]
