@@ -206,8 +206,16 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
         cuts[j].extend(cut_j);
     }
     // Every contact point goes to every triangle containing it: the hierarchy of the points'
-    // boxes walked with the triangles'.
-    let contacts: Vec<usize> = contact.iter().copied().collect();
+    // boxes walked with the triangles'. A point inside an edge by its name already has them
+    // all: inside an edge e of one operand and inside a triangle s or an edge f of the other,
+    // it lies (each operand's boundary being conforming) only in e's triangles and in s or
+    // in f's triangles. Each such pair of triangles meets there, in no shared corner, and the
+    // point is an end of the pair's contact (e pierces s's plane; e and f cross), named alike
+    // or constructed with the same value: it is in both triangles' points already.
+    let through = named.map_or_else(HashMap::new, |n| n.edges_through());
+    let contacts: Vec<usize> = (contact.iter().copied())
+        .filter(|v| !through.contains_key(v))
+        .collect();
     let point_boxes: Vec<AABB<[f64; 3]>> = (contacts.iter())
         .map(|&v| f64_box([&soup.points[v]]))
         .collect();
@@ -224,7 +232,6 @@ fn arrange_on<N: Num, C: Corners, M: Num>(
             extra[t].insert(v);
         }
     }
-    let through = named.map_or_else(HashMap::new, |n| n.edges_through());
     let no_edges: &[Edge] = &[];
     let named_edges = |v: usize| through.get(&v).map_or(no_edges, |e| &e[..]);
     let mut pieces = Vec::with_capacity(n);

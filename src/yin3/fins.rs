@@ -4,6 +4,7 @@
 
 use crate::kernel::{orient3d, Point3};
 use crate::num::Num;
+use smallvec::SmallVec;
 use std::cmp::Ordering;
 
 /// A triangle seen from one of its edges (a "fin" of the edge).
@@ -232,14 +233,17 @@ fn sort_about<N: Num>(
             }
         }
     };
-    let first = fins[0];
-    fins[1..].sort_by(|f, g| {
-        let (cf, cg) = (&points[f.apex], &points[g.apex]);
-        class(cf)
-            .cmp(&class(cg))
-            .then_with(|| orient3d(a, b, cg, cf, ctx))
+    // Each fin's class found once, not at every comparison.
+    let mut keyed: SmallVec<[(u8, Fin); 8]> = (fins[1..].iter())
+        .map(|&f| (class(&points[f.apex]), f))
+        .collect();
+    keyed.sort_by(|(cf, f), (cg, g)| {
+        cf.cmp(cg)
+            .then_with(|| orient3d(a, b, &points[g.apex], &points[f.apex], ctx))
     });
-    debug_assert_eq!(fins[0], first);
+    for (slot, (_, f)) in fins[1..].iter_mut().zip(keyed) {
+        *slot = f;
+    }
 }
 
 /// True if fins at every edge alternate in direction (invariant I3 of the yin3 docs); otherwise the
