@@ -51,7 +51,8 @@
 //!   line. Every contact point is tagged with the feature it lies on in both triangles.
 //! * **Re-triangulation** (seed 004 step 2): each cut triangle with its contact points and
 //!   constraint segments is triangulated exactly in its chart (orientations only, no Delaunay);
-//!   a point on an edge goes into every triangle on that edge, and coplanar triangles of both
+//!   a point on an edge goes into every triangle on that edge (a point named inside an edge is
+//!   placed on it by its name, others by exact orientations), and coplanar triangles of both
 //!   operands get identical pieces.
 //! * **Selection** (seed 000 Lemma 4.6, Cor. 4.7, Def. 4.8, MRS-b..d in 3D): a piece of A
 //!   coincident with a piece of B of the same orientation is kept once, of opposite orientation
