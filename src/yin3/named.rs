@@ -180,12 +180,13 @@ impl<C: Corners> Named<C> {
         let mut through: HashMap<usize, SmallVec<[Edge; 2]>> =
             HashMap::with_capacity(self.made.len());
         for (site, &v) in &self.made {
-            let edges = through.entry(v).or_default();
-            match *site {
-                Site::Pierce(e, _) => edges.push(e),
-                Site::Edges(e, f) => edges.extend([e, f]),
-                Site::Vertex(..) => {}
-            }
+            let edges: SmallVec<[Edge; 2]> = match *site {
+                Site::Pierce(e, _) => SmallVec::from_slice(&[e]),
+                Site::Edges(e, f) => SmallVec::from_slice(&[e, f]),
+                // An input point: inside no edge, and not to be taken for a named one.
+                Site::Vertex(..) => continue,
+            };
+            through.entry(v).or_default().extend(edges);
         }
         through
     }

@@ -315,7 +315,8 @@ impl ByAxis {
     }
 
     /// A superset of the points whose enclosures meet the hull of those of `u` and `v` on both
-    /// axes: the shorter of the runs whose enclosures meet it on one axis.
+    /// axes: the shorter of the two axes' runs, each holding every point whose enclosure meets
+    /// the hull on that axis (and some whose enclosure ends just before it).
     fn near_segment(&self, near: &[[Interval; 2]], u: usize, v: usize) -> &[usize] {
         let run = |k: usize| {
             let (lo, hi) = Interval::span(near[u][k], near[v][k]).bounds();
