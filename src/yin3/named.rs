@@ -271,27 +271,49 @@ mod tests {
         YinSet3::from_triangles(points, faces).expect("a turned set is valid")
     }
 
+    /// Two operands ([`operand`]), [`turned`] where `on_rationals`.
+    fn operands(
+        rng: &mut rand::rngs::StdRng,
+        on_rationals: bool,
+    ) -> Option<(YinSet3<Rational>, YinSet3<Rational>)> {
+        // Both drawn, so that every round takes the same draws.
+        let (a, b) = (operand(rng), operand(rng));
+        let (a, b) = (a?, b?);
+        Some(match on_rationals {
+            true => (turned(&a), turned(&b)),
+            false => (a, b),
+        })
+    }
+
+    /// `f64s` or `rationals` applied to the classification of the soup's `pairs`: on the
+    /// points' `f64`s where each is one (as [`arrange_named`] does), on rationals otherwise.
+    fn with_named<R>(
+        soup: &Soup<Rational>,
+        pairs: &[(usize, usize)],
+        f64s: impl FnOnce(Named<F64Corners>) -> R,
+        rationals: impl FnOnce(Named<RationalCorners>) -> R,
+    ) -> R {
+        let exact = exact_points(&soup.points);
+        match exact.iter().all(Point3::is_f64) {
+            true => {
+                let (values, floats) = f64_values(&exact);
+                f64s(Named::new(F64Corners(values), &floats, soup, pairs))
+            }
+            false => {
+                let corners = RationalCorners::new(exact.clone());
+                rationals(Named::new(corners, &exact, soup, pairs))
+            }
+        }
+    }
+
     /// How the classification takes the pairs of triangles of `a` and `b` (all of them):
     /// counts of crossing pairs, pairs with an edge on the other's plane, coplanar pairs
     /// overlapping in an area, coplanar pairs whose edges cross, and open pairs.
     fn contact_counts(a: &YinSet3<Rational>, b: &YinSet3<Rational>) -> [usize; 5] {
         let [a_brep, b_brep] = [a, b].map(|s| s.brep().expect("a boundary"));
         let soup = Soup::of_operands(a_brep, b_brep);
-        let first_b = a.triangles().len();
-        let pairs: Vec<(usize, usize)> = (0..first_b)
-            .flat_map(|i| (first_b..soup.tris.len()).map(move |j| (i, j)))
-            .collect();
-        let exact = exact_points(&soup.points);
-        let contacts = match exact.iter().all(Point3::is_f64) {
-            true => {
-                let (f64s, floats) = f64_values(&exact);
-                Named::new(F64Corners(f64s), &floats, &soup, &pairs).contacts
-            }
-            false => {
-                let corners = RationalCorners::new(exact.clone());
-                Named::new(corners, &exact, &soup, &pairs).contacts
-            }
-        };
+        let pairs = named_pairs(&soup);
+        let contacts = with_named(&soup, &pairs, |n| n.contacts, |n| n.contacts);
         let mut counts = [0; 5];
         for c in &contacts {
             match c {
@@ -360,28 +382,19 @@ mod tests {
         let mut rng = rand::rngs::StdRng::seed_from_u64(7);
         let mut seen = [[0; 2]; 2];
         for round in 0..200 {
-            let (Some(a), Some(b)) = (operand(&mut rng), operand(&mut rng)) else {
-                continue;
-            };
             let on_rationals = round % 2;
-            let (a, b) = match on_rationals {
-                1 => (turned(&a), turned(&b)),
-                _ => (a, b),
+            let Some((a, b)) = operands(&mut rng, on_rationals == 1) else {
+                continue;
             };
             let [a, b] = [&a, &b].map(|s| s.brep().expect("a boundary"));
             let soup = Soup::of_operands(a, b);
             let pairs = named_pairs(&soup);
-            let exact = exact_points(&soup.points);
-            let counts = match exact.iter().all(Point3::is_f64) {
-                true => {
-                    let (f64s, floats) = f64_values(&exact);
-                    check(Named::new(F64Corners(f64s), &floats, &soup, &pairs), soup)
-                }
-                false => {
-                    let corners = RationalCorners::new(exact.clone());
-                    check(Named::new(corners, &exact, &soup, &pairs), soup)
-                }
-            };
+            let counts = with_named(
+                &soup,
+                &pairs,
+                |n| check(n, soup.clone()),
+                |n| check(n, soup.clone()),
+            );
             for k in 0..2 {
                 seen[k][on_rationals] += counts[k];
             }
@@ -399,13 +412,9 @@ mod tests {
         let mut rng = rand::rngs::StdRng::seed_from_u64(11);
         let mut constructed = [0; 2];
         for round in 0..200 {
-            let (Some(a), Some(b)) = (operand(&mut rng), operand(&mut rng)) else {
-                continue;
-            };
             let on_rationals = round % 2;
-            let (a, b) = match on_rationals {
-                1 => (turned(&a), turned(&b)),
-                _ => (a, b),
+            let Some((a, b)) = operands(&mut rng, on_rationals == 1) else {
+                continue;
             };
             let [a, b] = [&a, &b].map(|s| s.brep().expect("a boundary"));
             let mut soup = Soup::of_operands(a, b);
@@ -487,13 +496,9 @@ mod tests {
         // and with coplanar edges crossing, on f64s and on rationals.
         let mut seen = [[0; 2]; 4];
         for round in 0..600 {
-            let (Some(a), Some(b)) = (operand(&mut rng), operand(&mut rng)) else {
-                continue;
-            };
             let on_rationals = round % 2;
-            let (a, b) = match on_rationals {
-                1 => (turned(&a), turned(&b)),
-                _ => (a, b),
+            let Some((a, b)) = operands(&mut rng, on_rationals == 1) else {
+                continue;
             };
             for (x, y) in [(&a, b.clone()), (&a, b.complement())] {
                 if x.is_empty() || y.is_empty() {
