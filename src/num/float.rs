@@ -215,6 +215,10 @@ pub(crate) fn exact_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Orderin
 #[cold]
 #[inline(never)]
 fn unfiltered_orient_f64(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
+    if (0..2).any(|k| a[k] == c[k] && b[k] == c[k]) {
+        // On one line of constant coordinate: no area.
+        return Ordering::Equal;
+    }
     // Coordinates of magnitude in [2^-480, 2^500] (or 0) are multiples of 2^-532: every
     // product of two stays representable, and none overflows.
     let robust_sign = |p: [f64; 6]| {
@@ -255,6 +259,10 @@ pub(crate) fn exact_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64;
 /// [`exact_orient3d_f64`] without its static filter, for callers whose own filter failed:
 /// in grid integers where they fit, else [`exact_sign_f64`].
 fn unfiltered_orient3d_f64(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
+    if (0..3).any(|k| a[k] == d[k] && b[k] == d[k] && c[k] == d[k]) {
+        // In one plane of constant coordinate (faces of boxes and grids): no volume.
+        return Ordering::Equal;
+    }
     if let Some(sign) = grid_orient3d(a, b, c, d) {
         return sign;
     }

@@ -1,12 +1,13 @@
 //! The contacts of a meet's arrangement that the transversal meet's classification settles
-//! ([`super::contact`]; yin3 docs: *Meet*), those with an edge in the other's plane
-//! ([`Contact::Along`], which the transversal meet declines), and coplanar pairs, classified in
-//! their plane ([`super::in_plane`]): decided from exact orientations of the input vertices
-//! alone (`f64` filters and stack integers where every vertex is an `f64`, filtered rational
-//! orientations otherwise), each end named by what defines it ([`Site`]) and constructed once
-//! however many pairs find it. The other pairs — a vertex on an edge or on an edge's line, a
-//! shared corner with a coplanar edge — are left to the arrangement's constructed contacts
-//! ([`super::tri`]); both give exact points, interned by value into one table.
+//! ([`super::contact`]; yin3 docs: *Meet*), those with an edge in the other's plane or an end
+//! on the other's edge ([`Contact::Along`], [`Contact::OnEdge`], which the transversal meet
+//! declines), and coplanar pairs, classified in their plane ([`super::in_plane`]): decided from
+//! exact orientations of the input vertices alone (`f64` filters and stack integers where every
+//! vertex is an `f64`, filtered rational orientations otherwise), each end named by what
+//! defines it ([`Site`]) and constructed once however many pairs find it. The other pairs — a
+//! shared corner with a coplanar edge, or with a corner on the other's plane — are left to the
+//! arrangement's constructed contacts ([`super::tri`]); both give exact points, interned by
+//! value into one table.
 
 use super::contact::{contact, Contact, Edge, End, Site};
 use super::corners::Corners;
@@ -105,7 +106,9 @@ impl<C: Corners> Named<C> {
             for c in map_all(chunk, parallel, |&pair| classify(pair, across)) {
                 match &c {
                     Class::Of(Contact::Degenerate) => open += 1,
-                    Class::Of(Contact::Cross(_) | Contact::Along(_)) => crossed += 1,
+                    Class::Of(Contact::Cross(_) | Contact::Along(_) | Contact::OnEdge(_)) => {
+                        crossed += 1
+                    }
                     _ => {}
                 }
                 contacts.push(c);
@@ -138,7 +141,7 @@ impl<C: Corners> Named<C> {
         match contact {
             Contact::Apart => Settled::Apart,
             Contact::Touch([x, y]) => Settled::Touch([x[0], y[0]]),
-            Contact::Cross(ends) | Contact::Along(ends) => {
+            Contact::Cross(ends) | Contact::Along(ends) | Contact::OnEdge(ends) => {
                 Settled::Cross(ends.map(|end| self.point(end, soup)))
             }
             Contact::Degenerate => Settled::Open,
@@ -307,25 +310,27 @@ mod tests {
     }
 
     /// How the classification takes the pairs of triangles of `a` and `b` (all of them):
-    /// counts of crossing pairs, pairs with an edge on the other's plane, coplanar pairs
-    /// overlapping in an area, coplanar pairs whose edges cross, and open pairs.
-    fn contact_counts(a: &YinSet3<Rational>, b: &YinSet3<Rational>) -> [usize; 5] {
+    /// counts of crossing pairs, pairs with an edge on the other's plane, pairs with an end on
+    /// the other's edge, coplanar pairs overlapping in an area, coplanar pairs whose edges
+    /// cross, and open pairs.
+    fn contact_counts(a: &YinSet3<Rational>, b: &YinSet3<Rational>) -> [usize; 6] {
         let [a_brep, b_brep] = [a, b].map(|s| s.brep().expect("a boundary"));
         let soup = Soup::of_operands(a_brep, b_brep);
         let pairs = named_pairs(&soup);
         let contacts = with_named(&soup, &pairs, |n| n.contacts, |n| n.contacts);
-        let mut counts = [0; 5];
+        let mut counts = [0; 6];
         for c in &contacts {
             match c {
                 Class::Of(Contact::Cross(_)) => counts[0] += 1,
                 Class::Of(Contact::Along(_)) => counts[1] += 1,
-                Class::InPlane(Some(o)) if o.area => counts[2] += 1,
-                Class::Of(Contact::Degenerate) | Class::InPlane(None) => counts[4] += 1,
+                Class::Of(Contact::OnEdge(_)) => counts[2] += 1,
+                Class::InPlane(Some(o)) if o.area => counts[3] += 1,
+                Class::Of(Contact::Degenerate) | Class::InPlane(None) => counts[5] += 1,
                 _ => {}
             }
             if let Class::InPlane(Some(o)) = c {
                 if o.points.iter().any(|x| matches!(x, InPlane::Edges(..))) {
-                    counts[3] += 1;
+                    counts[4] += 1;
                 }
             }
         }
@@ -461,15 +466,15 @@ mod tests {
     }
 
     /// Classification across planes stops where open pairs outnumber the crossings by far
-    /// (a vertex on an edge of the other: two chunks classified of 10⁴ pairs), and goes on
-    /// where they cross; coplanar pairs are classified throughout.
+    /// (a shared corner with an edge of the other in one's plane: two chunks classified of
+    /// 10⁴ pairs), and goes on where they cross; coplanar pairs are classified throughout.
     #[test]
     fn classification_stops_where_it_settles_nothing() {
-        let on_edge = [[2, 0, 0], [2, -1, 1], [2, -1, -1]];
+        let corner_and_edge = [[0, 0, 0], [1, 1, 0], [1, 1, -1]];
         let crossing = [[1, 1, -1], [1, 1, 1], [2, -3, 0]];
         let coplanar = [[1, 1, 0], [3, 1, 0], [1, 3, 0]];
         for (s, unclassified, open) in [
-            (on_edge, 10_000 - 2 * CHUNK, 2 * CHUNK),
+            (corner_and_edge, 10_000 - 2 * CHUNK, 2 * CHUNK),
             (crossing, 0, 0),
             (coplanar, 0, 0),
         ] {
@@ -487,14 +492,14 @@ mod tests {
     /// of halves (classified on `f64`s) and turned by a rational rotation (on rationals), and
     /// their complements: the meet with pairs settled by name equals the meet with every
     /// contact constructed; crossing pairs and open pairs occur together in many of the meets,
-    /// and pairs with an edge on the other's plane, coplanar pairs overlapping in an area and
-    /// coplanar pairs whose edges cross each in many.
+    /// and pairs with an edge on the other's plane, pairs with an end on the other's edge,
+    /// coplanar pairs overlapping in an area and coplanar pairs whose edges cross each in many.
     #[test]
     fn named_contacts_meet_as_constructed_ones() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(53);
-        // Meets with crossing and open pairs, with pairs along a plane, with coplanar overlaps
-        // and with coplanar edges crossing, on f64s and on rationals.
-        let mut seen = [[0; 2]; 4];
+        // Meets with crossing and open pairs, with pairs along a plane, with ends on edges, with
+        // coplanar overlaps and with coplanar edges crossing, on f64s and on rationals.
+        let mut seen = [[0; 2]; 5];
         for round in 0..600 {
             let on_rationals = round % 2;
             let Some((a, b)) = operands(&mut rng, on_rationals == 1) else {
@@ -509,8 +514,14 @@ mod tests {
                     constructed_meet(x, &y),
                     "round {round}"
                 );
-                let [cross, along, area, edges, open] = contact_counts(x, &y);
-                let kinds = [cross > 0 && open > 0, along > 0, area > 0, edges > 0];
+                let [cross, along, on_edge, area, edges, open] = contact_counts(x, &y);
+                let kinds = [
+                    cross > 0 && open > 0,
+                    along > 0,
+                    on_edge > 0,
+                    area > 0,
+                    edges > 0,
+                ];
                 for (k, _) in kinds.iter().enumerate().filter(|(_, &on)| on) {
                     seen[k][on_rationals] += 1;
                 }

@@ -227,7 +227,7 @@ fn meet_on<N: Num, C: Corners>(a: &Brep<N>, b: &Brep<N>, p: &C) -> Option<Transv
                 Contact::Apart => {}
                 Contact::Cross(ends) => crossing.push((t, s, ends)),
                 Contact::Touch(at) => touching.push(at),
-                Contact::Along(_) | Contact::Degenerate => return false,
+                Contact::Along(_) | Contact::OnEdge(_) | Contact::Degenerate => return false,
             }
             true
         });
