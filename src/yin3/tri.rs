@@ -246,12 +246,15 @@ pub(crate) fn corners_after(tri: [usize; 3], v: usize) -> [usize; 2] {
 
 /// True if the triangles `t` and `s` (indices into `points`) meet only in their shared
 /// corners, decided on their images in the coordinate plane onto which `t` projects largest
-/// (chosen in `f64`, a hint only), where neither image degenerates: projecting is then
-/// one-to-one on each triangle, so images that meet only in the images of shared corners mean
-/// triangles that meet only there. Shared edge: the third corners' images strictly on
-/// opposite sides of it; one shared corner: the images' closed corners at it disjoint; none:
-/// an edge line of one image with the other image strictly outside (separating axis). False
-/// where it cannot tell.
+/// (chosen in `f64`, a hint only), where t's image does not degenerate: projecting is then
+/// one-to-one on t, so images that meet only in the images of shared corners mean triangles
+/// that meet only there (a point of both projects into both images, where only a shared
+/// corner's image and t's one point at it lie). One shared corner: s's other corners strictly
+/// outside the line of one of t's edges at it; else, where s's image does not degenerate
+/// either, as for two shared corners (the third corners' images strictly on opposite sides
+/// of the shared edge), one (the images' closed corners at it disjoint) or none (an edge line
+/// of one image with the other image strictly outside: separating axis). False where it
+/// cannot tell.
 pub(crate) fn images_meet_only_in_shared<N: Num>(
     points: &[Point3<N>],
     t: [usize; 3],
@@ -270,8 +273,8 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
         [0, 1, 2],
         [0, 1, 2].map(|k| t.iter().position(|&v| v == s[k]).unwrap_or(3 + k)),
     );
-    let (st, ss) = (o(t[0], t[1], t[2]), o(s[0], s[1], s[2]));
-    if st == Equal || ss == Equal {
+    let st = o(t[0], t[1], t[2]);
+    if st == Equal {
         return false;
     }
     let (mut shared, mut n) = ([0; 3], 0);
@@ -279,11 +282,21 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
         shared[n] = v;
         n += 1;
     }
+    if let [v] = shared[..n] {
+        // t = (v, a, b) in its turn `st`: outside its edge va right of it, outside bv left.
+        let ([a, b], cs) = (corners_after(t, v), corners_after(s, v));
+        if cs.iter().all(|&x| o(v, a, x) == st.reverse()) || cs.iter().all(|&x| o(v, b, x) == st) {
+            return true;
+        }
+    }
+    let ss = o(s[0], s[1], s[2]);
+    if ss == Equal {
+        return false;
+    }
     // Whether `x` lies in the closed corner spanned at `v` by `a` and `b` (oriented `sign`).
     let in_corner = |v: usize, [a, b]: [usize; 2], sign: Ordering, x: usize| {
-        [o(v, a, x), o(v, x, b)]
-            .iter()
-            .all(|&o| o == sign || o == Equal)
+        let within = |o: Ordering| o == sign || o == Equal;
+        within(o(v, a, x)) && within(o(v, x, b))
     };
     match shared[..n] {
         [x, y] => {
