@@ -71,9 +71,7 @@ pub(super) enum Contact {
     /// which the transversal meet does not provide for, so it declines it; an arrangement cuts
     /// both triangles along it.
     OnEdge([End; 2]),
-    /// Meeting otherwise (overlapping in a plane; a shared corner with a coplanar edge or
-    /// face, or an edge or a corner of one on the other's plane beside a shared corner): not
-    /// handled here.
+    /// Meeting otherwise (coplanar, meeting beyond their shared corners): not handled here.
     Degenerate,
 }
 
@@ -176,10 +174,15 @@ fn touch<N: Num, C: Corners>(
                 [sides[(k + 1) % 3], sides[(k + 2) % 3]]
             };
             let sides = [sides_after(s, y, s_sides), sides_after(t, x, t_sides)];
+            let straddle = |[u, v]: [Ordering; 2]| u != v && u != Equal && v != Equal;
             if meet_only_at_given(corners[x], after(t, x), after(s, y), sides, &ctx) {
                 Contact::Touch([[x, y]; 2])
+            } else if s_sides.iter().all(|&o| o == Equal) {
+                Contact::Degenerate
+            } else if sides.iter().all(|&two| straddle(two)) {
+                through_corner(p, (ti, t), (si, s), [x, y], sides[0])
             } else {
-                through_corner(p, (ti, t), (si, s), [x, y], sides)
+                on_plane(p, (ti, t), (si, s), [s_sides, t_sides])
             }
         }
         [Some(e0), Some(e1), None] => {
@@ -203,22 +206,18 @@ fn touch<N: Num, C: Corners>(
 }
 
 /// Triangles `t` and `s` sharing only the corner `x` (t's) = `y` (s's), which meet elsewhere
-/// too: if the corners after it straddle the other's plane strictly on both (`sides`: s's
-/// against t's plane, t's against s's), both meet the planes' line in a segment from the corner
-/// to the opposite edge's pierce point, pointing the same way (they meet beyond the corner),
-/// and they cross from the corner to the nearer of the two — by the sign of orient3d of the
-/// opposite edges, as in [`contact`]. Else degenerate.
+/// too, the corners after it straddling the other's plane strictly on both (`sd`: the side of
+/// t's plane of s's second corner after it): both meet the planes' line in a segment from the
+/// corner to the opposite edge's pierce point, pointing the same way (they meet beyond the
+/// corner), and they cross from the corner to the nearer of the two — by the sign of orient3d
+/// of the opposite edges, as in [`contact`].
 fn through_corner(
     p: &impl Corners,
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
     [x, y]: [usize; 2],
-    [[sc, sd], [sa, sb]]: [[Ordering; 2]; 2],
+    [_, sd]: [Ordering; 2],
 ) -> Contact {
-    let straddle = |u: Ordering, v: Ordering| u != v && u != Equal && v != Equal;
-    if !(straddle(sc, sd) && straddle(sa, sb)) {
-        return Contact::Degenerate;
-    }
     let ([a, b], [c, d]) = (corners_after(t, x), corners_after(s, y));
     let far = match p.orient3d([a, b, c, d]) {
         Equal => End::Edges(key(a, b), key(c, d), si),
@@ -228,17 +227,19 @@ fn through_corner(
     Contact::Cross([End::Corner(x, y), far])
 }
 
-/// Triangles `t` and `s` sharing no corner, not coplanar, with a vertex on the other's plane
-/// (`sides` as in [`touch`]). Each meets the planes' line in a segment or a point whose ends are its vertices
-/// on the other's plane and its straddling edges' pierce points, each on a line (f₀, f₁) with
-/// f₁ off that plane ([`line_ends`]). Such an end lies in the other triangle (the host) iff
-/// it lies left of or on each of the host's edges e, that is, iff no orient3d(e₀, e₁, f₀, f₁)
-/// has the sign opposite to f₁'s side; the ends of the overlap are the ends of either that lie
-/// in the other, named by where they lie: strictly inside it as themselves; a pierce point on
-/// one host edge where the two edges cross ([`End::Edges`]); a vertex on a host edge as
-/// itself, and a pierce point on two host edges as the host's corner there ([`End::Vertex`]
-/// both, on the boundary of the triangle named: [`Contact::OnEdge`]). An edge on the other's
-/// plane makes the contact [`Contact::Along`].
+/// Triangles `t` and `s`, not coplanar, with a vertex on the other's plane (`sides` as in
+/// [`touch`]), sharing no corner or one. Each meets the planes' line in a segment or a point
+/// whose ends are its vertices on the other's plane and its straddling edges' pierce points,
+/// each on a line (f₀, f₁) with f₁ off that plane ([`line_ends`]). Such an end lies in the
+/// other triangle (the host) iff it lies left of or on each of the host's edges e, that is,
+/// iff no orient3d(e₀, e₁, f₀, f₁) has the sign opposite to f₁'s side; the ends of the overlap
+/// are the ends of either that lie in the other, named by where they lie: strictly inside it
+/// as themselves; a pierce point on one host edge where the two edges cross ([`End::Edges`]);
+/// a vertex on a host edge as itself, and a pierce point on two host edges as the host's
+/// corner there ([`End::Vertex`] both, on the boundary of the triangle named:
+/// [`Contact::OnEdge`]); a vertex on two host edges, the shared corner, as [`End::Corner`]
+/// (a touch where it is the only end). An edge on the other's plane makes the contact
+/// [`Contact::Along`].
 fn on_plane(
     p: &impl Corners,
     (ti, t): (usize, [usize; 3]),
@@ -277,14 +278,12 @@ fn on_plane(
                 }
                 (&[k, l], End::Pierce(..)) => {
                     on_edge = true;
-                    let corner = [host[k], host[(k + 1) % 3]]
-                        .into_iter()
-                        .find(|v| [host[l], host[(l + 1) % 3]].contains(v));
-                    End::Vertex(
-                        corner.expect("two edges of a triangle share a corner"),
-                        mine_index,
-                    )
+                    End::Vertex(corner_of(host, k, l), mine_index)
                 }
+                (&[k, l], End::Vertex(v, _)) => match host == t {
+                    true => End::Corner(corner_of(host, k, l), v),
+                    false => End::Corner(v, corner_of(host, k, l)),
+                },
                 _ => return Contact::Degenerate,
             };
             if !ends.contains(&found) {
@@ -295,6 +294,7 @@ fn on_plane(
     let edge_on_plane = |sides: &[Ordering; 3]| sides.iter().filter(|&&o| o == Equal).count() == 2;
     let ends = match ends[..] {
         [] => return Contact::Apart,
+        [End::Corner(x, y)] => return Contact::Touch([[x, y]; 2]),
         [x @ (End::Edges(..) | End::Vertex(..))] => [x, x],
         [x, y] => [x, y],
         _ => return Contact::Degenerate,
@@ -306,6 +306,14 @@ fn on_plane(
     } else {
         Contact::Cross(ends)
     }
+}
+
+/// The corner of triangle `tri` where its edges `k` (from corner k to k + 1) and `l` meet.
+fn corner_of(tri: [usize; 3], k: usize, l: usize) -> usize {
+    let corner = [tri[k], tri[(k + 1) % 3]]
+        .into_iter()
+        .find(|v| [tri[l], tri[(l + 1) % 3]].contains(v));
+    corner.expect("two edges of a triangle share a corner")
 }
 
 /// An end of a triangle's meet with the planes' line, with a line (f₀, f₁) through it, f₁ off
@@ -454,8 +462,8 @@ mod tests {
     /// x + y ≤ 1) and s (in the plane x = y) meet along the diagonal from the origin to where
     /// t's long edge (points 1–2) pierces s, (1/2, 1/2, 0), short of where s's far edge
     /// pierces t's plane; with s's far edge moved to x = y = 1/2 the edges cross there, and to
-    /// x = y = 1/4 s's edge pierces t first. A triangle with a corner on the other's plane
-    /// beside a shared corner is degenerate.
+    /// x = y = 1/4 s's edge pierces t first. With its edge from the corner on t's plane, s
+    /// meets t along it from the corner to where t's long edge crosses it.
     #[test]
     fn triangles_cross_from_a_shared_corner_to_the_nearer_end() {
         let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
@@ -470,10 +478,11 @@ mod tests {
             [End::Corner(0, 3), End::Edges((1, 2), (4, 5), 1)]
         );
         assert_eq!(cross(s(0.25)), [End::Corner(0, 3), End::Pierce((4, 5), 0)]);
-        assert!(matches!(
-            contact_of(t, [[0.0; 3], [1.0, 1.0, 0.0], [1.0, 1.0, -1.0]]),
-            Contact::Degenerate
-        ));
+        let edge_in_plane = contact_of(t, [[0.0; 3], [1.0, 1.0, 0.0], [1.0, 1.0, -1.0]]);
+        assert_eq!(
+            edge_in_plane,
+            Contact::Along([End::Corner(0, 3), End::Edges((1, 2), (3, 4), 1)])
+        );
     }
 
     /// An edge of t on s's plane (z = 0, s the triangle x, y ≥ −1, x + y ≤ 2): they meet

@@ -145,13 +145,14 @@
 //!   it is, nothing to round); boundaries that only touch in shared corners and edges by one
 //!   ray per patch, nothing constructed. At the first coplanar overlap, edge in the other's
 //!   plane or vertex on an edge of the other, the meet takes the general exact arrangement.
-//!   There too every pair of the kinds above is settled and named this way, and so is every
-//!   pair sharing no corner where one triangle has an edge in the other's plane and no corner
-//!   of either lies on the line of an edge of the other in that plane, and every coplanar
-//!   pair (its common polygon's corners: corners of either in the other, and edges crossing,
+//!   There every pair is settled and named this way: besides the kinds above, every pair with
+//!   a vertex on the other's plane — an edge in that plane, a vertex on an edge of the other,
+//!   an edge through the other's corner, beside a shared corner or not — by the ends of each
+//!   triangle's meet with the planes' line that lie in the other, and every coplanar pair (its
+//!   common polygon's corners: corners of either in the other, and edges crossing,
 //!   constructed where one edge pierces the plane through the other along the chart's dropped
-//!   axis); only the remaining pairs construct their contacts (all such pairs across two
-//!   planes where the first ones classified settle almost none).
+//!   axis). A pair neither settles (a degenerate triangle, which valid operands do not have)
+//!   constructs its contact.
 //!   Where rounding moved vertices, the triangles at moved vertices are checked against their
 //!   neighbours by the validator's own tests, and the whole result validated where those
 //!   cannot tell; a result whose vertices are all `f64`s already is the exact one.

@@ -4,8 +4,8 @@
 //! declines), and coplanar pairs, classified in their plane ([`super::in_plane`]): decided from
 //! exact orientations of the input vertices alone (`f64` filters and stack integers where every
 //! vertex is an `f64`, filtered rational orientations otherwise), each end named by what
-//! defines it ([`Site`]) and constructed once however many pairs find it. The other pairs — a
-//! shared corner with a coplanar edge, or with a corner on the other's plane — are left to the
+//! defines it ([`Site`]) and constructed once however many pairs find it. A pair neither
+//! settles (a degenerate triangle, which valid operands do not have) is left to the
 //! arrangement's constructed contacts ([`super::tri`]); both give exact points, interned by
 //! value into one table.
 
@@ -41,18 +41,10 @@ pub(super) enum Settled {
     Open,
 }
 
-/// Pairs classified at a time; the classification of pairs across two planes stops once the
-/// open ones of the chunks so far outnumber a chunk plus sixteen times those settled as
-/// crossing (operands whose faces meet in degenerate ways throughout, where it would only add
-/// work), and the remaining such pairs are left open. Coplanar pairs are always classified.
-const CHUNK: usize = 2048;
-
-/// How a pair was classified: as the transversal meet does, in their common plane, or not at
-/// all (across planes, past the stop of [`CHUNK`]).
+/// How a pair was classified: as the transversal meet does, or in their common plane.
 enum Class {
     Of(Contact),
     InPlane(Option<Box<Overlap>>),
-    Unclassified,
 }
 
 /// The meeting pairs' contacts as the transversal meet's classification finds them, or
@@ -69,7 +61,6 @@ impl<C: Corners> Named<C> {
     /// on `corners`, the soup's points so far (its input vertices) with their exact tests, and
     /// `values`, the same points as numbers whose exact predicates are as cheap (their `f64`s
     /// where they are `f64`s). Coplanar pairs are classified in their plane ([`overlap`]).
-    /// Pairs across planes past the classified ones ([`CHUNK`]) are open.
     pub(super) fn new<N: Num, M: Num>(
         corners: C,
         values: &[Point3<M>],
@@ -80,7 +71,7 @@ impl<C: Corners> Named<C> {
         let tris = &soup.tris;
         let parallel = tris.len() >= PARALLEL_FROM;
         let planes: Vec<C::Plane> = map_all(tris, parallel, |&t| corners.plane(t));
-        let classify = |(i, j): (usize, usize), across: bool| {
+        let classify = |&(i, j): &(usize, usize)| {
             // Operand 0's triangle first, so that ends are named alike by every pair.
             let (t, s) = match soup.operand[i] {
                 0 => (i, j),
@@ -92,32 +83,13 @@ impl<C: Corners> Named<C> {
             {
                 return Class::InPlane(overlap(&corners, tris[t], tris[s]).map(Box::new));
             }
-            if !across {
-                return Class::Unclassified;
-            }
             let both = [&planes[t], &planes[s]];
             Class::Of(contact(&corners, both, &points, (t, tris[t]), (s, tris[s])))
         };
-        // Chunk by chunk, across planes until open pairs outnumber settled crossings by far.
-        let mut contacts: Vec<Class> = Vec::with_capacity(meeting.len());
-        let (mut open, mut crossed) = (0, 0);
-        for chunk in meeting.chunks(CHUNK) {
-            let across = open <= CHUNK + 16 * crossed;
-            for c in map_all(chunk, parallel, |&pair| classify(pair, across)) {
-                match &c {
-                    Class::Of(Contact::Degenerate) => open += 1,
-                    Class::Of(Contact::Cross(_) | Contact::Along(_) | Contact::OnEdge(_)) => {
-                        crossed += 1
-                    }
-                    _ => {}
-                }
-                contacts.push(c);
-            }
-        }
         Named {
-            corners,
             made: HashMap::with_capacity(meeting.len()),
-            contacts,
+            contacts: map_all(meeting, parallel, classify),
+            corners,
         }
     }
 
@@ -136,7 +108,7 @@ impl<C: Corners> Named<C> {
                 Some(o) => return self.in_plane(*o, soup.operand[pair.0] != 0, soup),
                 None => return Settled::Open,
             },
-            Some(Class::Unclassified) | None => return Settled::Open,
+            None => return Settled::Open,
         };
         match contact {
             Contact::Apart => Settled::Apart,
@@ -453,52 +425,17 @@ mod tests {
             .collect()
     }
 
-    /// A soup of the triangle (0, 0, 0), (4, 0, 0), (0, 4, 0) of operand 0 and the triangle
-    /// `s` of operand 1, with the pair of them 10⁴ times over.
-    fn pair_repeated(s: [[i64; 3]; 3]) -> (Soup<Rational>, Vec<(usize, usize)>) {
-        let mut soup = Soup::new();
-        let t = [[0, 0, 0], [4, 0, 0], [0, 4, 0]];
-        for (operand, tri) in [(0, t), (1, s)] {
-            let [a, b, c] = tri.map(|[x, y, z]| point(x, y, z, 1));
-            soup.push([&a, &b, &c], operand);
-        }
-        (soup, vec![(0, 1); 10_000])
-    }
-
-    /// Classification across planes stops where open pairs outnumber the crossings by far
-    /// (a shared corner with an edge of the other in one's plane: two chunks classified of
-    /// 10⁴ pairs), and goes on where they cross; coplanar pairs are classified throughout.
-    #[test]
-    fn classification_stops_where_it_settles_nothing() {
-        let corner_and_edge = [[0, 0, 0], [1, 1, 0], [1, 1, -1]];
-        let crossing = [[1, 1, -1], [1, 1, 1], [2, -3, 0]];
-        let coplanar = [[1, 1, 0], [3, 1, 0], [1, 3, 0]];
-        for (s, unclassified, open) in [
-            (corner_and_edge, 10_000 - 2 * CHUNK, 2 * CHUNK),
-            (crossing, 0, 0),
-            (coplanar, 0, 0),
-        ] {
-            let (soup, pairs) = pair_repeated(s);
-            let (f64s, floats) = f64_values(&soup.points);
-            let named = Named::new(F64Corners(f64s), &floats, &soup, &pairs);
-            let count = |f: fn(&Class) -> bool| named.contacts.iter().filter(|c| f(c)).count();
-            let skipped = count(|c| matches!(c, Class::Unclassified));
-            let degenerate = count(|c| matches!(c, Class::Of(Contact::Degenerate)));
-            assert_eq!((skipped, degenerate), (unclassified, open), "{s:?}");
-        }
-    }
-
     /// Operands with coplanar faces, edges in each other's planes and crossings, on the grid
     /// of halves (classified on `f64`s) and turned by a rational rotation (on rationals), and
     /// their complements: the meet with pairs settled by name equals the meet with every
-    /// contact constructed; crossing pairs and open pairs occur together in many of the meets,
-    /// and pairs with an edge on the other's plane, pairs with an end on the other's edge,
-    /// coplanar pairs overlapping in an area and coplanar pairs whose edges cross each in many.
+    /// contact constructed; the classification leaves no pair open, and crossing pairs, pairs
+    /// with an edge on the other's plane, pairs with an end on the other's edge, coplanar pairs
+    /// overlapping in an area and coplanar pairs whose edges cross each occur in many meets.
     #[test]
     fn named_contacts_meet_as_constructed_ones() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(53);
-        // Meets with crossing and open pairs, with pairs along a plane, with ends on edges, with
-        // coplanar overlaps and with coplanar edges crossing, on f64s and on rationals.
+        // Meets with crossing pairs, with pairs along a plane, with ends on edges, with coplanar
+        // overlaps and with coplanar edges crossing, on f64s and on rationals.
         let mut seen = [[0; 2]; 5];
         for round in 0..600 {
             let on_rationals = round % 2;
@@ -515,13 +452,8 @@ mod tests {
                     "round {round}"
                 );
                 let [cross, along, on_edge, area, edges, open] = contact_counts(x, &y);
-                let kinds = [
-                    cross > 0 && open > 0,
-                    along > 0,
-                    on_edge > 0,
-                    area > 0,
-                    edges > 0,
-                ];
+                assert_eq!(open, 0, "round {round}");
+                let kinds = [cross, along, on_edge, area, edges].map(|n| n > 0);
                 for (k, _) in kinds.iter().enumerate().filter(|(_, &on)| on) {
                     seen[k][on_rationals] += 1;
                 }
