@@ -137,8 +137,9 @@ pub(super) fn contact<N: Num, C: Corners>(
 /// [`contact`] of triangles `t` and `s` with a vertex on the other's plane (`s_sides`: s's
 /// vertices against t's plane; `t_sides`: t's against s's): where they share no corner, as
 /// [`on_plane`] finds, or if coplanar apart where [`tri::apart`] shows it, else degenerate; a
-/// touch in one shared corner or one shared edge; crossing from one shared corner where both triangles' other corners straddle
-/// the other's plane ([`through_corner`]); else degenerate.
+/// touch in one shared corner or one shared edge; beyond one shared corner, crossing from it
+/// where both triangles' other corners straddle the other's plane ([`through_corner`]), else
+/// as [`on_plane`] finds; coplanar beyond shared corners, degenerate.
 fn touch<N: Num, C: Corners>(
     p: &C,
     corners: &[&Point3<N>],
