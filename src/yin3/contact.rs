@@ -32,8 +32,8 @@ pub(super) enum End {
     Edges(Edge, Edge, usize),
     /// A corner of operand 0 (global index) equal to a corner of operand 1.
     Corner(usize, usize),
-    /// A vertex of one operand (global index) inside a triangle (global index) of the other
-    /// (on its boundary in [`Contact::OnEdge`] and [`Contact::Along`]).
+    /// A vertex of one operand (global index) inside a triangle (global index) of the other,
+    /// or, in [`Contact::OnEdge`] and [`Contact::Along`], on its boundary.
     Vertex(usize, usize),
 }
 
@@ -62,8 +62,9 @@ pub(super) enum Contact {
     /// one pair twice for a corner).
     Touch([[usize; 2]; 2]),
     /// An edge of one lying on the other's plane, through the other along the segment between
-    /// two ends ([`on_plane`]): membership need not flip across it, so the transversal meet
-    /// declines it; an arrangement cuts both triangles along it.
+    /// two ends, or meeting it in one (given twice) ([`on_plane`]): membership need not flip
+    /// across it, so the transversal meet declines it; an arrangement cuts both triangles
+    /// along it.
     Along([End; 2]),
     /// Crossing or touching along the segment between two ends, one of them on the boundary
     /// of the triangle it is named in ([`End::Vertex`]: a vertex on an edge of the other, or
@@ -240,7 +241,7 @@ fn through_corner(
 /// corner there ([`End::Vertex`] both, on the boundary of the triangle named:
 /// [`Contact::OnEdge`]); a vertex on two host edges, the shared corner, as [`End::Corner`]
 /// (a touch where it is the only end). An edge on the other's plane makes the contact
-/// [`Contact::Along`].
+/// [`Contact::Along`], whatever its ends.
 fn on_plane(
     p: &impl Corners,
     (ti, t): (usize, [usize; 3]),
