@@ -161,8 +161,9 @@ fn touch<N: Num, C: Corners>(
         }
     }
     let after = |tri: [usize; 3], v: usize| corners_after(tri, v).map(|w| corners[w]);
+    let coplanar = s_sides.iter().all(|&o| o == Equal);
     match shared {
-        [None, _, _] if s_sides.iter().all(|&o| o == Equal) => {
+        [None, _, _] if coplanar => {
             match tri::apart(t.map(|v| corners[v]), s.map(|v| corners[v]), &ctx) {
                 true => Contact::Apart,
                 false => Contact::Degenerate,
@@ -179,7 +180,7 @@ fn touch<N: Num, C: Corners>(
             let straddle = |[u, v]: [Ordering; 2]| u != v && u != Equal && v != Equal;
             if meet_only_at_given(corners[x], after(t, x), after(s, y), sides, &ctx) {
                 Contact::Touch([[x, y]; 2])
-            } else if s_sides.iter().all(|&o| o == Equal) {
+            } else if coplanar {
                 Contact::Degenerate
             } else if sides.iter().all(|&two| straddle(two)) {
                 through_corner(p, (ti, t), (si, s), [x, y], sides[0])
