@@ -5,12 +5,14 @@
 //! topology ([`Topology`]), otherwise the operation fails with
 //! [`Yin3Error::Unrepresentable`]. Operands that cross transversally, touch only in shared
 //! corners and edges, or do not meet take the construction-light path of
-//! [`super::transversal`], others the general exact meet.
+//! [`super::transversal`], others the general exact arrangement; either way the meet's
+//! triangles are rounded as they come, the exact boundary assembled only where its topology
+//! must be computed.
 
 use super::error::Yin3Error;
 use super::fins::FinTable;
 use super::kept::{provably_kept, Merges, Topology};
-use super::meet::general_meet;
+use super::meet::general_pieces;
 use super::set::{compact, Brep, Repr3, YinSet3};
 use super::transversal::{transversal_meet, Transversal};
 use super::validate::{check_windings, conforming_after_moves, revalidate};
@@ -19,35 +21,32 @@ use crate::kernel::Point3;
 use crate::num::{Num, Rational};
 use foldhash::{HashMap, HashMapExt};
 
-/// The meet of two float sets under the combined context `ctx` (module docs): the transversal
-/// meet where it applies, else the general arrangement's exact meet, rounded.
+/// The meet of two float sets, with the boundaries `x` and `y`, under the combined context
+/// `ctx` (module docs): the transversal meet where it applies, else the general arrangement's
+/// on the values read as rationals, its pieces rounded.
 pub(crate) fn float_meet<N: Num>(
-    a: &YinSet3<N>,
-    b: &YinSet3<N>,
+    [a, b]: [&YinSet3<N>; 2],
+    [x, y]: [&Brep<N>; 2],
     ctx: N::Ctx,
 ) -> Result<YinSet3<N>, Yin3Error> {
-    if let (Some(x), Some(y)) = (a.brep(), b.brep()) {
-        if let Some(meet) = transversal_meet(x, y) {
-            if let Transversal::Operand(o) = meet {
-                return Ok([a, b][o].clone().with_ctx(ctx));
-            }
-            let (points, kept) = meet.complex(x, y);
-            if kept.is_empty() {
-                return Ok(YinSet3::empty().with_ctx(ctx));
-            }
-            let (points, kept) = compact(points, kept);
-            let rounded = rounded_points(&points)?;
-            let moved = moved(&rounded, &points);
-            let exact = || Ok(Topology::of(&Brep::assemble(points.clone(), kept.clone())?));
-            return Ok(YinSet3::from_brep(
-                rounded_complex(rounded, moved, &points, kept.clone(), None, exact)?,
-                ctx,
-            ));
-        }
+    let (points, kept) = match transversal_meet(x, y) {
+        Some(Transversal::Operand(o)) => return Ok([a, b][o].clone().with_ctx(ctx)),
+        Some(meet) => meet.complex(x, y),
+        // A degenerate contact, which exact mode's transversal meet would find again on the
+        // same values.
+        None => general_pieces(&x.exact_values(), &y.exact_values()),
+    };
+    if kept.is_empty() {
+        return Ok(YinSet3::empty().with_ctx(ctx));
     }
-    // The transversal meet declined these values (a degenerate contact, which exact mode's
-    // transversal meet would find again on the same values).
-    rounded_exact(a, b, ctx, general_meet)
+    let (points, kept) = compact(points, kept);
+    let rounded = rounded_points(&points)?;
+    let moved = moved(&rounded, &points);
+    let exact = || Ok(Topology::of(&Brep::assemble(points.clone(), kept.clone())?));
+    Ok(YinSet3::from_brep(
+        rounded_complex(rounded, moved, &points, kept.clone(), None, exact)?,
+        ctx,
+    ))
 }
 
 /// `op` computed exactly on the operands' values and rounded once, under the context `ctx`.

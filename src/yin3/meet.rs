@@ -13,7 +13,7 @@ use super::set::{Brep, YinSet3};
 use super::soup::Soup;
 use super::tri::corners_after;
 use crate::kernel::{orient, Point3};
-use crate::num::Num;
+use crate::num::{Num, Rational};
 use crate::union_find::UnionFind;
 use foldhash::{HashMap, HashMapExt};
 use std::cell::OnceCell;
@@ -32,8 +32,9 @@ enum Side {
     Outside,
 }
 
-/// The meet by the general arrangement alone, never by the transversal one: float mode's
-/// where that one declined the operands' values.
+/// The meet by the general arrangement alone, never by the transversal one, its pairs
+/// classified by name for exact sets: the arrangement that [`constructed_meet`] checks.
+#[cfg(test)]
 pub(crate) fn general_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet3<N> {
     arranged_meet(x, y, N::EXACT)
 }
@@ -46,6 +47,7 @@ pub(crate) fn constructed_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>) -> YinSet
 }
 
 /// The meet by the general arrangement, its pairs first classified by name if `named`.
+#[cfg(test)]
 fn arranged_meet<N: Num>(x: &YinSet3<N>, y: &YinSet3<N>, named: bool) -> YinSet3<N> {
     match (x.brep(), y.brep()) {
         (Some(a), Some(b)) => {
@@ -74,10 +76,41 @@ fn meet_with<N: Num>(
     ctx: N::Ctx,
     named: bool,
 ) -> Result<YinSet3<N>, Yin3Error> {
+    let (points, kept) = kept_pieces(a, b, &ctx, named)?;
+    if kept.is_empty() {
+        return Ok(YinSet3::empty().with_ctx(ctx));
+    }
+    let brep = Brep::assemble(points, kept).map_err(|e| {
+        Yin3Error::Internal(format!(
+            "the kept pieces of a meet do not bound a Yin set: {e}"
+        ))
+    })?;
+    Ok(YinSet3::from_brep(brep, ctx))
+}
+
+/// Triangles over a table of points (some may be unused).
+type Pieces<N> = (Vec<Point3<N>>, Vec<[usize; 3]>);
+
+/// The pieces of the exact boundaries `a` and `b` that bound their meet (MRS-a..d in 3D), by
+/// the general arrangement with its pairs classified by name, over the arrangement's points
+/// (some may be unused): float mode's where the transversal meet declined the operands'
+/// values, to be rounded.
+pub(crate) fn general_pieces(a: &Brep<Rational>, b: &Brep<Rational>) -> Pieces<Rational> {
+    kept_pieces(a, b, &(), true).expect("an exact meet")
+}
+
+/// The pieces that bound the meet of the sets with the boundaries `a` and `b`, over the
+/// arrangement's points, computed with the predicates of `ctx` ([`meet_with`]).
+fn kept_pieces<N: Num>(
+    a: &Brep<N>,
+    b: &Brep<N>,
+    ctx: &N::Ctx,
+    named: bool,
+) -> Result<Pieces<N>, Yin3Error> {
     let mut soup = Soup::of_operands(a, b);
     let arrangement = match named {
-        true => arrange_named(&mut soup, &ctx),
-        false => arrange(&mut soup, Pairs::Across, &ctx),
+        true => arrange_named(&mut soup, ctx),
+        false => arrange(&mut soup, Pairs::Across, ctx),
     };
     let arrangement = arrangement.map_err(|e| {
         Yin3Error::Internal(format!(
@@ -85,11 +118,8 @@ fn meet_with<N: Num>(
         ))
     })?;
     let bounded = [a.bounded, b.bounded];
-    let sides = classify(&soup, &arrangement, bounded, &ctx);
-    let pieces = arrangement.pieces;
-    let kept: Vec<[usize; 3]> = pieces
-        .iter()
-        .zip(&sides)
+    let sides = classify(&soup, &arrangement, bounded, ctx);
+    let kept = (arrangement.pieces.iter().zip(&sides))
         .filter(|((_, parent), side)| {
             matches!(
                 (soup.operand[*parent], side),
@@ -98,15 +128,7 @@ fn meet_with<N: Num>(
         })
         .map(|((t, _), _)| *t)
         .collect();
-    if kept.is_empty() {
-        return Ok(YinSet3::empty().with_ctx(ctx));
-    }
-    let brep = Brep::assemble(soup.points, kept).map_err(|e| {
-        Yin3Error::Internal(format!(
-            "the kept pieces of a meet do not bound a Yin set: {e}"
-        ))
-    })?;
-    Ok(YinSet3::from_brep(brep, ctx))
+    Ok((soup.points, kept))
 }
 
 /// The corners of a triangle in increasing order.

@@ -67,7 +67,7 @@ impl<N: Num> YinSet3<N> {
         if N::EXACT {
             exact_transversal_meet([self, other], [a, b], ctx).unwrap_or_else(|| meet_in(a, b, ctx))
         } else {
-            float_meet(self, other, ctx)
+            float_meet([self, other], [a, b], ctx)
         }
     }
 

@@ -244,39 +244,51 @@ pub(crate) fn corners_after(tri: [usize; 3], v: usize) -> [usize; 2] {
     [tri[(k + 1) % 3], tri[(k + 2) % 3]]
 }
 
+/// A triangle's image in the coordinate plane onto which it projects largest (chosen in
+/// `f64`, a hint only), and the image's turn, for [`images_meet_only_in_shared`].
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Image {
+    chart: Chart,
+    turn: Ordering,
+}
+
+impl Image {
+    /// The image of the triangle `t` (indices into `points`); `None` where it degenerates.
+    pub(crate) fn of<N: Num>(points: &[Point3<N>], t: [usize; 3], ctx: &N::Ctx) -> Option<Image> {
+        let chart = Chart::of_f64_triangle(t.map(|v| points[v].to_f64()))?;
+        let [a, b, c] = t.map(|v| chart.image_of(&points[v]));
+        let turn = N::orient2d(a, b, c, ctx);
+        (turn != Ordering::Equal).then_some(Image { chart, turn })
+    }
+}
+
 /// True if the triangles `t` and `s` (indices into `points`) meet only in their shared
-/// corners, decided on their images in the coordinate plane onto which `t` projects largest
-/// (chosen in `f64`, a hint only), where t's image does not degenerate: projecting is then
-/// one-to-one on t, so images that meet only in the images of shared corners mean triangles
-/// that meet only there (a point of both projects into both images, where only a shared
-/// corner's image and t's one point at it lie). One shared corner: s's other corners strictly
-/// outside the line of one of t's edges at it; else, where s's image does not degenerate
-/// either, as for two shared corners (the third corners' images strictly on opposite sides
-/// of the shared edge), one (the images' closed corners at it disjoint) or none (an edge line
-/// of one image with the other image strictly outside: separating axis). False where it
-/// cannot tell.
+/// corners, decided on their images in the plane of t's [`Image`] `image`: t's image does not
+/// degenerate, so projecting is one-to-one on t, and images that meet only in the images of
+/// shared corners mean triangles that meet only there (a point of both projects into both
+/// images, where only a shared corner's image and t's one point at it lie). One shared corner:
+/// s's other corners strictly outside the line of one of t's edges at it; else, where s's
+/// image does not degenerate either, as for two shared corners (the third corners' images
+/// strictly on opposite sides of the shared edge), one (the images' closed corners at it
+/// disjoint) or none (an edge line of one image with the other image strictly outside:
+/// separating axis). False where it cannot tell.
 pub(crate) fn images_meet_only_in_shared<N: Num>(
     points: &[Point3<N>],
-    t: [usize; 3],
+    (t, image): ([usize; 3], &Image),
     s: [usize; 3],
     ctx: &N::Ctx,
 ) -> bool {
     use Ordering::Equal;
-    let Some(chart) = Chart::of_f64_triangle(t.map(|v| points[v].to_f64())) else {
-        return false;
-    };
-    // The six corners' images, each projected once: t's are 0..3, s's 3..6, and a corner of
-    // s shared with t is named by t's.
-    let images = [t[0], t[1], t[2], s[0], s[1], s[2]].map(|v| chart.project(&points[v]));
-    let o = |a: usize, b: usize, c: usize| orient(&images[a], &images[b], &images[c], ctx);
+    // The six corners' images: t's are 0..3, s's 3..6, and a corner of s shared with t is
+    // named by t's.
+    let chart = image.chart;
+    let images = [t[0], t[1], t[2], s[0], s[1], s[2]].map(|v| chart.image_of(&points[v]));
+    let o = |a: usize, b: usize, c: usize| N::orient2d(images[a], images[b], images[c], ctx);
     let (t, s) = (
         [0, 1, 2],
         [0, 1, 2].map(|k| t.iter().position(|&v| v == s[k]).unwrap_or(3 + k)),
     );
-    let st = o(t[0], t[1], t[2]);
-    if st == Equal {
-        return false;
-    }
+    let st = image.turn;
     let (mut shared, mut n) = ([0; 3], 0);
     for &v in s.iter().filter(|&&v| v < 3) {
         shared[n] = v;
@@ -375,17 +387,17 @@ fn in_plane_of<'a, N: Num>(
     t: [&Point3<N>; 3],
     ctx: &'a N::Ctx,
 ) -> Option<impl Fn([&Point3<N>; 3]) -> Ordering + 'a> {
-    let image = |k: usize, p: &Point3<N>| {
-        Point::new(p.coord((k + 1) % 3).clone(), p.coord((k + 2) % 3).clone())
-    };
+    fn image<N: Num>(k: usize, p: &Point3<N>) -> [&N; 2] {
+        [p.coord((k + 1) % 3), p.coord((k + 2) % 3)]
+    }
     let (k, sign) = (0..3).find_map(|k| {
         let [a, b, c] = t.map(|p| image(k, p));
-        let sign = orient(&a, &b, &c, ctx);
+        let sign = N::orient2d(a, b, c, ctx);
         (sign != Ordering::Equal).then_some((k, sign))
     })?;
     Some(move |q: [&Point3<N>; 3]| {
         let [a, b, c] = q.map(|p| image(k, p));
-        let o = orient(&a, &b, &c, ctx);
+        let o = N::orient2d(a, b, c, ctx);
         if sign == Ordering::Less {
             o.reverse()
         } else {
@@ -722,7 +734,7 @@ mod tests {
             let only_shared = contact
                 .as_ref()
                 .is_none_or(|c| !c.interiors_meet && c.points.iter().all(|x| corners.contains(&x)));
-            let said = images_meet_only_in_shared(&q, t, s, &());
+            let said = Image::of(&q, t, &()).is_some_and(|i| images_meet_only_in_shared(&q, (t, &i), s, &()));
             if said {
                 proptest::prop_assert!(only_shared, "said they meet only in shared corners: {:?}", contact);
             }

@@ -13,7 +13,7 @@ use super::parallel::PARALLEL_FROM;
 use super::set::{Brep, YinSet3};
 use super::soup::Soup;
 use super::sweep::MeetingBoxes;
-use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared};
+use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared, Image};
 use super::triangulate::ear_clip;
 use super::values::{exact_point, exact_points};
 use crate::kernel::{orient, orient3d, BBox3, Point, Point3};
@@ -115,6 +115,13 @@ pub(crate) fn conforming_after_moves<N: Num>(
         true => Vec::new(),
         false => tris.iter().map(|&t| plane(t)).collect(),
     };
+    // Each triangle's image in a coordinate plane, where the planes cannot tell a pair apart
+    // (prepared alike).
+    let image = |t: [usize; 3]| Image::of(points, t, exact);
+    let images: Vec<Option<Image>> = match few {
+        true => Vec::new(),
+        false => tris.iter().map(|&t| image(t)).collect(),
+    };
     // Triangles `ti` and `ui` meet only in their shared corners (each test is symmetric).
     let meet_in_shared = |ti: usize, ui: usize| {
         let (t, s) = (tris[ti], tris[ui]);
@@ -128,7 +135,11 @@ pub(crate) fn conforming_after_moves<N: Num>(
         if off(t, s, ti) || off(s, t, ui) {
             return true;
         }
-        if images_meet_only_in_shared(points, t, s, exact) {
+        let t_image = match images.get(ti) {
+            Some(i) => *i,
+            None => image(t),
+        };
+        if t_image.is_some_and(|i| images_meet_only_in_shared(points, (t, &i), s, exact)) {
             true
         } else if t.iter().any(|v| s.contains(v)) {
             shared_only(points, t, s, exact).is_some()
