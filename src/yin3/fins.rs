@@ -2,6 +2,7 @@
 //! Lemma 5.13; seed 004 "pasting"; yin3 docs: *Rotation order around an edge*): no angles, no
 //! atan2.
 
+use super::tri::apart_across;
 use crate::kernel::{orient3d, Point3};
 use crate::num::Num;
 use smallvec::SmallVec;
@@ -218,20 +219,13 @@ fn sort_about<N: Num>(
         return;
     }
     let r = &points[fins[0].apex];
-    let d = b.sub(a);
-    // The class of a fin's angle from the reference: (0, π), π, (π, 2π), 0.
+    // The class of a fin's angle from the reference: (0, π), π, (π, 2π), 0 (a fin in the
+    // reference's plane lies at π iff it is across the edge from it there).
     let class = |c: &Point3<N>| match orient3d(a, b, r, c, ctx) {
         Ordering::Greater => 0u8,
         Ordering::Less => 2,
-        Ordering::Equal => {
-            let (u, v) = (r.sub(a), c.sub(a));
-            let perp = d.dot(&d) * u.dot(&v) - u.dot(&d) * v.dot(&d);
-            if perp.sign() == Ordering::Less {
-                1
-            } else {
-                3
-            }
-        }
+        Ordering::Equal if apart_across([a, b], r, c, ctx) => 1,
+        Ordering::Equal => 3,
     };
     // Each fin's class found once, not at every comparison.
     let mut keyed: SmallVec<[(u8, Fin); 8]> = (fins[1..].iter())
@@ -299,6 +293,42 @@ mod tests {
             prop_assert_eq!(&table.edges, &edges);
             let got: Vec<Vec<Fin>> = table.fin_lists().map(<[Fin]>::to_vec).collect();
             prop_assert_eq!(got, fins);
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(yinset_testkit::cases(256)))]
+        /// Fins about the z axis sort by the angle of their apexes' (x, y) from the first's:
+        /// an oracle on integer cross and dot products, with apexes on a small lattice so that
+        /// fins in the first's plane, on its side of the edge and across it, occur.
+        #[test]
+        fn fins_sort_by_angle_from_the_first(
+            apexes in proptest::collection::vec((-2i64..=2, -2i64..=2, -2i64..=2), 3..8),
+        ) {
+            prop_assume!(apexes.iter().all(|&(x, y, _)| (x, y) != (0, 0)));
+            let mut pts = vec![Point3::<Rational>::int(0, 0, 0), Point3::int(0, 0, 1)];
+            pts.extend(apexes.iter().map(|&(x, y, z)| Point3::int(x, y, z)));
+            let mut fins: Vec<Fin> = (2..pts.len())
+                .map(|apex| Fin { tri: apex, apex, forward: true })
+                .collect();
+            sort_about(&pts[0], &pts[1], &mut fins, &pts, &());
+            let (rx, ry, _) = apexes[0];
+            // The class of the angle from the reference, (0, π), π, (π, 2π), 0, then the
+            // order within it (a stable sort keeps equal angles in input order).
+            let class = |(x, y): (i64, i64)| match (rx * y - ry * x).signum() {
+                1 => 0,
+                -1 => 2,
+                _ if rx * x + ry * y < 0 => 1,
+                _ => 3,
+            };
+            let mut want: Vec<usize> = (1..apexes.len()).collect();
+            want.sort_by(|&f, &g| {
+                let ((fx, fy, _), (gx, gy, _)) = (apexes[f], apexes[g]);
+                class((fx, fy)).cmp(&class((gx, gy))).then((gy * fx - gx * fy).cmp(&0).reverse())
+            });
+            let got: Vec<usize> = fins[1..].iter().map(|f| f.apex - 2).collect();
+            prop_assert_eq!(fins[0].apex, 2);
+            prop_assert_eq!(got, want);
         }
     }
 
