@@ -25,6 +25,7 @@ use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{Envelope, RTree, AABB};
 use smallvec::{smallvec, SmallVec};
 use std::cmp::Ordering;
+use std::sync::OnceLock;
 
 impl<N: Num> YinSet3<N> {
     /// Check that the stored boundary is a valid boundary representation (I1–I4), as
@@ -115,12 +116,12 @@ pub(crate) fn conforming_after_moves<N: Num>(
         true => Vec::new(),
         false => tris.iter().map(|&t| plane(t)).collect(),
     };
-    // Each triangle's image in a coordinate plane, where the planes cannot tell a pair apart
-    // (prepared alike).
+    // Each triangle's image in a coordinate plane, where the planes cannot tell a pair apart:
+    // made once, at its first such pair, where every pair is tested.
     let image = |t: [usize; 3]| Image::of(points, t, exact);
-    let images: Vec<Option<Image>> = match few {
+    let images: Vec<OnceLock<Option<Image>>> = match few {
         true => Vec::new(),
-        false => tris.iter().map(|&t| image(t)).collect(),
+        false => tris.iter().map(|_| OnceLock::new()).collect(),
     };
     // Triangles `ti` and `ui` meet only in their shared corners (each test is symmetric).
     let meet_in_shared = |ti: usize, ui: usize| {
@@ -136,7 +137,7 @@ pub(crate) fn conforming_after_moves<N: Num>(
             return true;
         }
         let t_image = match images.get(ti) {
-            Some(i) => *i,
+            Some(i) => *i.get_or_init(|| image(t)),
             None => image(t),
         };
         if t_image.is_some_and(|i| images_meet_only_in_shared(points, (t, &i), s, exact)) {
