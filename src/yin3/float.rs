@@ -22,8 +22,8 @@ use crate::num::{Num, Rational};
 use foldhash::{HashMap, HashMapExt};
 
 /// The meet of two float sets, with the boundaries `x` and `y`, under the combined context
-/// `ctx` (module docs): the transversal meet where it applies, else the general arrangement's
-/// on the values read as rationals, its pieces rounded.
+/// `ctx` (module docs): the transversal meet where it applies, else the general arrangement on
+/// the values read as rationals; either way its triangles rounded.
 pub(crate) fn float_meet<N: Num>(
     [a, b]: [&YinSet3<N>; 2],
     [x, y]: [&Brep<N>; 2],

@@ -66,9 +66,10 @@
 //! * **Rotation order around an edge** (seed 004 "pasting"; seed 003 Def. 5.12, Lemma 5.13):
 //!   the fins of an edge (a, b) are sorted by the exact orientation of (b − a, u_f, u_g), u_f
 //!   the fin's apex minus a, a fin in the reference fin's plane placed at 0 or π by the side of
-//!   the edge it lies on there (an orientation in a coordinate plane); no angles. A fin's partner in the set is the next fin on the side opposite its normal (the
-//!   good pairing that bounds the set locally), its partner outside the next on its normal's
-//!   side; coinciding fins are an overlap.
+//!   the edge it lies on there (an orientation in a coordinate plane); no angles. A fin's
+//!   partner in the set is the next fin on the side opposite its normal (the good pairing that
+//!   bounds the set locally), its partner outside the next on its normal's side; coinciding
+//!   fins are an overlap.
 //! * **Glued surfaces** (seed 003 Def. 7.8): triangles are joined only across paired fins,
 //!   never through a vertex; union–find across partners in the set gives the pre-surfaces, and
 //!   inside each, at edges where it owns more than two fins, its own fins are paired by the
