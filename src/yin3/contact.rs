@@ -183,7 +183,7 @@ fn touch<N: Num, C: Corners>(
             } else if coplanar {
                 Contact::Degenerate
             } else if sides.iter().all(|&two| straddle(two)) {
-                through_corner(p, (ti, t), (si, s), [x, y], sides[0])
+                through_corner(p, (ti, t), (si, s), [x, y], sides[0][1])
             } else {
                 on_plane(p, (ti, t), (si, s), [s_sides, t_sides])
             }
@@ -219,7 +219,7 @@ fn through_corner(
     (ti, t): (usize, [usize; 3]),
     (si, s): (usize, [usize; 3]),
     [x, y]: [usize; 2],
-    [_, sd]: [Ordering; 2],
+    sd: Ordering,
 ) -> Contact {
     let ([a, b], [c, d]) = (corners_after(t, x), corners_after(s, y));
     let far = match p.orient3d([a, b, c, d]) {
