@@ -207,6 +207,7 @@ mod pierce;
 mod set;
 pub mod shapes;
 mod soup;
+mod star;
 mod sweep;
 mod transversal;
 mod tri;

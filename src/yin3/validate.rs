@@ -12,6 +12,7 @@ use super::locate::{ray_box, winding};
 use super::parallel::PARALLEL_FROM;
 use super::set::{Brep, YinSet3};
 use super::soup::Soup;
+use super::star::FlatStars;
 use super::sweep::MeetingBoxes;
 use super::tri::{apart, images_meet_only_in_shared, intersect, off_plane_but_shared, Image};
 use super::triangulate::ear_clip;
@@ -88,8 +89,8 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// neighbours but for those): every triangle with a moved vertex meets every other
 /// triangle exactly in their shared vertices and edges (a degenerate one fails against its
 /// neighbours across its edges). Decided by exact orientations of the points' values — first
-/// by either triangle's plane where a filter is certain ([`off_plane_but_shared`]), then on
-/// images in a coordinate plane; a pair without a shared vertex that they cannot tell apart
+/// for all pairs of a flat star at once ([`FlatStars`]), then by either triangle's plane where
+/// a filter is certain ([`off_plane_but_shared`]), then on images in a coordinate plane; a pair without a shared vertex that they cannot tell apart
 /// is intersected exactly on its rational values, as the validator would; other pairs they
 /// cannot tell make it false, and then the caller validates in full. Every other pair meets
 /// as it did. The pairs come from [`MeetingBoxes`], or where fewer than one triangle in
@@ -123,8 +124,12 @@ pub(crate) fn conforming_after_moves<N: Num>(
         true => Vec::new(),
         false => tris.iter().map(|_| OnceLock::new()).collect(),
     };
+    let stars = FlatStars::of(points, tris, exact);
     // Triangles `ti` and `ui` meet only in their shared corners (each test is symmetric).
     let meet_in_shared = |ti: usize, ui: usize| {
+        if stars.meet_only_in_shared(ti, ui) {
+            return true;
+        }
         let (t, s) = (tris[ti], tris[ui]);
         let off = |t: [usize; 3], s: [usize; 3], ti: usize| match planes.get(ti) {
             Some(p) => off_plane_but_shared(t, s, |v| p.certain_side(f64s[v])),
