@@ -174,9 +174,9 @@
 //! * **Speed.** Exact mode takes the same construction-light meet as float mode wherever
 //!   operands cross, touch only in shared corners and edges, or do not meet (*Meet*), so the
 //!   two modes take about the same time there on the crossing spheres and meshes of
-//!   benches/BENCHMARKS.md (float 0.46–1.16× exact), float mode paying for its rounding check;
+//!   benches/BENCHMARKS.md (float 0.48–1.31× exact), float mode paying for its rounding check;
 //!   where operands share faces or meet otherwise degenerately float mode takes the general
-//!   arrangement on its values and rounds the pieces it keeps, at 0.92–1.97× exact mode's
+//!   arrangement on its values and rounds the pieces it keeps, at 0.95–1.82× exact mode's
 //!   time.
 
 mod arrange;
