@@ -32,6 +32,7 @@ pub(crate) struct FlatStars<'a, N: Num> {
     /// The flat triangles at each vertex, as triangle · 4 + its corner there: those at vertex
     /// `v` are `at[from[v]..from[v + 1]]`.
     at: Vec<usize>,
+    /// Where each vertex's run in `at` begins, then the end of the last.
     from: Vec<usize>,
     /// Each vertex's axes (bit k) whose flat star there was shown, made at the first pair
     /// that asks (pairs are tested on rayon's threads).
@@ -288,8 +289,8 @@ mod tests {
         /// other corners on a small lattice, is shown exactly when every pair of them meets
         /// only in shared corners and edges by the constructed intersection. The corners are
         /// a fan's — in angular order from any one of them, open or closed, some going round
-        /// again (in part or whole) on copies of the first corners — or drawn at random: repeated rays, opposite
-        /// rays, shared edges, overlaps and gaps all occur.
+        /// again (in part or whole) on copies of the first corners — or drawn at random:
+        /// repeated rays, opposite rays, shared edges, overlaps and gaps all occur.
         #[test]
         fn a_flat_star_is_shown_iff_its_pairs_meet_only_in_shared(
             rim in proptest::collection::vec((-3i64..=3, -3i64..=3), 2..8),
@@ -340,7 +341,8 @@ mod tests {
             proptest::prop_assume!(tris.len() >= 2);
             // A triangle degenerate along a lattice axis is flat in a second axis too, and
             // belongs to that axis's star.
-            proptest::prop_assume!(tris.iter().all(|t| usize::from(flat_axis(t.map(|v| &points[v]))) == k));
+            let axis = |t: &[usize; 3]| usize::from(flat_axis(t.map(|v| &points[v])));
+            proptest::prop_assume!(tris.iter().all(|t| axis(t) == k));
             let stars = FlatStars::of(&points, &tris, &());
             let shown = stars.shown_at(0) >> k & 1 == 1;
             let nondegenerate = tris.iter().all(|t| {

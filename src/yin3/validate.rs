@@ -90,12 +90,12 @@ pub(crate) fn revalidate<M: Num, N: Num>(
 /// triangle exactly in their shared vertices and edges (a degenerate one fails against its
 /// neighbours across its edges). Decided by exact orientations of the points' values — first
 /// for all pairs of a flat star at once ([`FlatStars`]), then by either triangle's plane where
-/// a filter is certain ([`off_plane_but_shared`]), then on images in a coordinate plane; a pair without a shared vertex that they cannot tell apart
-/// is intersected exactly on its rational values, as the validator would; other pairs they
-/// cannot tell make it false, and then the caller validates in full. Every other pair meets
-/// as it did. The pairs come from [`MeetingBoxes`], or where fewer than one triangle in
-/// [`FEW_MOVED`] has a moved vertex from an R-tree of those triangles' boxes; on rayon's
-/// threads from [`PARALLEL_FROM`] triangles.
+/// a filter is certain ([`off_plane_but_shared`]), then on images in a coordinate plane; a
+/// pair without a shared vertex that they cannot tell apart is intersected exactly on its
+/// rational values, as the validator would; other pairs they cannot tell make it false, and
+/// then the caller validates in full. Every other pair meets as it did. The pairs come from
+/// [`MeetingBoxes`], or where fewer than one triangle in [`FEW_MOVED`] has a moved vertex from
+/// an R-tree of those triangles' boxes; on rayon's threads from [`PARALLEL_FROM`] triangles.
 pub(crate) fn conforming_after_moves<N: Num>(
     points: &[Point3<N>],
     tris: &[[usize; 3]],
