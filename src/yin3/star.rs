@@ -214,15 +214,28 @@ fn wedges_apart<N: Num>(
 /// ends. `None` if the arcs are not one fan.
 fn one_fan<N: Num>(rays: &Rays<'_, N>, arcs: &[Arc]) -> Option<bool> {
     let m = arcs.len();
+    // The arcs by the corner they begin at, and the corners they end at, sorted for lookup
+    // (a star may hold many triangles); two arcs beginning at one corner are no fan.
+    let mut starts: SmallVec<[(usize, usize); 16]> = (arcs.iter().enumerate())
+        .map(|(i, a)| (a.from.0, i))
+        .collect();
+    starts.sort_unstable();
+    if starts.windows(2).any(|w| w[0].0 == w[1].0) {
+        return None;
+    }
+    let mut ends: SmallVec<[usize; 16]> = arcs.iter().map(|a| a.to.0).collect();
+    ends.sort_unstable();
+    let beginning_at = |corner: usize| {
+        (starts.binary_search_by_key(&corner, |&(c, _)| c).ok()).map(|k| starts[k].1)
+    };
     // The first arc: one that begins where none ends, else any (a closed fan).
     let first = (0..m)
-        .find(|&i| !arcs.iter().any(|a| a.to.0 == arcs[i].from.0))
+        .find(|&i| ends.binary_search(&arcs[i].from.0).is_err())
         .unwrap_or(0);
     let (mut last, mut passes) = (first, 0);
     for n in 1..=m {
         passes += usize::from(arcs[last].wraps());
-        let end = arcs[last].to.0;
-        match arcs.iter().position(|a| a.from.0 == end) {
+        match beginning_at(arcs[last].to.0) {
             Some(next) if next == first => return (n == m).then_some(passes == 1),
             Some(next) if n < m => last = next,
             Some(_) => return None,
@@ -360,6 +373,29 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A closed fan of 8 000 triangles about one vertex (its rim the boundary of a square) is
+    /// shown, and so is every pair of its triangles; with one triangle repeated it is not.
+    #[test]
+    fn a_large_closed_fan_is_shown() {
+        let n = 1000;
+        let right = (1 - n..=n).map(|y| (n, y));
+        let top = (-n..n).rev().map(|x| (x, n));
+        let left = (-n..n).rev().map(|y| (-n, y));
+        let bottom = (1 - n..=n).map(|x| (x, -n));
+        let rim: Vec<(i64, i64)> = right.chain(top).chain(left).chain(bottom).collect();
+        assert_eq!(rim.len(), 8000);
+        let points: Vec<Point3<Rational>> = std::iter::once(p(0, 0, 0))
+            .chain(rim.iter().map(|&(x, y)| p(x, y, 0)))
+            .collect();
+        let m = rim.len();
+        let mut tris: Vec<[usize; 3]> = (0..m).map(|i| [0, 1 + i, 1 + (i + 1) % m]).collect();
+        let stars = FlatStars::of(&points, &tris, &());
+        assert_eq!(stars.shown_at(0), 1 << 2);
+        assert!(stars.meet_only_in_shared(0, m / 2) && stars.meet_only_in_shared(m - 1, 0));
+        tris.push(tris[m / 3]);
+        assert_eq!(FlatStars::of(&points, &tris, &()).shown_at(0), 0);
     }
 
     /// Two flat triangles in different planes through one vertex are never taken as one star,
