@@ -115,7 +115,7 @@ impl Chart {
 
     /// The chart dropping coordinate `k`, for planes whose normal's coordinate `k` has the
     /// sign `s` (nonzero; `Equal` is taken as positive).
-    fn of_axis(k: usize, s: Ordering) -> Chart {
+    pub(crate) fn of_axis(k: usize, s: Ordering) -> Chart {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
         if s == Ordering::Less {
             Chart { keep: [j, i] }

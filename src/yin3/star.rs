@@ -12,6 +12,7 @@
 //! only as allowed iff each ends before the next begins, or where it begins if that is the
 //! same corner (a shared edge, whose two triangles then lie on opposite sides of it).
 
+use super::geom::Chart;
 use crate::kernel::Point3;
 use crate::num::Num;
 use smallvec::SmallVec;
@@ -56,9 +57,9 @@ impl<'a, N: Num> FlatStars<'a, N> {
             true => points.len(),
             false => 0,
         };
-        let flat = || (tris.iter().zip(&axis)).filter(|&(_, &k)| k != NONE);
+        let flat = || (tris.iter().enumerate()).filter(|&(ti, _)| axis[ti] != NONE);
         let mut from = vec![0usize; n + 1];
-        for v in flat().flat_map(|(t, _)| t) {
+        for v in flat().flat_map(|(_, t)| t) {
             from[v + 1] += 1;
         }
         for v in 0..n {
@@ -66,7 +67,7 @@ impl<'a, N: Num> FlatStars<'a, N> {
         }
         let mut next = from.clone();
         let mut at = vec![0usize; from[n]];
-        for (ti, t) in tris.iter().enumerate().filter(|&(ti, _)| axis[ti] != NONE) {
+        for (ti, t) in flat() {
             for (j, &v) in t.iter().enumerate() {
                 at[next[v]] = 4 * ti + j;
                 next[v] += 1;
@@ -128,15 +129,14 @@ fn flat_axis<N: Num>(p: [&Point3<N>; 3]) -> u8 {
 struct Rays<'a, N: Num> {
     points: &'a [Point3<N>],
     v: usize,
-    k: usize,
+    chart: Chart,
     ctx: &'a N::Ctx,
 }
 
 impl<N: Num> Rays<'_, N> {
     /// The image of point `x`.
     fn image(&self, x: usize) -> [&N; 2] {
-        let p = &self.points[x];
-        [p.coord((self.k + 1) % 3), p.coord((self.k + 2) % 3)]
+        self.chart.image_of(&self.points[x])
     }
 
     /// The orientation of v and the points `a` and `b`: `Greater` if the ray to `b` is a
@@ -189,7 +189,13 @@ fn wedges_apart<N: Num>(
     wedges: &[[usize; 2]],
     ctx: &N::Ctx,
 ) -> bool {
-    let rays = Rays { points, v, k, ctx };
+    let chart = Chart::of_axis(k, Ordering::Greater);
+    let rays = Rays {
+        points,
+        v,
+        chart,
+        ctx,
+    };
     let mut arcs: SmallVec<[Arc; 16]> = SmallVec::new();
     for &[a, b] in wedges {
         let (from, to) = match rays.turn(a, b) {
