@@ -269,9 +269,10 @@ impl Image {
 /// images, where only a shared corner's image and t's one point at it lie). One shared corner:
 /// s's other corners strictly outside the line of one of t's edges at it; else, where s's
 /// image does not degenerate either, as for two shared corners (the third corners' images
-/// strictly on opposite sides of the shared edge), one (the images' closed corners at it
-/// disjoint) or none (an edge line of one image with the other image strictly outside:
-/// separating axis). False where it cannot tell.
+/// strictly on opposite sides of the shared edge) or one (the images' closed corners at it
+/// disjoint). None: an edge line of one image with the other image strictly outside
+/// (separating axis; of t's image, also where s's degenerates, as a wall's image does in the
+/// chart of a floor). False where it cannot tell.
 pub(crate) fn images_meet_only_in_shared<N: Num>(
     points: &[Point3<N>],
     (t, image): ([usize; 3], &Image),
@@ -301,6 +302,17 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
             return true;
         }
     }
+    // An edge line of one image with the other's corners strictly outside it (separating
+    // axis): s's image may be a segment or a point here, only t's turn is read.
+    let separates = |(tri, sign, other): ([usize; 3], Ordering, [usize; 3])| {
+        (0..3).any(|e| {
+            let (a, b) = (tri[e], tri[(e + 1) % 3]);
+            other.iter().all(|&x| o(a, b, x) == sign.reverse())
+        })
+    };
+    if n == 0 && separates((t, st, s)) {
+        return true;
+    }
     let ss = o(s[0], s[1], s[2]);
     if ss == Equal {
         return false;
@@ -325,12 +337,7 @@ pub(crate) fn images_meet_only_in_shared<N: Num>(
             !cs.iter().any(|&x| in_corner(v, ct, st, x))
                 && !ct.iter().any(|&x| in_corner(v, cs, ss, x))
         }
-        [] => [(t, st, s), (s, ss, t)].iter().any(|&(tri, sign, other)| {
-            (0..3).any(|e| {
-                let (a, b) = (tri[e], tri[(e + 1) % 3]);
-                other.iter().all(|&x| o(a, b, x) == sign.reverse())
-            })
-        }),
+        [] => separates((s, ss, t)),
         _ => false,
     }
 }
@@ -711,18 +718,27 @@ mod tests {
         /// Where the test on the images in a coordinate plane says that two triangles sharing
         /// two, one or no corners meet only there, the constructed intersection agrees; and
         /// where the images are nondegenerate and the triangles coplanar, it always answers
-        /// (lattice points: coplanar, touching and crossing pairs all occur).
+        /// (lattice points: coplanar, touching and crossing pairs all occur; and walls, whose
+        /// images in a floor's chart are segments).
         #[test]
         fn images_meet_only_in_shared_is_the_constructed_contact(
             q in proptest::array::uniform6((-4i64..=4, -4i64..=4, -4i64..=4)),
             shared in 0usize..3,
             flip in proptest::bool::ANY,
-            flat in proptest::bool::ANY,
+            (flat, wall) in proptest::sample::select(
+                vec![(false, false), (true, false), (false, true)],
+            ),
         ) {
-            // Flat: all six points in the plane z = 0.
-            let q = q.map(|(x, y, z)| p(x, y, if flat { 0 } else { z }));
             let t = [0, 1, 2];
             let mut s = [[0, 1, 3], [0, 3, 4], [3, 4, 5]][shared];
+            // Flat: all six points in the plane z = 0. Wall: t in that plane, s in a plane
+            // x = c through its shared corners.
+            let c = q[s[0]].0;
+            let q: [_; 6] = std::array::from_fn(|i| {
+                let (x, y, z) = q[i];
+                let x = if wall && s.contains(&i) { c } else { x };
+                p(x, y, if flat || wall && i < 3 { 0 } else { z })
+            });
             if flip {
                 s.swap(1, 2);
             }
