@@ -27,14 +27,22 @@ fn half<N: Num>(v: &Point<N>, r: &Point<N>, p: &Point<N>, ctx: &N::Ctx) -> u8 {
         Ordering::Less => 0,
         Ordering::Greater => 1,
         Ordering::Equal => {
-            // Parallel: opposite direction is angle π, same direction is 2π.
-            let dot = (r.x.clone() - v.x.clone()) * (p.x.clone() - v.x.clone())
-                + (r.y.clone() - v.y.clone()) * (p.y.clone() - v.y.clone());
-            if dot.sign() == Ordering::Less {
-                0
-            } else {
-                1
-            }
+            // On one line through v: the same direction (angle 2π) iff p lies on r's side of v
+            // along an axis on which r is off v (the one where it is farther by the values'
+            // `f64` approximations, which differ only where the values do; where these cannot
+            // tell, x if r is off v along it), else the opposite one (π).
+            let off = |a: &N, b: &N| (a.approx() - b.approx()).abs();
+            let (dx, dy) = (off(&r.x, &v.x), off(&r.y, &v.y));
+            let along_x = match dx.partial_cmp(&dy) {
+                Some(Ordering::Greater) => true,
+                Some(Ordering::Less) => false,
+                _ => r.x != v.x,
+            };
+            let same = match along_x {
+                true => p.x.cmp(&v.x) == r.x.cmp(&v.x),
+                false => p.y.cmp(&v.y) == r.y.cmp(&v.y),
+            };
+            u8::from(same)
         }
     }
 }
@@ -59,5 +67,32 @@ mod tests {
             rays,
             vec![p(-1, -1), p(-1, 0), p(0, 2), p(1, 1), p(5, 0), p(0, -3)]
         );
+    }
+
+    /// Rays on the reference's own line, the same way (2π) or the opposite (π), for references
+    /// along an axis, along a diagonal (a tie of the axes) and steep or flat, about a vertex
+    /// off the origin, against the sign of the dot product.
+    #[test]
+    fn rays_on_the_reference_line_are_at_pi_or_two_pi() {
+        let v = p(3, -2);
+        for (dx, dy) in [(1, 0), (0, -2), (2, 2), (-1, 1), (3, -1), (-1, -4)] {
+            let r = p(3 + dx, -2 + dy);
+            for k in [-3, -1, 1, 2] {
+                let q = p(3 + k * dx, -2 + k * dy);
+                // The ray a quarter-turn counterclockwise from v → r lies at 3π/2 clockwise:
+                // q comes after it iff q points the way r does (2π), before it if not (π).
+                let off = p(3 - dy, -2 + dx);
+                let want = if k > 0 {
+                    Ordering::Greater
+                } else {
+                    Ordering::Less
+                };
+                assert_eq!(
+                    cmp_clockwise_from(&v, &r, &q, &off, &()),
+                    want,
+                    "{dx} {dy} {k}"
+                );
+            }
+        }
     }
 }

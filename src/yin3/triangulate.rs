@@ -5,11 +5,14 @@
 //! are inserted one by one, each located by descending the history of splits; then every
 //! constraint, split at the points on it, is made an edge by removing the triangles its open
 //! segment crosses and ear-clipping the two pseudo-polygons on its sides. Every decision is an
-//! [`orient`] or the exact order of points: no Delaunay test, no floats, no ε of our own. Two
-//! fast paths come first: a single cut between sides (no predicate at all), and cuts that form
-//! chains from side to side (the triangle split into polygons along them, each ear-clipped).
+//! [`orient`] or the exact order of points or coordinates: no Delaunay test, no floats, no ε
+//! of our own. Constraints along a side (a coplanar overlap's outline often runs along the cut
+//! triangle's own sides) are edges of every triangulation and are set aside first. Two fast
+//! paths come next: a single cut between sides (no predicate at all), and cuts that bound
+//! faces with the triangle's sides (chains across it, branching outlines), each face traced by
+//! turning at every point and ear-clipped.
 
-use crate::kernel::{on_closed_segment, orient, Point};
+use crate::kernel::{cmp_clockwise_from, on_closed_segment, orient, Point};
 use crate::num::{Interval, Num};
 use foldhash::{HashMap, HashMapExt};
 use smallvec::{smallvec, SmallVec};
@@ -50,10 +53,12 @@ pub(crate) fn triangulate<N: Num>(
     constraints: &[(usize, usize)],
     ctx: &N::Ctx,
 ) -> Result<Vec<[usize; 3]>, TriangulateError> {
+    let (constraints, numbering) = cuts_through(points.len(), corners, sides, constraints);
+    let constraints = &constraints[..];
     if let Some(pieces) = one_cut(points.len(), corners, sides, constraints) {
         return Ok(pieces);
     }
-    if let Some(pieces) = by_chains(points, corners, sides, constraints, ctx) {
+    if let Some(pieces) = by_faces(points, corners, sides, constraints, ctx) {
         return Ok(pieces);
     }
     let mut mesh = Mesh::new(points, corners, ctx)?;
@@ -84,16 +89,54 @@ pub(crate) fn triangulate<N: Num>(
         }
     }
     for (u, v, c) in pieces {
-        mesh.recover(u, v, c, &owner)?;
+        mesh.recover(u, v, c, &owner).map_err(|e| match e {
+            TriangulateError::CrossingConstraints(a, b) => {
+                let [a, b] = [a, b].map(|k| numbering[k]);
+                TriangulateError::CrossingConstraints(a.min(b), a.max(b))
+            }
+            e => e,
+        })?;
     }
     Ok(mesh.triangles())
+}
+
+/// The constraints among `count` points that may cut the triangle, each once, with each one's
+/// index in `constraints`: a constraint with both ends on one side (its corners and the points
+/// `sides` declares inside it) is a union of edges of every triangulation of the triangle,
+/// and one that repeats an earlier one (either way round) or is a single point adds nothing.
+fn cuts_through(
+    count: usize,
+    corners: [usize; 3],
+    sides: [&[usize]; 3],
+    constraints: &[(usize, usize)],
+) -> (Small<(usize, usize)>, Small<usize>) {
+    // Bit k for each point on side k.
+    let mut on: Small<u8> = smallvec![0; count];
+    for k in 0..3 {
+        on[corners[k]] |= 1 << k;
+        on[corners[(k + 1) % 3]] |= 1 << k;
+        for &p in sides[k] {
+            on[p] |= 1 << k;
+        }
+    }
+    // The first index of each constraint, smaller end first: the ones kept.
+    let mut first: Small<((usize, usize), usize)> = (constraints.iter().enumerate())
+        .filter(|&(_, &(u, v))| u != v && on[u] & on[v] == 0)
+        .map(|(c, &(u, v))| (key(u, v), c))
+        .collect();
+    first.sort_unstable();
+    first.dedup_by_key(|(e, _)| *e);
+    let mut numbering: Small<usize> = first.iter().map(|&(_, c)| c).collect();
+    numbering.sort_unstable();
+    let cuts = numbering.iter().map(|&c| constraints[c]).collect();
+    (cuts, numbering)
 }
 
 /// The pieces, without a predicate, where one constraint is the only cut (most triangles a
 /// transversal meet cuts): between points inside two sides, the only points besides the
 /// corners, it cuts off the corner between them from a convex quadrilateral (split at the
-/// corner before); between a point inside a side, the only other point, and a corner, the
-/// triangle is halved at the point. `None` for anything else. (The corners must be
+/// corner before); between a point inside a side, the only other point, and the opposite
+/// corner, the triangle is halved at the point. `None` for anything else. (The corners must be
 /// counterclockwise, as [`triangulate`] requires; this path does not check it, the general one
 /// does.)
 fn one_cut(
@@ -122,11 +165,10 @@ fn one_cut(
             Some(vec![[p, b, q], [a, p, q], [a, q, c]])
         }
         4 => {
-            // p inside side k, the other end a corner (along the side if not the opposite
-            // one, which the halves have as an edge too).
+            // p inside side k, the other end the opposite corner k + 2.
             let (p, k) = match (side(u), corner(v), side(v), corner(u)) {
-                (Some(k), Some(_), _, _) => (u, k),
-                (_, _, Some(k), Some(_)) => (v, k),
+                (Some(k), Some(c), _, _) if c == (k + 2) % 3 => (u, k),
+                (_, _, Some(k), Some(c)) if c == (k + 2) % 3 => (v, k),
                 _ => return None,
             };
             let [a, b, c] = from(k);
@@ -136,22 +178,24 @@ fn one_cut(
     }
 }
 
-/// The pieces where the constraints form chains across the triangle (most triangles that a
-/// transversal meet cuts more than once): each chain runs from a corner or a point inside a
-/// side, through other points each on exactly two constraints, to another; no corner or side
-/// point ends two chains, and every point is on a side or a chain. The chains split the
-/// triangle's boundary cycle into polygons, one chain at a time, and each polygon is
-/// ear-clipped. `None` for anything else — a closed ring, a branching point, a point on no
-/// constraint, a chain whose ends no polygon holds, a polygon without an ear —, which
-/// the general path takes (and reports crossings and points outside).
+/// The pieces where the constraints and the triangle's boundary bound faces (most triangles
+/// that a meet cuts more than once: chains across it, and the branching outlines of a coplanar
+/// overlap): the boundary cycle counterclockwise (each corner, then the points inside its
+/// side in their order along it) and each constraint both ways are the half-edges, each face
+/// is traced by leaving every point along the half-edge next clockwise from the one it came
+/// in by ([`cmp_clockwise_from`], the face on the left), and each face is ear-clipped. `None`
+/// where a point is on no edge, an edge repeats, a face runs into a used half-edge, has more
+/// than [`LARGEST_FACE`] corners or has no ear (a ring inside a face, crossing constraints, a
+/// point inside an edge) — which the general path takes (and reports crossings and points
+/// outside).
 ///
-/// The result needs no further check: every piece is counterclockwise (ear clipping emits
-/// only those), and every edge is either a step of the boundary cycle or met once each way
-/// (a chain's edges by the polygons on its two sides, a diagonal by the ears on its two), so
-/// the pieces cover each point inside the triangle as often as the boundary winds around it
-/// (once) and none outside. Chains that crossed, or a point outside, on a side it was not
-/// declared on, or inside a piece or an edge, would cover some point twice or outside.
-fn by_chains<N: Num>(
+/// The result needs no further check, whatever the faces traced: every piece is
+/// counterclockwise (ear clipping emits only those), and the pieces' edges are the half-edges,
+/// each used once, and the ears' diagonals, each met once each way, so the pieces cover each
+/// point inside the triangle as often as the boundary winds around it (once) and none
+/// outside. Constraints that crossed, or a point outside, on a side it was not declared on, or
+/// inside a piece or an edge, would cover some point twice or outside.
+fn by_faces<N: Num>(
     points: &[Point<N>],
     corners: [usize; 3],
     sides: [&[usize]; 3],
@@ -159,8 +203,6 @@ fn by_chains<N: Num>(
     ctx: &N::Ctx,
 ) -> Option<Vec<[usize; 3]>> {
     let n = points.len();
-    // The triangle's boundary counterclockwise: each corner, then the points inside its side
-    // in their order along it.
     let mut boundary: Small<usize> = SmallVec::with_capacity(n);
     for (k, side) in sides.iter().enumerate() {
         let (x, y) = (corners[k], corners[(k + 1) % 3]);
@@ -169,78 +211,91 @@ fn by_chains<N: Num>(
         boundary.extend_from_slice(side);
         along_side(points, x, y, &mut boundary[start..]);
     }
-    let mut on_boundary: Small<bool> = smallvec![false; n];
-    for &b in &boundary {
-        on_boundary[b] = true;
+    // Every edge both ways, by first point: (from, to, inner), the boundary's clockwise steps
+    // outer.
+    let mut half: SmallVec<[(usize, usize, bool); 32]> =
+        SmallVec::with_capacity(2 * (boundary.len() + constraints.len()));
+    for (k, &x) in boundary.iter().enumerate() {
+        let y = boundary[(k + 1) % boundary.len()];
+        half.extend([(x, y, true), (y, x, false)]);
     }
-    // Each point's constraint neighbours: at most two, at most one for a boundary point.
-    let mut next: Small<[usize; 2]> = smallvec![[usize::MAX; 2]; n];
-    let mut degree: Small<usize> = smallvec![0; n];
     for &(u, v) in constraints {
-        for (a, b) in [(u, v), (v, u)] {
-            let limit = if on_boundary[a] { 1 } else { 2 };
-            if a == b || degree[a] == limit {
-                return None;
-            }
-            next[a][degree[a]] = b;
-            degree[a] += 1;
-        }
+        half.extend([(u, v, true), (v, u, true)]);
     }
-    if (0..n).any(|p| !on_boundary[p] && degree[p] != 2) {
+    half.sort_unstable();
+    if half
+        .windows(2)
+        .any(|w| w[0].0 == w[1].0 && w[0].1 == w[1].1)
+    {
         return None;
     }
-    // Each chain from its first end met along the boundary; every inner point on one.
-    let mut chains: SmallVec<[Small<usize>; 4]> = SmallVec::new();
-    let mut seen: Small<bool> = smallvec![false; n];
-    for &end in &boundary {
-        if degree[end] == 0 || seen[end] {
-            continue;
-        }
-        let (mut chain, mut at): (Small<usize>, usize) = (smallvec![end], end);
-        seen[end] = true;
-        let mut to = next[end][0];
-        while !on_boundary[to] {
-            seen[to] = true;
-            chain.push(to);
-            let step = next[to];
-            (at, to) = (to, if step[0] == at { step[1] } else { step[0] });
-        }
-        seen[to] = true;
-        chain.push(to);
-        chains.push(chain);
+    // The half-edges from each point: first[p]..first[p + 1].
+    let mut first: Small<usize> = smallvec![0; n + 1];
+    for &(u, _, _) in &half {
+        first[u + 1] += 1;
     }
-    if (0..n).any(|p| !on_boundary[p] && !seen[p]) {
-        return None;
-    }
-    // Split the polygon that holds both ends of each chain (counterclockwise pieces).
-    let mut polygons: SmallVec<[Small<usize>; 4]> = smallvec![boundary];
-    for chain in &chains {
-        let (a, b) = (chain[0], chain[chain.len() - 1]);
-        let k = (polygons.iter()).position(|poly| poly.contains(&a) && poly.contains(&b))?;
-        let mut poly = std::mem::take(&mut polygons[k]);
-        let i = poly.iter().position(|&v| v == a)?;
-        poly.rotate_left(i);
-        let j = poly.iter().position(|&v| v == b)?;
-        let inner = &chain[1..chain.len() - 1];
-        // From a to b along the polygon, back along the chain; from b to a, on along it.
-        let first: Small<usize> = (poly[..=j].iter().chain(inner.iter().rev()))
-            .copied()
-            .collect();
-        let second: Small<usize> = (poly[j..].iter().chain([&a]).chain(inner))
-            .copied()
-            .collect();
-        if first.len() < 3 || second.len() < 3 {
+    for p in 0..n {
+        if first[p + 1] == 0 {
             return None;
         }
-        polygons[k] = first;
-        polygons.push(second);
+        first[p + 1] += first[p];
     }
-    let mut pieces = Vec::with_capacity(n + chains.len());
-    for poly in &polygons {
-        pieces.extend(ear_clip(points, poly, ctx)?);
+    // The boundary's points before and after each of its points.
+    let mut around: Small<[usize; 2]> = smallvec![[usize::MAX; 2]; n];
+    for (k, &x) in boundary.iter().enumerate() {
+        let m = boundary.len();
+        around[x] = [boundary[(k + m - 1) % m], boundary[(k + 1) % m]];
+    }
+    let mut used: Small<bool> = smallvec![false; half.len()];
+    let mut pieces = Vec::with_capacity(2 * n);
+    for start in 0..half.len() {
+        if used[start] || !half[start].2 {
+            continue;
+        }
+        let mut face: Small<usize> = SmallVec::new();
+        let mut h = start;
+        while !used[h] {
+            used[h] = true;
+            let (u, v, _) = half[h];
+            face.push(u);
+            let from_v = first[v]..first[v + 1];
+            // Reached along a side at a point inside it, the side's next step lies at π
+            // clockwise, after every constraint there (each runs into the triangle): taken
+            // only where none leaves the point, so that no comparison meets the side's three
+            // collinear points.
+            let [before, after] = around[v];
+            let along = u == before && !corners.contains(&v);
+            let (mut next, mut step) = (None, None);
+            for e in from_v.clone().filter(|&e| half[e].2 && half[e].1 != u) {
+                if along && half[e].1 == after {
+                    step = Some(e);
+                    continue;
+                }
+                // The edge next clockwise from vu about v.
+                let p = &points[half[e].1];
+                let nearer = |f: usize| {
+                    let q = &points[half[f].1];
+                    cmp_clockwise_from(&points[v], &points[u], p, q, ctx) == Less
+                };
+                if next.is_none_or(nearer) {
+                    next = Some(e);
+                }
+            }
+            // Back along vu only at a dead end.
+            h = (next.or(step))
+                .or_else(|| from_v.clone().find(|&e| half[e].2 && half[e].1 == u))?;
+        }
+        if h != start || face.len() < 3 || face.len() > LARGEST_FACE {
+            return None;
+        }
+        pieces.extend(ear_clip(points, &face, ctx)?);
     }
     Some(pieces)
 }
+
+/// The most corners of a face that [`by_faces`] ear-clips (a quadratic walk, with many points
+/// in a row on a side); a triangle with a larger face takes the general path.
+const LARGEST_FACE: usize = 64;
 
 /// Sort the points `on` of the segment from `x` to `y` nearest to `x` first: points of a
 /// segment are in lexicographic order from its smaller end.
@@ -729,9 +784,6 @@ mod tests {
         tris
     }
 
-    /// One constraint from inside one side to inside another, or to a corner, with no other
-    /// point, for every pair of sides or corner, both directions and every rotation of the
-    /// corners: [`one_cut`] answers each without predicates, and the independent check passes.
     /// A segment splits at the points on it, in order, and only there: collinear points past
     /// either end, and points beside it, are left out; on axis-parallel segments (a box of
     /// zero width) and a slanted one, in both backends.
@@ -791,6 +843,11 @@ mod tests {
         assert!(through >= 400 && pruned >= 1500, "{through} {pruned}");
     }
 
+    /// One constraint from inside one side to inside another, or to a corner, with no other
+    /// point, for every pair of sides or corner, both directions and every rotation of the
+    /// corners: the independent check passes, and [`one_cut`] gives the same pieces without
+    /// predicates for each cut across the triangle (one to a corner of the point's own side
+    /// runs along it, and is no cut).
     #[test]
     fn one_cut_cuts_off_a_corner_or_halves_the_triangle() {
         // A point inside each side i, from corner i to corner i + 1.
@@ -817,10 +874,16 @@ mod tests {
                     pts::<Rational>(&[corner_xy[0], corner_xy[1], corner_xy[2], inside_xy[i]]);
                 let mut sides = NO_SIDES;
                 sides[side_of(i)] = &[3];
-                for cut in [0, 1, 2].into_iter().flat_map(|c| [(3, c), (c, 3)]) {
-                    let tris = triangulate(&points, corners, sides, &[cut], &()).expect("valid");
-                    check(&points, corners, &[cut], &tris, &());
-                    assert_eq!(one_cut(4, corners, sides, &[cut]), Some(tris));
+                for c in 0..3 {
+                    for cut in [(3, c), (c, 3)] {
+                        let tris =
+                            triangulate(&points, corners, sides, &[cut], &()).expect("valid");
+                        check(&points, corners, &[cut], &tris, &());
+                        // A cut to a corner of the point's side runs along it: no cut at all.
+                        let opposite = corners[(side_of(i) + 2) % 3] == c;
+                        let want = opposite.then_some(tris);
+                        assert_eq!(one_cut(4, corners, sides, &[cut]), want);
+                    }
                 }
             }
         }
@@ -838,6 +901,32 @@ mod tests {
         let tris = run(&xy, [0, 1, 2], &[(0, 1), (3, 5)]);
         assert!(has_edge(&tris, 0, 3) && has_edge(&tris, 3, 4) && has_edge(&tris, 4, 1));
         assert!(has_edge(&tris, 3, 5));
+    }
+
+    /// Constraints along a side (between its corners and its declared points), repeated ones
+    /// (either way round) and single points are set aside, the others kept in their order
+    /// with their indices; a point not declared on a side leaves its constraints in.
+    #[test]
+    fn cuts_through_keep_only_cuts() {
+        // Corners 0, 1, 2; points 3 and 4 inside side 0, 5 inside side 2, 6 inside.
+        let sides: [&[usize]; 3] = [&[3, 4], &[], &[5]];
+        let constraints = [
+            (3, 1),
+            (6, 3),
+            (4, 3),
+            (0, 5),
+            (3, 6),
+            (5, 4),
+            (2, 2),
+            (1, 2),
+            (4, 5),
+            (6, 0),
+        ];
+        let (cuts, numbering) = cuts_through(7, [0, 1, 2], sides, &constraints);
+        assert_eq!(&cuts[..], &[(6, 3), (5, 4), (6, 0)]);
+        assert_eq!(&numbering[..], &[1, 5, 9]);
+        let (cuts, _) = cuts_through(7, [0, 1, 2], NO_SIDES, &constraints);
+        assert_eq!(&cuts[..], &[(3, 1), (6, 3), (4, 3), (0, 5), (5, 4), (6, 0)]);
     }
 
     #[test]
@@ -971,7 +1060,7 @@ mod tests {
         (points, sides, constraints)
     }
 
-    /// On random banded chains (above), the chain path answers nearly always and its pieces
+    /// On random banded chains (above), the face path answers nearly always and its pieces
     /// pass the independent check, as do `triangulate`'s.
     #[test]
     fn chains_across_the_triangle() {
@@ -981,18 +1070,18 @@ mod tests {
         for case in 0..400 {
             let (points, sides, constraints) = banded_chains(&mut rng, 1 + case % 5);
             let sides = [&sides[0][..], &sides[1][..], &sides[2][..]];
-            if let Some(tris) = by_chains(&points, [0, 1, 2], sides, &constraints, &()) {
+            if let Some(tris) = by_faces(&points, [0, 1, 2], sides, &constraints, &()) {
                 check(&points, [0, 1, 2], &constraints, &tris, &());
                 answered += 1;
             }
             let tris = triangulate(&points, [0, 1, 2], sides, &constraints, &()).expect("valid");
             check(&points, [0, 1, 2], &constraints, &tris, &());
         }
-        assert!(answered > 300, "the chain path answered {answered} of 400");
+        assert!(answered > 300, "the face path answered {answered} of 400");
     }
 
     /// Chains nested on one side, and chains ending at corners 1 and 2 and on the bottom side:
-    /// the chain path answers, and its pieces pass the independent check.
+    /// the face path answers, and its pieces pass the independent check.
     #[test]
     fn nested_chains_and_chains_from_corners() {
         let points = pts::<Rational>(&[
@@ -1023,8 +1112,45 @@ mod tests {
             (12, 13),
             (13, 1),
         ];
-        let tris = by_chains(&points, [0, 1, 2], sides, &constraints, &()).expect("chains");
+        let tris = by_faces(&points, [0, 1, 2], sides, &constraints, &()).expect("chains");
         check(&points, [0, 1, 2], &constraints, &tris, &());
+    }
+
+    /// A branching outline: a point inside on six constraints (to a point inside each side,
+    /// to corner 0, through a second point to corner 2 and through a third to corner 1), two
+    /// of them in one line through it: the face path answers, and its pieces pass the
+    /// independent check.
+    #[test]
+    fn a_branching_outline_is_traced_into_faces() {
+        let points = pts::<Rational>(&[
+            (0, 0),
+            (60, 0),
+            (30, 60),
+            (20, 0),
+            (45, 30),
+            (15, 30),
+            (30, 20),
+            (30, 40),
+            (45, 10),
+        ]);
+        let sides: [&[usize]; 3] = [&[3], &[4], &[5]];
+        let constraints = [
+            (6, 3),
+            (6, 4),
+            (6, 5),
+            (6, 0),
+            (6, 7),
+            (7, 2),
+            (8, 6),
+            (8, 1),
+        ];
+        let tris = by_faces(&points, [0, 1, 2], sides, &constraints, &()).expect("faces");
+        check(&points, [0, 1, 2], &constraints, &tris, &());
+        assert_eq!(
+            tris.len(),
+            2 * points.len() - 2 - 6,
+            "Euler: 2n − 2 − h triangles"
+        );
     }
 
     /// Two chains that cross twice (their ends on the sides do not interleave, so one polygon
@@ -1047,19 +1173,16 @@ mod tests {
         let sides: [&[usize]; 3] = [&[], &[4, 8], &[3, 7]];
         // 3 → 5 → 6 → 4 dips below 7 → 9 → 8 and rises above it again.
         let constraints = [(3, 5), (5, 6), (6, 4), (7, 9), (9, 8)];
-        assert_eq!(
-            by_chains(&points, [0, 1, 2], sides, &constraints, &()),
-            None
-        );
+        assert_eq!(by_faces(&points, [0, 1, 2], sides, &constraints, &()), None);
         assert!(matches!(
             triangulate(&points, [0, 1, 2], sides, &constraints, &()),
             Err(TriangulateError::CrossingConstraints(..))
         ));
     }
 
-    /// Chains the chain path leaves to the general path: one touching a side at a point not
-    /// declared on it (a vertex of the pieces on both sides of it there), one along a side (a
-    /// polygon of two points), one that is a closed ring.
+    /// Chains the face path leaves to the general path: one touching a side at a point not
+    /// declared on it (a vertex of the pieces on both sides of it there), one along a side (an
+    /// edge twice), one that is a closed ring (a face with a hole).
     #[test]
     fn chains_the_general_path_takes() {
         let points = pts::<Rational>(&[(0, 0), (60, 0), (30, 60), (10, 20), (50, 20), (30, 0)]);
@@ -1072,7 +1195,7 @@ mod tests {
             (&points_on_bottom, along, &[(0, 3)][..]),
             (&pts::<Rational>(&RING_POINTS), NO_SIDES, &RING[..]),
         ] {
-            assert_eq!(by_chains(points, [0, 1, 2], sides, constraints, &()), None);
+            assert_eq!(by_faces(points, [0, 1, 2], sides, constraints, &()), None);
             let tris = triangulate(points, [0, 1, 2], sides, constraints, &()).expect("valid");
             check(points, [0, 1, 2], constraints, &tris, &());
         }
