@@ -50,7 +50,8 @@
 //!   against the other's plane and the overlap of the two clipped intervals on the planes'
 //!   line. Every contact point is tagged with the feature it lies on in both triangles.
 //! * **Re-triangulation** (seed 004 step 2): each cut triangle with its contact points and
-//!   constraint segments is triangulated exactly in its chart (orientations only, no Delaunay);
+//!   constraint segments is triangulated exactly in its chart (orientations only, no Delaunay;
+//!   where the segments bound faces with its sides, each face is ear-clipped, no point inserted);
 //!   a point on an edge goes into every triangle on that edge (a point named inside an edge is
 //!   placed on it by its name, others by exact orientations), and coplanar triangles of both
 //!   operands get identical pieces.
@@ -174,9 +175,9 @@
 //! * **Speed.** Exact mode takes the same construction-light meet as float mode wherever
 //!   operands cross, touch only in shared corners and edges, or do not meet (*Meet*), so the
 //!   two modes take about the same time there on the crossing spheres and meshes of
-//!   benches/BENCHMARKS.md (float 0.48–1.31× exact), float mode paying for its rounding check;
+//!   benches/BENCHMARKS.md (float 0.46–1.31× exact), float mode paying for its rounding check;
 //!   where operands share faces or meet otherwise degenerately float mode takes the general
-//!   arrangement on its values and rounds the pieces it keeps, at 0.95–1.82× exact mode's
+//!   arrangement on its values and rounds the pieces it keeps, at 0.92–2.05× exact mode's
 //!   time.
 
 mod arrange;
