@@ -211,27 +211,23 @@ fn by_faces<N: Num>(
         boundary.extend_from_slice(side);
         along_side(points, x, y, &mut boundary[start..]);
     }
-    // Every edge both ways, by first point: (from, to, inner), the boundary's clockwise steps
-    // outer.
-    let mut half: SmallVec<[(usize, usize, bool); 32]> =
-        SmallVec::with_capacity(2 * (boundary.len() + constraints.len()));
+    // The half-edges, by first point: the boundary's steps, and each constraint both ways (one
+    // along a step repeats it).
+    let mut half: SmallVec<[(usize, usize); 32]> =
+        SmallVec::with_capacity(boundary.len() + 2 * constraints.len());
     for (k, &x) in boundary.iter().enumerate() {
-        let y = boundary[(k + 1) % boundary.len()];
-        half.extend([(x, y, true), (y, x, false)]);
+        half.push((x, boundary[(k + 1) % boundary.len()]));
     }
     for &(u, v) in constraints {
-        half.extend([(u, v, true), (v, u, true)]);
+        half.extend([(u, v), (v, u)]);
     }
     half.sort_unstable();
-    if half
-        .windows(2)
-        .any(|w| w[0].0 == w[1].0 && w[0].1 == w[1].1)
-    {
+    if half.windows(2).any(|w| w[0] == w[1]) {
         return None;
     }
     // The half-edges from each point: first[p]..first[p + 1].
     let mut first: Small<usize> = smallvec![0; n + 1];
-    for &(u, _, _) in &half {
+    for &(u, _) in &half {
         first[u + 1] += 1;
     }
     for p in 0..n {
@@ -249,14 +245,14 @@ fn by_faces<N: Num>(
     let mut used: Small<bool> = smallvec![false; half.len()];
     let mut pieces = Vec::with_capacity(2 * n);
     for start in 0..half.len() {
-        if used[start] || !half[start].2 {
+        if used[start] {
             continue;
         }
         let mut face: Small<usize> = SmallVec::new();
         let mut h = start;
         while !used[h] {
             used[h] = true;
-            let (u, v, _) = half[h];
+            let (u, v) = half[h];
             face.push(u);
             let from_v = first[v]..first[v + 1];
             // Reached along a side at a point inside it, the side's next step lies at π
@@ -266,7 +262,7 @@ fn by_faces<N: Num>(
             let [before, after] = around[v];
             let along = u == before && !corners.contains(&v);
             let (mut next, mut step) = (None, None);
-            for e in from_v.clone().filter(|&e| half[e].2 && half[e].1 != u) {
+            for e in from_v.clone().filter(|&e| half[e].1 != u) {
                 if along && half[e].1 == after {
                     step = Some(e);
                     continue;
@@ -282,8 +278,7 @@ fn by_faces<N: Num>(
                 }
             }
             // Back along vu only at a dead end.
-            h = (next.or(step))
-                .or_else(|| from_v.clone().find(|&e| half[e].2 && half[e].1 == u))?;
+            h = (next.or(step)).or_else(|| from_v.clone().find(|&e| half[e].1 == u))?;
         }
         if h != start || face.len() < 3 || face.len() > LARGEST_FACE {
             return None;
