@@ -307,10 +307,10 @@ mod tests {
         /// A star of triangles at the origin in the plane z = 0 (or x = 0, or y = 0), their
         /// other corners on a small lattice, is shown exactly when none of them is degenerate
         /// and every pair of them meets only in shared corners and edges by the constructed
-        /// intersection. The corners are
-        /// a fan's — in angular order from any one of them, open or closed, some going round
-        /// again (in part or whole) on copies of the first corners — or drawn at random:
-        /// repeated rays, opposite rays, shared edges, overlaps and gaps all occur.
+        /// intersection. The corners are a fan's — in angular order from any one of them,
+        /// open or closed, some going round again (in part or whole) on copies of the first
+        /// corners — or drawn at random: repeated rays, opposite rays, shared edges, overlaps
+        /// and gaps all occur.
         #[test]
         fn a_flat_star_is_shown_iff_its_pairs_meet_only_in_shared(
             rim in proptest::collection::vec((-3i64..=3, -3i64..=3), 2..8),
